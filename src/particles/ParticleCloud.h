@@ -1,0 +1,82 @@
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "core/Real.h"
+
+namespace sphcast {
+
+// A set of particles of one kind (the metal, a mold part) as a structure of arrays: positions
+// plus any number of named per-particle fields. Each field is one contiguous array, so a pass
+// over the cloud touches only the fields it needs, and the whole cloud can be reordered along
+// the neighbour grid. Cloud-wide constants (e.g. the lattice spacing) are attributes.
+class ParticleCloud {
+ public:
+  using ScalarField = std::vector<Real>;
+  using VectorField = std::vector<Vector>;
+  using IdField = std::vector<std::int64_t>;
+
+  explicit ParticleCloud(std::string name);
+
+  const std::string& name() const { return name_; }
+  std::size_t size() const { return positions_.size(); }
+
+  // Changes the particle count of every field at once; new entries are zero.
+  void resize(std::size_t count);
+
+  VectorField& positions() { return positions_; }
+  const VectorField& positions() const { return positions_; }
+
+  // Adds a field of size() zeros, or returns the existing one of that name and kind. A name is
+  // used by one kind of field only; "position" is reserved.
+  ScalarField& addScalarField(const std::string& fieldName);
+  VectorField& addVectorField(const std::string& fieldName);
+  IdField& addIdField(const std::string& fieldName);
+
+  bool hasScalarField(const std::string& fieldName) const;
+  bool hasVectorField(const std::string& fieldName) const;
+  bool hasIdField(const std::string& fieldName) const;
+
+  // Look-ups throw an Error naming the cloud and listing the fields it has.
+  ScalarField& scalarField(const std::string& fieldName);
+  const ScalarField& scalarField(const std::string& fieldName) const;
+  VectorField& vectorField(const std::string& fieldName);
+  const VectorField& vectorField(const std::string& fieldName) const;
+  IdField& idField(const std::string& fieldName);
+  const IdField& idField(const std::string& fieldName) const;
+
+  // All fields by name (sorted, so output is deterministic).
+  const std::map<std::string, ScalarField>& scalarFields() const { return scalars_; }
+  const std::map<std::string, VectorField>& vectorFields() const { return vectors_; }
+  const std::map<std::string, IdField>& idFields() const { return ids_; }
+
+  // Cloud-wide constants, written with the cloud (VTK field data).
+  std::map<std::string, double>& attributes() { return attributes_; }
+  const std::map<std::string, double>& attributes() const { return attributes_; }
+
+  // Applies newOrder to every field: particle k of the result is particle newOrder[k] of now.
+  void reorder(const std::vector<std::size_t>& newOrder);
+
+  // Appends the particles of another cloud with the same fields (throws if they differ).
+  void append(const ParticleCloud& other);
+
+  // Bit-for-bit equality of positions, fields and attributes (restart and I/O checks).
+  bool identicalTo(const ParticleCloud& other) const;
+
+ private:
+  void checkNameFree(const std::string& fieldName, const char* kind) const;
+  std::string fieldList() const;
+
+  std::string name_;
+  VectorField positions_;
+  std::map<std::string, ScalarField> scalars_;
+  std::map<std::string, VectorField> vectors_;
+  std::map<std::string, IdField> ids_;
+  std::map<std::string, double> attributes_;
+};
+
+}  // namespace sphcast
