@@ -1,1 +1,299 @@
-// placeholder, being written this session
+#include "io/VtpCloud.h"
+
+#include <gtest/gtest.h>
+
+#include <bit>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <limits>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "core/Error.h"
+
+namespace sphcast {
+namespace {
+
+namespace fs = std::filesystem;
+
+// Values that a text format or a careless conversion would not keep bit for bit.
+std::vector<Real> awkwardValues() {
+  using Limits = std::numeric_limits<Real>;
+  return {Real(0),           -Real(0),         Limits::denorm_min(), -Limits::denorm_min(),
+          Limits::min() / 3, Limits::min(),    Limits::max(),        Limits::lowest(),
+          Limits::epsilon(), Real(1) / 3,      Real(0.1),            Limits::infinity(),
+          -Limits::infinity(), Limits::quiet_NaN()};
+}
+
+// A cloud with random fields, the awkward values sprinkled over the first particles.
+ParticleCloud randomCloud(std::size_t count, unsigned seed) {
+  std::mt19937_64 random(seed);
+  std::uniform_real_distribution<double> uniform(-1e3, 1e3);
+  const std::vector<Real> awkward = awkwardValues();
+  auto value = [&](std::size_t i, std::size_t k) {
+    const std::size_t pick = 3 * i + k;
+    return pick < awkward.size() ? awkward[pick] : static_cast<Real>(uniform(random));
+  };
+  ParticleCloud cloud("metal");
+  cloud.resize(count);
+  auto& temperature = cloud.addScalarField("T");
+  auto& density = cloud.addScalarField("rho");
+  auto& velocity = cloud.addVectorField("U");
+  auto& force = cloud.addVectorField("force");
+  auto& id = cloud.addIdField("id");
+  auto& origin = cloud.addIdField("origin");
+  for (std::size_t i = 0; i < count; ++i) {
+    cloud.positions()[i] = Vector(value(i, 0), value(i, 1), value(i, 2));
+    velocity[i] = Vector(value(i, 2), value(i, 0), value(i, 1));
+    force[i] = Vector(value(i, 1), value(i, 2), value(i, 0));
+    temperature[i] = value(i, 0);
+    density[i] = value(i, 1);
+    id[i] = static_cast<std::int64_t>(random());
+    origin[i] = -static_cast<std::int64_t>(i);
+  }
+  cloud.attributes()["spacing"] = 0.00225;
+  cloud.attributes()["negativeZero"] = -0.0;
+  cloud.attributes()["tiny"] = 4.9e-324;
+  cloud.attributes()["huge"] = 1.7976931348623157e308;
+  return cloud;
+}
+
+// identicalTo compares attributes with ==, which cannot tell -0.0 from 0.0.
+void expectAttributesBitwiseEqual(const ParticleCloud& expected, const ParticleCloud& actual) {
+  ASSERT_EQ(expected.attributes().size(), actual.attributes().size());
+  for (const auto& [name, value] : expected.attributes()) {
+    ASSERT_TRUE(actual.attributes().count(name)) << name;
+    EXPECT_EQ(std::bit_cast<std::uint64_t>(value),
+              std::bit_cast<std::uint64_t>(actual.attributes().at(name)))
+        << name;
+  }
+}
+
+class VtpCloudTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    folder_ = fs::temp_directory_path() / ("sphCastVtpCloudTest_" + std::string(info->name()) +
+                                           "_" + std::to_string(std::random_device{}()));
+    fs::create_directories(folder_);
+  }
+  void TearDown() override { fs::remove_all(folder_); }
+
+  static std::string readWhole(const fs::path& file) {
+    // (not istreambuf_iterator: g++ 12 gives a false -Wnull-dereference for it)
+    std::ifstream in(file, std::ios::binary | std::ios::ate);
+    std::string content(static_cast<std::size_t>(in.tellg()), '\0');
+    in.seekg(0);
+    in.read(content.data(), static_cast<std::streamsize>(content.size()));
+    return content;
+  }
+  static void writeWhole(const fs::path& file, const std::string& content) {
+    std::ofstream(file, std::ios::binary) << content;
+  }
+
+  // Reading file must throw an Error naming it, and VTK must print nothing.
+  static void expectReadErrorNamingFile(const fs::path& file, const std::string& because = "") {
+    ::testing::internal::CaptureStderr();
+    ::testing::internal::CaptureStdout();
+    std::string message;
+    try {
+      readCloudVtp(file, "metal");
+    } catch (const Error& error) {
+      message = error.what();
+    }
+    const std::string printed =
+        ::testing::internal::GetCapturedStderr() + ::testing::internal::GetCapturedStdout();
+    EXPECT_NE(message.find(file.string()), std::string::npos) << "message: '" << message << "'";
+    EXPECT_NE(message.find(because), std::string::npos) << message;
+    EXPECT_EQ(printed, "") << "VTK printed while reading " << file;
+  }
+
+  fs::path folder_;
+};
+
+TEST_F(VtpCloudTest, WriteThenReadIsBitExact) {
+  const ParticleCloud cloud = randomCloud(1000, 7);
+  const fs::path file = folder_ / "metal.vtp";
+  writeCloudVtp(cloud, file);
+  const ParticleCloud read = readCloudVtp(file, "metal");
+  EXPECT_EQ(read.name(), "metal");
+  EXPECT_EQ(read.size(), cloud.size());
+  EXPECT_TRUE(read.identicalTo(cloud));
+  expectAttributesBitwiseEqual(cloud, read);
+  EXPECT_TRUE(std::signbit(read.positions()[0].y()));  // -0.0 kept
+  EXPECT_EQ(read.scalarField("T")[4], -std::numeric_limits<Real>::infinity());
+  EXPECT_TRUE(std::isnan(read.scalarField("rho")[4]));
+}
+
+TEST_F(VtpCloudTest, ReadKeepsFieldKinds) {
+  const fs::path file = folder_ / "metal.vtp";
+  writeCloudVtp(randomCloud(10, 1), file);
+  const ParticleCloud read = readCloudVtp(file, "metal");
+  EXPECT_TRUE(read.hasScalarField("T"));
+  EXPECT_TRUE(read.hasScalarField("rho"));
+  EXPECT_TRUE(read.hasVectorField("U"));
+  EXPECT_TRUE(read.hasVectorField("force"));
+  EXPECT_TRUE(read.hasIdField("id"));
+  EXPECT_TRUE(read.hasIdField("origin"));
+  EXPECT_EQ(read.scalarFields().size(), 2u);
+  EXPECT_EQ(read.vectorFields().size(), 2u);
+  EXPECT_EQ(read.idFields().size(), 2u);
+}
+
+TEST_F(VtpCloudTest, EmptyCloudRoundTrips) {
+  ParticleCloud cloud("mold");
+  cloud.addScalarField("T");
+  cloud.addVectorField("U");
+  cloud.addIdField("id");
+  cloud.attributes()["spacing"] = 0.001;
+  const fs::path file = folder_ / "mold.vtp";
+  writeCloudVtp(cloud, file);
+  const ParticleCloud read = readCloudVtp(file, "mold");
+  EXPECT_EQ(read.size(), 0u);
+  EXPECT_TRUE(read.identicalTo(cloud));
+}
+
+TEST_F(VtpCloudTest, CloudWithoutFieldsRoundTrips) {
+  ParticleCloud cloud("air");
+  cloud.resize(3);
+  cloud.positions()[2] = Vector(1, 2, 3);
+  const fs::path file = folder_ / "air.vtp";
+  writeCloudVtp(cloud, file);
+  EXPECT_TRUE(readCloudVtp(file, "air").identicalTo(cloud));
+}
+
+TEST_F(VtpCloudTest, FileIsAppendedRawZlibWithUInt64Headers) {
+  const fs::path file = folder_ / "metal.vtp";
+  writeCloudVtp(randomCloud(100, 2), file);
+  const std::string content = readWhole(file);
+  const std::string header = content.substr(0, content.find("<AppendedData"));
+  EXPECT_NE(header.find("type=\"PolyData\""), std::string::npos);
+  EXPECT_NE(header.find("header_type=\"UInt64\""), std::string::npos);
+  EXPECT_NE(header.find("compressor=\"vtkZLibDataCompressor\""), std::string::npos);
+  EXPECT_NE(header.find("format=\"appended\""), std::string::npos);
+  EXPECT_EQ(header.find("format=\"binary\""), std::string::npos);
+  EXPECT_EQ(header.find("format=\"ascii\""), std::string::npos);
+  EXPECT_NE(content.find("encoding=\"raw\""), std::string::npos);
+  const std::string realType = sizeof(Real) == 8 ? "Float64" : "Float32";
+  EXPECT_NE(header.find("type=\"" + realType + "\" Name=\"U\" NumberOfComponents=\"3\""),
+            std::string::npos);
+  EXPECT_NE(header.find("type=\"Int64\" Name=\"id\""), std::string::npos);
+  EXPECT_NE(header.find("type=\"Float64\" Name=\"spacing\" NumberOfTuples=\"1\""),
+            std::string::npos);
+  EXPECT_NE(header.find("NumberOfVerts=\"100\""), std::string::npos);
+}
+
+TEST_F(VtpCloudTest, WriteLeavesNoTemporaryFile) {
+  const fs::path file = folder_ / "metal.vtp";
+  writeCloudVtp(randomCloud(50, 3), file);
+  writeCloudVtp(randomCloud(60, 4), file);  // replaces the first
+  EXPECT_FALSE(fs::exists(folder_ / "metal.vtp.tmp"));
+  EXPECT_EQ(std::distance(fs::directory_iterator(folder_), fs::directory_iterator()), 1);
+  EXPECT_EQ(readCloudVtp(file, "metal").size(), 60u);
+}
+
+TEST_F(VtpCloudTest, WriteIntoMissingFolderIsAnErrorNamingTheFile) {
+  const fs::path file = folder_ / "0.1" / "metal.vtp";
+  ::testing::internal::CaptureStderr();
+  try {
+    writeCloudVtp(randomCloud(5, 5), file);
+    ADD_FAILURE() << "no Error thrown";
+  } catch (const Error& error) {
+    EXPECT_NE(std::string(error.what()).find(file.string()), std::string::npos) << error.what();
+  }
+  EXPECT_EQ(::testing::internal::GetCapturedStderr(), "");
+  EXPECT_FALSE(fs::exists(folder_ / "0.1"));
+}
+
+TEST_F(VtpCloudTest, TruncatedFileIsAnErrorNamingTheFile) {
+  const fs::path whole = folder_ / "whole.vtp";
+  writeCloudVtp(randomCloud(2000, 6), whole);
+  const std::string content = readWhole(whole);
+  const std::size_t appended = content.find("<AppendedData");
+  for (std::size_t length : {std::size_t{0}, std::size_t{10}, appended / 2, appended + 20,
+                             content.size() / 2, content.size() - 30, content.size() - 2}) {
+    SCOPED_TRACE("cut at " + std::to_string(length) + " of " + std::to_string(content.size()));
+    const fs::path cut = folder_ / ("cut" + std::to_string(length) + ".vtp");
+    writeWhole(cut, content.substr(0, length));
+    expectReadErrorNamingFile(cut);
+  }
+}
+
+TEST_F(VtpCloudTest, GarbageFileIsAnErrorNamingTheFile) {
+  std::mt19937 random(11);
+  std::string garbage(5000, '\0');
+  for (char& byte : garbage) byte = static_cast<char>(random());
+  const fs::path file = folder_ / "garbage.vtp";
+  writeWhole(file, garbage);
+  expectReadErrorNamingFile(file);
+  // Garbage that ends like a VTK file gets past the cheap check and must be caught by VTK.
+  const fs::path disguised = folder_ / "disguised.vtp";
+  writeWhole(disguised, garbage + "</VTKFile>\n");
+  expectReadErrorNamingFile(disguised);
+}
+
+TEST_F(VtpCloudTest, CorruptCompressedDataIsAnErrorNamingTheFile) {
+  const fs::path file = folder_ / "metal.vtp";
+  writeCloudVtp(randomCloud(2000, 8), file);
+  std::string content = readWhole(file);
+  const std::size_t data = content.find('_', content.find("<AppendedData")) + 1;
+  for (std::size_t i = data + 64; i < content.size() - 100; i += 97) content[i] ^= 0x5a;
+  writeWhole(file, content);
+  expectReadErrorNamingFile(file);
+}
+
+TEST_F(VtpCloudTest, OtherDatasetTypeIsAnErrorNamingTheFile) {
+  const fs::path file = folder_ / "grid.vtu";
+  writeWhole(file,
+             "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"1.0\">\n"
+             "<UnstructuredGrid><Piece NumberOfPoints=\"0\" NumberOfCells=\"0\"/>"
+             "</UnstructuredGrid>\n</VTKFile>\n");
+  expectReadErrorNamingFile(file);
+}
+
+TEST_F(VtpCloudTest, ArrayWithTwoComponentsIsAnErrorNamingTheArray) {
+  const fs::path file = folder_ / "twoComponents.vtp";
+  writeWhole(file,
+             "<?xml version=\"1.0\"?>\n"
+             "<VTKFile type=\"PolyData\" version=\"1.0\" byte_order=\"LittleEndian\">\n"
+             "<PolyData><Piece NumberOfPoints=\"1\" NumberOfVerts=\"0\" NumberOfLines=\"0\" "
+             "NumberOfStrips=\"0\" NumberOfPolys=\"0\">\n"
+             "<PointData><DataArray type=\"Float64\" Name=\"uv\" NumberOfComponents=\"2\" "
+             "format=\"ascii\">1 2</DataArray></PointData>\n"
+             "<Points><DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">"
+             "0 0 0</DataArray></Points>\n"
+             "</Piece></PolyData>\n</VTKFile>\n");
+  expectReadErrorNamingFile(file, "'uv'");
+}
+
+TEST_F(VtpCloudTest, UnsupportedArrayTypeIsAnErrorNamingTheArray) {
+  const fs::path file = folder_ / "unsigned.vtp";
+  writeWhole(file,
+             "<?xml version=\"1.0\"?>\n"
+             "<VTKFile type=\"PolyData\" version=\"1.0\" byte_order=\"LittleEndian\">\n"
+             "<PolyData><Piece NumberOfPoints=\"1\" NumberOfVerts=\"0\" NumberOfLines=\"0\" "
+             "NumberOfStrips=\"0\" NumberOfPolys=\"0\">\n"
+             "<PointData><DataArray type=\"UInt8\" Name=\"flag\" format=\"ascii\">1"
+             "</DataArray></PointData>\n"
+             "<Points><DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">"
+             "0 0 0</DataArray></Points>\n"
+             "</Piece></PolyData>\n</VTKFile>\n");
+  expectReadErrorNamingFile(file, "'flag'");
+}
+
+TEST_F(VtpCloudTest, MissingFileIsAnErrorSayingSo) {
+  const fs::path file = folder_ / "absent.vtp";
+  try {
+    readCloudVtp(file, "metal");
+    FAIL() << "no Error thrown";
+  } catch (const Error& error) {
+    EXPECT_EQ(std::string(error.what()),
+              "cannot read cloud file '" + file.string() + "': no such file");
+  }
+}
+
+}  // namespace
+}  // namespace sphcast
