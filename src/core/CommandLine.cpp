@@ -1,1 +1,59 @@
-// placeholder, being written this session
+#include "core/CommandLine.h"
+
+#include <exception>
+#include <iostream>
+
+#include "core/Error.h"
+
+namespace po = boost::program_options;
+
+namespace sphcast {
+
+CommandLine::CommandLine(std::string application, std::string description)
+    : application_(std::move(application)),
+      description_(std::move(description)),
+      options_("Options") {
+  options_.add_options()("case", po::value<std::string>()->default_value(".")->value_name("DIR"),
+                         "the case folder")("help", "print this help and exit");
+}
+
+po::options_description_easy_init CommandLine::options() { return options_.add_options(); }
+
+bool CommandLine::parse(int argc, const char* const argv[]) {
+  // allow_long_disguise: "-case" is the long option "case", as in OpenFOAM.
+  const auto style = po::command_line_style::unix_style |
+                     po::command_line_style::allow_long_disguise;
+  try {
+    po::store(po::command_line_parser(argc, argv).options(options_).style(style).run(), values_);
+    po::notify(values_);
+  } catch (const po::error& bad) {
+    throw Error(application_ + ": " + bad.what() + " (see " + application_ + " -help)");
+  }
+  if (values_.count("help")) {
+    std::cout << "Usage: " << application_ << " [OPTIONS]\n\n"
+              << description_ << "\n\n" << options_ << '\n';
+    return false;
+  }
+  return true;
+}
+
+std::filesystem::path CommandLine::casePath() const { return values_["case"].as<std::string>(); }
+
+int runApplication(const std::string& application, int (*body)(int, const char* const[]),
+                   int argc, const char* const argv[]) {
+  try {
+    return body(argc, argv);
+  } catch (const Error& error) {
+    std::cout.flush();
+    std::cerr << "\n--> sphCast FATAL ERROR in " << application << ":\n"
+              << error.what() << "\n\nExiting with status 1\n";
+    return 1;
+  } catch (const std::exception& unexpected) {
+    std::cout.flush();
+    std::cerr << "\n--> sphCast FATAL ERROR in " << application
+              << " (unexpected, please report): " << unexpected.what() << '\n';
+    return 2;
+  }
+}
+
+}  // namespace sphcast

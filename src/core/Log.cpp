@@ -1,1 +1,90 @@
-// placeholder, being written this session
+#include "core/Log.h"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <ctime>
+#include <iostream>
+#include <sstream>
+
+#include "core/Real.h"
+
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
+namespace sphcast {
+
+std::ostream& info() { return std::cout; }
+
+void warning(const std::string& message) {
+  std::cout.flush();
+  std::cerr << "\n--> sphCast Warning: " << message << '\n' << std::endl;
+}
+
+void printBanner(const std::string& application, const std::string& caseRoot) {
+  char host[256] = "unknown";
+  gethostname(host, sizeof host - 1);
+  const std::time_t now = std::time(nullptr);
+  char date[64];
+  std::strftime(date, sizeof date, "%b %d %Y %H:%M:%S", std::localtime(&now));
+  int threads = 1;
+#ifdef _OPENMP
+  threads = omp_get_max_threads();
+#endif
+  info() << "/*---------------------------------------------------------------------------*\\\n"
+         << "  sphCast: SPH casting simulation                 https://github.com/sphCast\n"
+         << "\\*---------------------------------------------------------------------------*/\n"
+         << "Build    : " << SPHCAST_VERSION << " (" << SPHCAST_BUILD_TYPE << ", Real = "
+         << (sizeof(Real) == sizeof(double) ? "double" : "float") << ")\n"
+         << "Exec     : " << application << '\n'
+         << "Date     : " << date << '\n'
+         << "Host     : " << host << '\n'
+         << "PID      : " << getpid() << '\n'
+         << "Case     : " << caseRoot << '\n'
+         << "nThreads : " << threads << " (OpenMP)\n\n";
+}
+
+namespace {
+double processCpuSeconds() {
+  timespec cpu{};
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &cpu);
+  return static_cast<double>(cpu.tv_sec) + 1e-9 * static_cast<double>(cpu.tv_nsec);
+}
+}  // namespace
+
+RunClock::RunClock() : wallStart_(std::chrono::steady_clock::now()), cpuStart_(processCpuSeconds()) {}
+
+double RunClock::executionTime() const { return processCpuSeconds() - cpuStart_; }
+
+double RunClock::clockTime() const {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - wallStart_).count();
+}
+
+std::string RunClock::timesLine() const {
+  std::ostringstream line;
+  line.precision(6);
+  line << "ExecutionTime = " << executionTime() << " s  ClockTime = "
+       << std::lround(clockTime()) << " s";
+  return line.str();
+}
+
+std::string formatDuration(double seconds) {
+  const long total = std::lround(std::max(0.0, seconds));
+  char text[32];
+  std::snprintf(text, sizeof text, "%ld:%02ld:%02ld", total / 3600, (total / 60) % 60, total % 60);
+  return text;
+}
+
+std::string RunClock::progressLine(double fraction, long stepsTaken) const {
+  const double wall = clockTime();
+  const double stepsPerSecond = wall > 0.0 ? static_cast<double>(stepsTaken) / wall : 0.0;
+  const double eta = fraction > 0.0 ? wall * (1.0 - fraction) / fraction : 0.0;
+  char text[128];
+  std::snprintf(text, sizeof text, "Progress %.1f%% of endTime  %.0f steps/s  ETA %s",
+                100.0 * fraction, stepsPerSecond, fraction > 0.0 ? formatDuration(eta).c_str() : "-");
+  return text;
+}
+
+}  // namespace sphcast

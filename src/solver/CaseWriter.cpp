@@ -1,1 +1,29 @@
-// placeholder, being written this session
+#include "solver/CaseWriter.h"
+
+#include <filesystem>
+
+#include "core/AtomicFile.h"
+#include "core/Error.h"
+
+namespace fs = std::filesystem;
+
+namespace sphcast {
+
+CaseWriter::CaseWriter(const CaseFolder& caseFolder, int purgeWrite)
+    : caseFolder_(caseFolder), purgeWrite_(purgeWrite) {}
+
+void CaseWriter::write(const TimeState& time, const std::vector<const ParticleCloud*>& clouds) {
+  writeTimeFolder(caseFolder_, time, clouds);
+  if (writtenTimes_.empty() || writtenTimes_.back() != time.name) writtenTimes_.push_back(time.name);
+  // purgeWrite as OpenFOAM: only times this run wrote are removed, never the start time.
+  while (purgeWrite_ > 0 && writtenTimes_.size() > static_cast<std::size_t>(purgeWrite_)) {
+    // Out of sight first, so a kill during the removal leaves no half time folder in the case.
+    const fs::path purged = caseFolder_.purgedFolder(writtenTimes_.front());
+    renameAtomically(caseFolder_.root() / writtenTimes_.front(), purged);
+    fs::remove_all(purged);
+    writtenTimes_.pop_front();
+  }
+  writeCaseIndex(caseFolder_);
+}
+
+}  // namespace sphcast

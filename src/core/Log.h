@@ -1,0 +1,37 @@
+#pragma once
+
+#include <chrono>
+#include <ostream>
+#include <string>
+
+namespace sphcast {
+
+// The log is OpenFOAM's: plain lines on standard output that foamLog-style tools can parse.
+// Warnings and errors go to standard error.
+std::ostream& info();
+void warning(const std::string& message);
+
+// The header every application prints: name, case, build, host, threads.
+void printBanner(const std::string& application, const std::string& caseRoot);
+
+// ExecutionTime (CPU seconds of the process, all threads) and ClockTime (wall seconds), as
+// OpenFOAM prints them, plus the progress line: percent of endTime, steps/s and ETA.
+class RunClock {
+ public:
+  RunClock();
+  double executionTime() const;
+  double clockTime() const;
+  // "ExecutionTime = 1.23 s  ClockTime = 2 s"
+  std::string timesLine() const;
+  // "Progress 12.5% of endTime  1523 steps/s  ETA 0:01:23"; steps counted since construction.
+  std::string progressLine(double fraction, long stepsTaken) const;
+
+ private:
+  std::chrono::steady_clock::time_point wallStart_;
+  double cpuStart_;
+};
+
+// Seconds as h:mm:ss.
+std::string formatDuration(double seconds);
+
+}  // namespace sphcast

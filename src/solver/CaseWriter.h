@@ -1,0 +1,32 @@
+#pragma once
+
+#include <deque>
+#include <string>
+#include <vector>
+
+#include "core/CaseFolder.h"
+#include "core/TimeControl.h"
+#include "io/TimeFolders.h"
+#include "particles/ParticleCloud.h"
+
+namespace sphcast {
+
+// Writes time folders the way DESIGN.md §2 asks: every cloud and uniform/time into a hidden
+// folder first, then one rename, so a run killed at any moment leaves only complete folders;
+// then the oldest written times beyond purgeWrite are removed and <case>.pvd is rewritten.
+class CaseWriter {
+ public:
+  CaseWriter(const CaseFolder& caseFolder, int purgeWrite);
+
+  // Writes <time>/<cloud>.vtp for every cloud and <time>/uniform/time.
+  void write(const TimeState& time, const std::vector<const ParticleCloud*>& clouds);
+
+  void setPurgeWrite(int purgeWrite) { purgeWrite_ = purgeWrite; }
+
+ private:
+  const CaseFolder& caseFolder_;
+  int purgeWrite_;
+  std::deque<std::string> writtenTimes_;  // by this run, oldest first (purgeWrite)
+};
+
+}  // namespace sphcast

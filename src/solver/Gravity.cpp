@@ -1,0 +1,14 @@
+#include "solver/Gravity.h"
+
+#include "core/dictionary/Dictionary.h"
+
+namespace sphcast {
+
+Vector readGravity(const CaseFolder& caseFolder) {
+  const Dictionary g = Dictionary::read(caseFolder.constantFile("g"));
+  g.checkKeys({"dimensions", "value"});
+  const Dimensions acceleration{{0, 1, -2, 0, 0, 0, 0}};
+  return g.get<Vector>("value", acceleration);
+}
+
+}  // namespace sphcast
