@@ -1,1 +1,173 @@
-// placeholder, being written this session
+#include "core/dictionary/Dictionary.h"
+
+#include <algorithm>
+
+#include "core/dictionary/Parser.h"
+
+namespace sphcast {
+
+namespace {
+
+std::string inQuotes(std::string_view key) {
+  // Appended piecewise: "'" + std::string(...) trips a false -Wrestrict in GCC 12.
+  std::string text(1, '\'');
+  text.append(key);
+  text += '\'';
+  return text;
+}
+
+// "(a b c)", as OpenFOAM lists the valid words.
+std::string listed(const std::vector<std::string>& words) {
+  std::string text = "(";
+  for (std::size_t i = 0; i < words.size(); ++i) text += (i == 0 ? "" : " ") + words[i];
+  return text + ")";
+}
+
+std::size_t editDistance(std::string_view from, std::string_view to) {
+  // Levenshtein distance, one row at a time.
+  std::vector<std::size_t> row(to.size() + 1);
+  for (std::size_t j = 0; j <= to.size(); ++j) row[j] = j;
+  for (std::size_t i = 1; i <= from.size(); ++i) {
+    std::size_t diagonal = row[0];
+    row[0] = i;
+    for (std::size_t j = 1; j <= to.size(); ++j) {
+      const std::size_t above = row[j];
+      const std::size_t substitution = diagonal + (from[i - 1] == to[j - 1] ? 0 : 1);
+      row[j] = std::min({above + 1, row[j - 1] + 1, substitution});
+      diagonal = above;
+    }
+  }
+  return row[to.size()];
+}
+
+// The valid key a misspelling most likely meant: within a third of its length (at least one
+// edit), the first of equally near ones; empty if none is that near.
+std::string nearestKey(std::string_view misspelt, const std::vector<std::string>& validKeys) {
+  std::string nearest;
+  std::size_t nearestDistance = 0;
+  for (const std::string& valid : validKeys) {
+    const std::size_t distance = editDistance(misspelt, valid);
+    const std::size_t tolerance = std::max<std::size_t>(1, valid.size() / 3);
+    if (distance <= tolerance && (nearest.empty() || distance < nearestDistance)) {
+      nearest = valid;
+      nearestDistance = distance;
+    }
+  }
+  return nearest;
+}
+
+}  // namespace
+
+Dictionary Dictionary::read(const std::filesystem::path& file) {
+  return dictionary::Parser::readFile(file);
+}
+
+Dictionary Dictionary::parse(std::string_view text, const std::string& fileName) {
+  return dictionary::Parser::parseText(text, fileName);
+}
+
+const Dictionary::Entry* Dictionary::findEntry(std::string_view key) const {
+  const auto entry = std::find_if(entries_.begin(), entries_.end(),
+                                  [key](const Entry& candidate) { return candidate.key == key; });
+  return entry == entries_.end() ? nullptr : &*entry;
+}
+
+std::vector<std::string> Dictionary::keys() const {
+  std::vector<std::string> result;
+  result.reserve(entries_.size());
+  for (const Entry& entry : entries_) result.push_back(entry.key);
+  return result;
+}
+
+bool Dictionary::found(std::string_view key) const { return findEntry(key) != nullptr; }
+
+bool Dictionary::isDict(std::string_view key) const {
+  const Entry* entry = findEntry(key);
+  return entry && entry->subDict;
+}
+
+const Dictionary& Dictionary::subDict(std::string_view key) const {
+  const Entry* entry = findEntry(key);
+  if (!entry) {
+    throw DictionaryError(location_, "missing sub-dictionary " + inQuotes(key) + " in " + name_);
+  }
+  if (!entry->subDict) {
+    throw DictionaryError(entry->where, "expected a sub-dictionary { ... } for " + inQuotes(key) +
+                                            " in " + name_ + ", found a value");
+  }
+  return *entry->subDict;
+}
+
+SourceLocation Dictionary::location(std::string_view key) const {
+  const Entry* entry = findEntry(key);
+  if (!entry) throw DictionaryError(location_, "missing key " + inQuotes(key) + " in " + name_);
+  return entry->where;
+}
+
+dictionary::ItemCursor Dictionary::valueCursor(std::string_view key, const Dimensions* expected,
+                                               const std::string& description) const {
+  using dictionary::ValueItem;
+  const Entry* entry = findEntry(key);
+  if (!entry) throw DictionaryError(location_, "missing key " + inQuotes(key) + " in " + name_);
+  if (entry->subDict) {
+    throw DictionaryError(entry->where, "expected " + description + " for " + inQuotes(key) +
+                                            ", found a sub-dictionary");
+  }
+
+  // A dimension set comes first, or after a name in the old style `nu nu [0 2 -1 0 0 0 0] 1e-5`.
+  std::span<const ValueItem> items = entry->value;
+  std::size_t dimensionsAt = items.size();
+  if (!items.empty() && items[0].kind == ValueItem::Kind::Dimensions) {
+    dimensionsAt = 0;
+  } else if (items.size() > 1 && items[0].kind == ValueItem::Kind::Word &&
+             items[1].kind == ValueItem::Kind::Dimensions) {
+    dimensionsAt = 1;
+  }
+  if (dimensionsAt < items.size()) {
+    const ValueItem& dimensions = items[dimensionsAt];
+    if (expected && dimensions.dimensions != *expected) {
+      throw DictionaryError(dimensions.location(),
+                            "dimensions " + dimensions.dimensions.str() + " of " + inQuotes(key) +
+                                " do not match the expected " + expected->str());
+    }
+    items = items.subspan(dimensionsAt + 1);
+  }
+  return dictionary::ItemCursor(items, std::string(key), entry->valueEnd);
+}
+
+std::string Dictionary::getChoice(std::string_view key,
+                                  const std::vector<std::string>& choices) const {
+  const std::string expected = "one of " + listed(choices);
+  dictionary::ItemCursor cursor = valueCursor(key, nullptr, expected);
+  const dictionary::ValueItem& item = cursor.take(expected);
+  if (item.kind != dictionary::ValueItem::Kind::Word &&
+      item.kind != dictionary::ValueItem::Kind::String) {
+    cursor.fail(item, expected);
+  }
+  cursor.expectEnd();
+  if (std::find(choices.begin(), choices.end(), item.text) == choices.end()) {
+    throw DictionaryError(item.location(), "unknown " + std::string(key) + " " + inQuotes(item.text) +
+                                               "; valid " + std::string(key) +
+                                               " are: " + listed(choices));
+  }
+  return item.text;
+}
+
+std::string Dictionary::getChoiceOrDefault(std::string_view key,
+                                           const std::vector<std::string>& choices,
+                                           const std::string& fallback) const {
+  return found(key) ? getChoice(key, choices) : fallback;
+}
+
+void Dictionary::checkKeys(const std::vector<std::string>& validKeys) const {
+  for (const Entry& entry : entries_) {
+    if (std::find(validKeys.begin(), validKeys.end(), entry.key) != validKeys.end()) continue;
+    std::string message = "unknown key " + inQuotes(entry.key) + " in " + name_;
+    const std::string suggestion = nearestKey(entry.key, validKeys);
+    if (!suggestion.empty()) message += "; did you mean " + inQuotes(suggestion) + "?";
+    message += (suggestion.empty() ? "; valid keys are: " : " valid keys are: ") + listed(validKeys);
+    throw DictionaryError(entry.where, message);
+  }
+}
+
+}  // namespace sphcast
