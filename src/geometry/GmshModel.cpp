@@ -48,14 +48,26 @@ std::vector<PhysicalGroup> readPhysicalGroups(const std::filesystem::path& geome
       std::vector<int> entities;
       gmsh::model::getEntitiesForPhysicalGroup(dimension, tag, entities);
       group.entityCount = entities.size();
+      // The group's box is the union of its entities' boxes.
       auto& box = group.boundingBox;
-      gmsh::model::getBoundingBox(dimension, tag, box[0], box[1], box[2], box[3], box[4], box[5]);
+      box = {1e300, 1e300, 1e300, -1e300, -1e300, -1e300};
+      for (const int entity : entities) {
+        std::array<double, 6> entityBox{};
+        auto& b = entityBox;
+        gmsh::model::getBoundingBox(dimension, entity, b[0], b[1], b[2], b[3], b[4], b[5]);
+        for (int axis = 0; axis < 3; ++axis) {
+          box[axis] = std::min(box[axis], b[axis]);
+          box[axis + 3] = std::max(box[axis + 3], b[axis + 3]);
+        }
+      }
       groups.push_back(group);
     }
-  } catch (const std::exception& gmshError) {
-    throw Error("gmsh cannot read '" + geometryFile.string() + "': " + gmshError.what());
   } catch (...) {
-    throw Error("gmsh cannot read '" + geometryFile.string() + "'");
+    // gmsh 4.8 throws non-standard objects; its logger keeps the message.
+    std::string reason;
+    gmsh::logger::getLastError(reason);
+    throw Error("gmsh cannot read '" + geometryFile.string() + "': " +
+                (reason.empty() ? "unknown gmsh error" : reason));
   }
   return groups;
 }

@@ -31,9 +31,11 @@ int particleizeMold(int argc, const char* const argv[]) {
     const auto path = caseFolder.constant() / "geometry" / file;
     sphcast::info() << "Reading " << path.string() << '\n';
     for (const auto& group : sphcast::readPhysicalGroups(path)) {
+      const auto& box = group.boundingBox;
       sphcast::info() << "    physical group " << std::setw(20) << std::left << group.name
                       << " dimension " << group.dimension << ", " << group.entityCount
-                      << " entities\n";
+                      << " entities, bounds (" << box[0] << ' ' << box[1] << ' ' << box[2]
+                      << ") (" << box[3] << ' ' << box[4] << ' ' << box[5] << ")\n";
       groups.push_back(group);
     }
   }

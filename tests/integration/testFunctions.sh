@@ -1,0 +1,54 @@
+# Sourced by the integration tests: a scratch folder, the built tools on PATH, small cases.
+set -u
+export PATH="$SPHCAST_BIN:$PATH"
+export OMP_NUM_THREADS=${OMP_NUM_THREADS:-2}
+scratch=$(mktemp -d "${TMPDIR:-/tmp}/sphCastIntegration.XXXXXX")
+trap 'rm -rf "$scratch"' EXIT
+
+fail() { echo "FAIL: $*" >&2; exit 1; }
+pass() { echo "PASS: $*"; }
+
+# makeFreeFallCase DIR SPACING ENDTIME WRITEINTERVAL: a block thrown upwards, gravity only.
+makeFreeFallCase() {
+    local dir=$1 spacing=$2 endTime=$3 writeInterval=$4
+    mkdir -p "$dir/system" "$dir/constant"
+    cat > "$dir/system/controlDict" <<DICT
+FoamFile { version 2.0; format ascii; class dictionary; object controlDict; }
+application     sphCastFoam;
+startFrom       latestTime;
+stopAt          endTime;
+endTime         $endTime;
+deltaT          1e-4;
+adjustTimeStep  yes;
+maxCo           0.25;
+maxDeltaT       1e-3;
+writeControl    adjustableRunTime;
+writeInterval   $writeInterval;
+logInterval     1000;
+DICT
+    cat > "$dir/system/setCastFieldsDict" <<DICT
+FoamFile { version 2.0; format ascii; class dictionary; object setCastFieldsDict; }
+spacing $spacing;
+clouds
+{
+    metal
+    {
+        regions { ingot { type box; min (0 0 0.2); max (0.05 0.05 0.25); } }
+        fields  { U (1 0 2); T 953; }
+    }
+}
+DICT
+    cat > "$dir/constant/g" <<DICT
+FoamFile { version 2.0; format ascii; class uniformDimensionedVectorField; object g; }
+dimensions [0 1 -2 0 0 0 0];
+value (0 0 -9.81);
+DICT
+}
+
+# setEntry FILE KEY VALUE: replaces "KEY ...;" in a dictionary.
+setEntry() { sed -i "s/^$2 .*/$2 $3;/" "$1"; }
+
+# sameTimeFolder A B: every file of two time folders identical, byte for byte.
+sameTimeFolder() {
+    diff -r "$1" "$2" > /dev/null
+}
