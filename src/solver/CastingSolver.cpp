@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <limits>
+#include <ostream>
 
 #include "core/Error.h"
 #include "solver/Gravity.h"
@@ -14,7 +15,7 @@ CastingSolver::CastingSolver(const CaseFolder& caseFolder)
       motion_(readGravity(caseFolder)),
       writer_(caseFolder, time_.settings().purgeWrite) {
   for (const std::string& repaired : caseFolder_.recoverInterruptedWrites()) {
-    info() << "Repaired interrupted write: " << repaired << '\n';
+    info() << "Repaired interrupted write: " << repaired << std::endl;
   }
   info() << "Starting from time " << time_.startTimeName() << " (index " << time_.timeIndex()
          << ")\n";
@@ -30,7 +31,7 @@ CastingSolver::CastingSolver(const CaseFolder& caseFolder)
       motion_.stableDeltaT(cloud, time_.settings().maxCo);  // fail now, not after writing
     }
   }
-  info() << '\n';
+  info() << std::endl;
 }
 
 double CastingSolver::stableDeltaT() const {
@@ -54,7 +55,7 @@ void CastingSolver::writeResults() {
   for (const ParticleCloud& cloud : clouds_) written.push_back(&cloud);
   writer_.setPurgeWrite(time_.settings().purgeWrite);
   writer_.write(time_.state(), written);
-  info() << "Writing time " << time_.timeName() << '\n';
+  info() << "Writing time " << time_.timeName() << std::endl;
 }
 
 void CastingSolver::logStep(bool printBlock) {
@@ -62,7 +63,8 @@ void CastingSolver::logStep(bool printBlock) {
   info() << "deltaT = " << time_.deltaT() << "  (" << time_.deltaTLimiter() << ")\n"
          << "Time = " << time_.timeName() << "\n\n"
          << clock_.timesLine() << '\n'
-         << clock_.progressLine(time_.progress(), stepsTaken_) << "\n\n";
+         << clock_.progressLine(time_.progress(), stepsTaken_) << '\n'
+         << std::endl;  // flushed: a killed run's log ends at its last step
 }
 
 void CastingSolver::logRereadMessage() {
