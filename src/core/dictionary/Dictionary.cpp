@@ -67,9 +67,18 @@ Dictionary Dictionary::parse(std::string_view text, const std::string& fileName)
 }
 
 const Dictionary::Entry* Dictionary::findEntry(std::string_view key) const {
-  const auto entry = std::find_if(entries_.begin(), entries_.end(),
-                                  [key](const Entry& candidate) { return candidate.key == key; });
-  return entry == entries_.end() ? nullptr : &*entry;
+  const auto place = keyIndex_.find(key);
+  return place == keyIndex_.end() ? nullptr : &entries_[place->second];
+}
+
+Dictionary::Entry* Dictionary::findEntry(std::string_view key) {
+  const auto place = keyIndex_.find(key);
+  return place == keyIndex_.end() ? nullptr : &entries_[place->second];
+}
+
+void Dictionary::appendEntry(Entry entry) {
+  keyIndex_.emplace(entry.key, entries_.size());
+  entries_.push_back(std::move(entry));
 }
 
 std::vector<std::string> Dictionary::keys() const {
@@ -125,9 +134,9 @@ dictionary::ItemCursor Dictionary::valueCursor(std::string_view key, const Dimen
   }
   if (dimensionsAt < items.size()) {
     const ValueItem& dimensions = items[dimensionsAt];
-    if (expected && dimensions.dimensions != *expected) {
+    if (expected && dimensions.dimensions() != *expected) {
       throw DictionaryError(dimensions.location(),
-                            "dimensions " + dimensions.dimensions.str() + " of " + inQuotes(key) +
+                            "dimensions " + dimensions.dimensions().str() + " of " + inQuotes(key) +
                                 " do not match the expected " + expected->str());
     }
     items = items.subspan(dimensionsAt + 1);
@@ -146,8 +155,8 @@ std::string Dictionary::getChoice(std::string_view key,
   }
   cursor.expectEnd();
   if (std::find(choices.begin(), choices.end(), item.text) == choices.end()) {
-    throw DictionaryError(item.location(), "unknown " + std::string(key) + " " + inQuotes(item.text) +
-                                               "; valid " + std::string(key) +
+    throw DictionaryError(item.location(), "unknown " + std::string(key) + " " +
+                                               inQuotes(item.text) + "; valid " + std::string(key) +
                                                " are: " + listed(choices));
   }
   return item.text;
@@ -165,7 +174,8 @@ void Dictionary::checkKeys(const std::vector<std::string>& validKeys) const {
     std::string message = "unknown key " + inQuotes(entry.key) + " in " + name_;
     const std::string suggestion = nearestKey(entry.key, validKeys);
     if (!suggestion.empty()) message += "; did you mean " + inQuotes(suggestion) + "?";
-    message += (suggestion.empty() ? "; valid keys are: " : " valid keys are: ") + listed(validKeys);
+    message +=
+        (suggestion.empty() ? "; valid keys are: " : " valid keys are: ") + listed(validKeys);
     throw DictionaryError(entry.where, message);
   }
 }

@@ -1,6 +1,8 @@
 #pragma once
 
 #include <filesystem>
+#include <functional>
+#include <map>
 #include <memory>
 #include <string>
 #include <string_view>
@@ -75,13 +77,16 @@ class Dictionary {
 
   struct Entry {
     std::string key;
-    SourceLocation where;                   // of the key
+    SourceLocation where;  // of the key
     std::vector<dictionary::ValueItem> value;
-    SourceLocation valueEnd;                // just after the value, for "found nothing"
-    std::shared_ptr<Dictionary> subDict;    // set for a sub-dictionary, which has no value
+    SourceLocation valueEnd;              // just after the value, for "found nothing"
+    std::shared_ptr<Dictionary> subDict;  // set for a sub-dictionary, which has no value
   };
 
   const Entry* findEntry(std::string_view key) const;
+  Entry* findEntry(std::string_view key);
+  // Adds an entry with a key not yet present.
+  void appendEntry(Entry entry);
   // The items of `key`'s value with a leading dimension set stripped (and checked against
   // `expected` when given); `description` says what the reader wants, for the errors.
   dictionary::ItemCursor valueCursor(std::string_view key, const Dimensions* expected,
@@ -89,7 +94,8 @@ class Dictionary {
 
   std::string name_;
   SourceLocation location_;
-  std::vector<Entry> entries_;
+  std::vector<Entry> entries_;                                // in file order
+  std::map<std::string, std::size_t, std::less<>> keyIndex_;  // key -> place in entries_
   std::shared_ptr<Dictionary> header_;
 };
 

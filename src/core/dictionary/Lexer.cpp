@@ -1,5 +1,6 @@
 #include "core/dictionary/Lexer.h"
 
+#include <algorithm>
 #include <charconv>
 #include <climits>
 #include <cmath>
@@ -21,12 +22,7 @@ bool isDigit(char c) { return c >= '0' && c <= '9'; }
 bool isWordCharacter(char c) {
   const auto byte = static_cast<unsigned char>(c);
   if (byte <= 0x20 || byte >= 0x7f) return false;
-  switch (c) {
-    case ';': case '{': case '}': case '(': case ')': case '[': case ']': case '"':
-      return false;
-    default:
-      return true;
-  }
+  return std::string_view(";{}()[]\"").find(c) == std::string_view::npos;
 }
 
 bool startsComment(std::string_view text, std::size_t at) {
@@ -35,7 +31,8 @@ bool startsComment(std::string_view text, std::size_t at) {
 
 std::string byteName(char c) {
   char buffer[8];
-  std::snprintf(buffer, sizeof(buffer), "0x%02X", static_cast<unsigned>(static_cast<unsigned char>(c)));
+  std::snprintf(buffer, sizeof(buffer), "0x%02X",
+                static_cast<unsigned>(static_cast<unsigned char>(c)));
   return buffer;
 }
 
@@ -107,7 +104,13 @@ Token Lexer::scan() {
   } else {
     const char c = current();
     switch (c) {
-      case '{': case '}': case '(': case ')': case '[': case ']': case ';':
+      case '{':
+      case '}':
+      case '(':
+      case ')':
+      case '[':
+      case ']':
+      case ';':
         token.kind = Token::Kind::Punctuation;
         token.punctuation = c;
         token.text = std::string(1, c);
@@ -159,9 +162,13 @@ std::size_t Lexer::wordRunEnd(std::size_t from) const {
 // after a word; returns where the word ends: after the last point where the parentheses
 // balance, or at `from` if they never do (then `key(1 2 3)` is a word and a list).
 std::size_t Lexer::balancedParenthesesEnd(std::size_t from) const {
+  // The look-ahead is bounded, or "a(b(c(d(..." would be rescanned from every '(' (quadratic);
+  // real words with parentheses are short.
+  constexpr std::size_t maxLookAhead = 1024;
+  const std::size_t limit = std::min(text_.size(), from + maxLookAhead);
   std::size_t wordEnd = from;
   std::size_t depth = 0;
-  for (std::size_t i = from; i < text_.size(); ++i) {
+  for (std::size_t i = from; i < limit; ++i) {
     const char c = text_[i];
     if (c == '(') {
       ++depth;
@@ -235,11 +242,20 @@ void Lexer::scanString(Token& token) {
       advance();
       advance();
       switch (escaped) {
-        case '"': token.text += '"'; break;
-        case '\\': token.text += '\\'; break;
-        case 'n': token.text += '\n'; break;
-        case 't': token.text += '\t'; break;
-        case '\n': break;  // a backslash at the end of a line continues the string
+        case '"':
+          token.text += '"';
+          break;
+        case '\\':
+          token.text += '\\';
+          break;
+        case 'n':
+          token.text += '\n';
+          break;
+        case 't':
+          token.text += '\t';
+          break;
+        case '\n':
+          break;  // a backslash at the end of a line continues the string
         default:  // unknown escapes stay as written, e.g. regular expressions "\d+"
           token.text += '\\';
           token.text += escaped;

@@ -25,10 +25,10 @@ struct Token {
   double number = 0.0;
   bool isInteger = false;
   char punctuation = '\0';
-  TextPosition position;     // first byte
-  int endLine = 0;           // just after the last byte, for "missing ';' after ..."
+  TextPosition position;  // first byte
+  int endLine = 0;        // just after the last byte, for "missing ';' after ..."
   int endColumn = 0;
-  bool afterSpace = false;   // whitespace or a comment separates it from the previous token
+  bool afterSpace = false;  // whitespace or a comment separates it from the previous token
 
   bool is(char mark) const { return kind == Kind::Punctuation && punctuation == mark; }
 };
@@ -44,7 +44,9 @@ class Lexer {
   Token next();
   const std::shared_ptr<const std::string>& fileName() const { return fileName_; }
   // Just after the last token that next() returned (the start of the text before any).
-  SourceLocation previousEnd() const { return SourceLocation{*fileName_, previousEndLine_, previousEndColumn_}; }
+  SourceLocation previousEnd() const {
+    return SourceLocation{*fileName_, previousEndLine_, previousEndColumn_};
+  }
 
  private:
   Token scan();

@@ -22,21 +22,28 @@ std::string inQuotes(std::string_view key) {
 
 std::string describe(const Token& token) {
   switch (token.kind) {
-    case Token::Kind::Word: return "word '" + token.text + "'";
-    case Token::Kind::String: return "string \"" + token.text + "\"";
-    case Token::Kind::Number: return "number " + token.text;
-    case Token::Kind::Punctuation: return "'" + token.text + "'";
-    case Token::Kind::Directive: return "directive '" + token.text + "'";
-    case Token::Kind::Macro: return "macro '$" + token.text + "'";
-    case Token::Kind::EndOfFile: return "the end of the file";
+    case Token::Kind::Word:
+      return "word '" + token.text + "'";
+    case Token::Kind::String:
+      return "string \"" + token.text + "\"";
+    case Token::Kind::Number:
+      return "number " + token.text;
+    case Token::Kind::Punctuation:
+      return "'" + token.text + "'";
+    case Token::Kind::Directive:
+      return "directive '" + token.text + "'";
+    case Token::Kind::Macro:
+      return "macro '$" + token.text + "'";
+    case Token::Kind::EndOfFile:
+      return "the end of the file";
   }
   return "a token";
 }
 
 void checkNesting(int depth, const Token& where) {
   if (depth > Parser::maxNesting) {
-    throw DictionaryError(locationOf(where), "nesting deeper than " +
-                                                 std::to_string(Parser::maxNesting) + " levels");
+    throw DictionaryError(locationOf(where),
+                          "nesting deeper than " + std::to_string(Parser::maxNesting) + " levels");
   }
 }
 
@@ -48,7 +55,7 @@ bool isListCount(const Token& number, const Token& following) {
 
 ValueItem itemFrom(const Token& token) {
   ValueItem item;
-  item.kind = token.kind == Token::Kind::Number ? ValueItem::Kind::Number
+  item.kind = token.kind == Token::Kind::Number   ? ValueItem::Kind::Number
               : token.kind == Token::Kind::String ? ValueItem::Kind::String
                                                   : ValueItem::Kind::Word;
   item.text = token.text;
@@ -62,15 +69,14 @@ std::string readWholeFile(const fs::path& path, const SourceLocation& where,
                           const std::string& what) {
   std::error_code error;
   // Only regular files: a device such as /dev/zero would never end.
-  const bool regular = !path.native().empty() &&
-                       path.native().find('\0') == std::string::npos &&
+  const bool regular = !path.native().empty() && path.native().find('\0') == std::string::npos &&
                        fs::is_regular_file(path, error);
   if (!regular) throw DictionaryError(where, "cannot open " + what);
   const std::uintmax_t size = fs::file_size(path, error);
   if (error) throw DictionaryError(where, "cannot open " + what);
   if (size > Parser::maxFileBytes) {
-    throw DictionaryError(where, what + " is larger than " +
-                                     std::to_string(Parser::maxFileBytes >> 20) + " MiB");
+    throw DictionaryError(
+        where, what + " is larger than " + std::to_string(Parser::maxFileBytes >> 20) + " MiB");
   }
   std::ifstream stream(path, std::ios::binary);
   if (!stream) throw DictionaryError(where, "cannot open " + what);
@@ -134,7 +140,8 @@ void Parser::parseEntries(Lexer& lexer, Dictionary& scope, int depth, const Toke
         if (token.is(';')) {  // a stray ';' ends nothing, and harms nothing
           lexer.next();
         } else if (token.is('}')) {
-          if (!openingBrace) throw DictionaryError(locationOf(token), "unbalanced '}': no '{' to close");
+          if (!openingBrace)
+            throw DictionaryError(locationOf(token), "unbalanced '}': no '{' to close");
           lexer.next();
           return;
         } else if (token.is(')')) {
@@ -183,7 +190,8 @@ void Parser::parseValue(Lexer& lexer, Entry& entry, int depth) {
     const Token token = lexer.next();
     if (token.is(';')) return;
     if (token.kind == Token::Kind::EndOfFile || token.is('}')) {
-      throw DictionaryError(entry.valueEnd, "missing ';' after the value of " + inQuotes(entry.key));
+      throw DictionaryError(entry.valueEnd,
+                            "missing ';' after the value of " + inQuotes(entry.key));
     }
     // `key $dict;` makes key a copy of the sub-dictionary dict.
     if (token.kind == Token::Kind::Macro && entry.value.empty()) {
@@ -198,12 +206,14 @@ void Parser::parseValue(Lexer& lexer, Entry& entry, int depth) {
     }
     if (!parseItem(lexer, token, entry.value, entry.key, depth)) {
       if (token.is('{')) {
-        throw DictionaryError(locationOf(token), "unexpected '{'" + inValue + "; missing ';' before it?");
+        throw DictionaryError(locationOf(token),
+                              "unexpected '{'" + inValue + "; missing ';' before it?");
       }
       if (token.is(')') || token.is(']')) {
         throw DictionaryError(locationOf(token), "unbalanced '" + token.text + "'" + inValue);
       }
-      throw DictionaryError(locationOf(token), "unsupported directive '" + token.text + "'" + inValue);
+      throw DictionaryError(locationOf(token),
+                            "unsupported directive '" + token.text + "'" + inValue);
     }
     entry.valueEnd = lexer.previousEnd();
   }
@@ -238,7 +248,8 @@ bool Parser::parseItem(Lexer& lexer, const Token& token, std::vector<ValueItem>&
       if (source->subDict) {
         throw DictionaryError(locationOf(token), "macro '$" + token.text +
                                                      "' names a sub-dictionary, which cannot be "
-                                                     "part of a value or list" + inValue);
+                                                     "part of a value or list" +
+                                                     inValue);
       }
       // Copy before appending: the source may be an earlier part of this very value's scope,
       // but never `items` itself, which is not yet an entry.
@@ -262,8 +273,7 @@ bool Parser::parseItem(Lexer& lexer, const Token& token, std::vector<ValueItem>&
   return false;
 }
 
-ValueItem Parser::parseList(Lexer& lexer, const Token& opening, const std::string& key,
-                            int depth) {
+ValueItem Parser::parseList(Lexer& lexer, const Token& opening, const std::string& key, int depth) {
   checkNesting(depth + 1, opening);
   const std::string inValue = " in the value of " + inQuotes(key);
   ValueItem list;
@@ -277,11 +287,11 @@ ValueItem Parser::parseList(Lexer& lexer, const Token& opening, const std::strin
       throw DictionaryError(locationOf(opening), "unbalanced '('" + inValue + ": missing ')'");
     }
     if (token.is(';') || token.is('}')) {
-      throw DictionaryError(locationOf(token),
-                            "missing ')' before '" + token.text + "'" + inValue +
-                                " (the list opened at line " +
-                                std::to_string(opening.position.line) + ", column " +
-                                std::to_string(opening.position.column) + ")");
+      throw DictionaryError(locationOf(token), "missing ')' before '" + token.text + "'" + inValue +
+                                                   " (the list opened at line " +
+                                                   std::to_string(opening.position.line) +
+                                                   ", column " +
+                                                   std::to_string(opening.position.column) + ")");
     }
     if (token.is('{')) {
       throw DictionaryError(locationOf(token),
@@ -290,7 +300,8 @@ ValueItem Parser::parseList(Lexer& lexer, const Token& opening, const std::strin
     if (token.is(']')) {
       throw DictionaryError(locationOf(token), "unbalanced ']'" + inValue);
     }
-    throw DictionaryError(locationOf(token), "unsupported directive '" + token.text + "'" + inValue);
+    throw DictionaryError(locationOf(token),
+                          "unsupported directive '" + token.text + "'" + inValue);
   }
 }
 
@@ -298,7 +309,6 @@ ValueItem Parser::parseDimensions(Lexer& lexer, const Token& opening, const std:
   ValueItem dimensions;
   dimensions.kind = ValueItem::Kind::Dimensions;
   dimensions.position = opening.position;
-  std::size_t count = 0;
   for (;;) {
     const Token token = lexer.next();
     if (token.is(']')) break;
@@ -310,11 +320,9 @@ ValueItem Parser::parseDimensions(Lexer& lexer, const Token& opening, const std:
       throw DictionaryError(locationOf(token), "expected a number in the dimension set of " +
                                                    inQuotes(key) + ", found " + describe(token));
     }
-    if (count < dimensions.dimensions.exponents.size()) {
-      dimensions.dimensions.exponents[count] = token.number;
-    }
-    ++count;
+    dimensions.items.push_back(itemFrom(token));
   }
+  const std::size_t count = dimensions.items.size();
   // OpenFOAM also accepts the first five (mass length time temperature moles).
   if (count != 7 && count != 5) {
     throw DictionaryError(locationOf(opening),
@@ -391,7 +399,8 @@ const Dictionary::Entry* Parser::resolveMacro(const Token& macro,
     path.remove_prefix(dots);
     if (dots <= scopes_.size()) searched.push_back(scopes_[scopes_.size() - dots]);
   } else {  // innermost scope first, then outwards
-    for (auto scope = scopes_.rbegin(); scope != scopes_.rend(); ++scope) searched.push_back(*scope);
+    for (auto scope = scopes_.rbegin(); scope != scopes_.rend(); ++scope)
+      searched.push_back(*scope);
   }
 
   for (const Dictionary* scope : searched) {
@@ -413,8 +422,7 @@ const Dictionary::Entry* Parser::resolveMacro(const Token& macro,
 void Parser::chargeCopy(const Token& macro) {
   if (++copiedItems_ > maxCopiedItems) {
     throw DictionaryError(locationOf(macro), "macro expansion too large: more than " +
-                                                 std::to_string(maxCopiedItems) +
-                                                 " items copied");
+                                                 std::to_string(maxCopiedItems) + " items copied");
   }
 }
 
@@ -427,11 +435,11 @@ ValueItem Parser::copyItem(const ValueItem& item, int depth, const Token& macro)
   copy.text = item.text;
   copy.number = item.number;
   copy.isInteger = item.isInteger;
-  copy.dimensions = item.dimensions;
   copy.position = item.position;
-  if (item.kind == ValueItem::Kind::List) {
-    checkNesting(depth + 1, macro);
-    for (const ValueItem& element : item.items) copy.items.push_back(copyItem(element, depth + 1, macro));
+  if (item.kind == ValueItem::Kind::List) checkNesting(depth + 1, macro);
+  copy.items.reserve(item.items.size());
+  for (const ValueItem& element : item.items) {
+    copy.items.push_back(copyItem(element, depth + 1, macro));
   }
   return copy;
 }
@@ -454,24 +462,23 @@ std::shared_ptr<Dictionary> Parser::cloneDictionary(const Dictionary& source,
       cloned.subDict = cloneDictionary(*entry.subDict, name + "/" + entry.key,
                                        entry.subDict->location_, depth + 1, macro);
     } else {
-      for (const ValueItem& item : entry.value) cloned.value.push_back(copyItem(item, depth, macro));
+      for (const ValueItem& item : entry.value)
+        cloned.value.push_back(copyItem(item, depth, macro));
     }
-    copy->entries_.push_back(std::move(cloned));
+    copy->appendEntry(std::move(cloned));
   }
   return copy;
 }
 
 void Parser::insertEntry(Dictionary& scope, Entry entry) {
-  for (Entry& existing : scope.entries_) {
-    if (existing.key != entry.key) continue;
-    if (existing.subDict && entry.subDict) {
-      for (Entry& child : entry.subDict->entries_) insertEntry(*existing.subDict, std::move(child));
-    } else {
-      existing = std::move(entry);
-    }
-    return;
+  Entry* existing = scope.findEntry(entry.key);
+  if (!existing) {
+    scope.appendEntry(std::move(entry));
+  } else if (existing->subDict && entry.subDict) {
+    for (Entry& child : entry.subDict->entries_) insertEntry(*existing->subDict, std::move(child));
+  } else {
+    *existing = std::move(entry);
   }
-  scope.entries_.push_back(std::move(entry));
 }
 
 }  // namespace sphcast::dictionary

@@ -27,14 +27,15 @@ struct ValueItem {
   enum class Kind { Number, Word, String, List, Dimensions };
 
   Kind kind = Kind::Word;
-  std::string text;               // a number as written, a word, or a string's contents
-  double number = 0.0;            // Kind::Number
-  bool isInteger = false;         // Kind::Number written as digits only, with an optional sign
-  std::vector<ValueItem> items;   // Kind::List
-  Dimensions dimensions;          // Kind::Dimensions
+  std::string text;              // a number as written, a word, or a string's contents
+  double number = 0.0;           // Kind::Number
+  bool isInteger = false;        // Kind::Number written as digits only, with an optional sign
+  std::vector<ValueItem> items;  // Kind::List elements; Kind::Dimensions exponents (numbers)
   TextPosition position;
 
   SourceLocation location() const { return position.location(); }
+  // Kind::Dimensions as a set: the exponents given, the rest zero.
+  Dimensions dimensions() const;
 };
 
 // How an item reads in a message: "number 1.5", "word 'uniform'", "string \"a b\"",

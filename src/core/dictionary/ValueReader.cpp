@@ -9,6 +9,14 @@ SourceLocation TextPosition::location() const {
   return SourceLocation{file ? *file : std::string(), line, column};
 }
 
+Dimensions ValueItem::dimensions() const {
+  Dimensions set;
+  for (std::size_t i = 0; i < items.size() && i < set.exponents.size(); ++i) {
+    set.exponents[i] = items[i].number;
+  }
+  return set;
+}
+
 std::string describe(const ValueItem& item) {
   switch (item.kind) {
     case ValueItem::Kind::Number:
@@ -21,7 +29,7 @@ std::string describe(const ValueItem& item) {
       return "a list of " + std::to_string(item.items.size()) +
              (item.items.size() == 1 ? " item" : " items");
     case ValueItem::Kind::Dimensions:
-      return "dimension set " + item.dimensions.str();
+      return "dimension set " + item.dimensions().str();
   }
   return "an item";
 }
@@ -98,8 +106,8 @@ void ItemCursor::expectEnd() const {
   const ValueItem& extra = items_[next_];
   std::string message = "unexpected " + describe(extra) + " after the value of " + subject();
   if (next_ > 0 && extra.position.line > items_[next_ - 1].position.line) {
-    message += "; missing ';' at the end of line " +
-               std::to_string(items_[next_ - 1].position.line) + "?";
+    message +=
+        "; missing ';' at the end of line " + std::to_string(items_[next_ - 1].position.line) + "?";
   }
   throw DictionaryError(extra.location(), message);
 }
@@ -120,8 +128,7 @@ float readFloat(ItemCursor& cursor, std::string_view expected) {
   return static_cast<float>(item.number);
 }
 
-long long readInteger(ItemCursor& cursor, long long min, long long max,
-                      std::string_view expected) {
+long long readInteger(ItemCursor& cursor, long long min, long long max, std::string_view expected) {
   const ValueItem& item = cursor.take(expected);
   if (item.kind != ValueItem::Kind::Number) cursor.fail(item, expected);
 

@@ -53,8 +53,7 @@ class ItemCursor {
 double readReal(ItemCursor& cursor, std::string_view expected);
 float readFloat(ItemCursor& cursor, std::string_view expected);
 // An integral number in [min, max]; written as digits, or as an exactly integral float (1e3).
-long long readInteger(ItemCursor& cursor, long long min, long long max,
-                      std::string_view expected);
+long long readInteger(ItemCursor& cursor, long long min, long long max, std::string_view expected);
 bool readBool(ItemCursor& cursor, std::string_view expected);
 std::string readText(ItemCursor& cursor, std::string_view expected);
 
@@ -76,8 +75,8 @@ struct ValueTraits<float> {
 };
 
 template <class Integer>
-  requires(std::is_integral_v<Integer> && !std::is_same_v<Integer, bool>)
-struct ValueTraits<Integer> {
+requires(std::is_integral_v<Integer> &&
+         !std::is_same_v<Integer, bool>) struct ValueTraits<Integer> {
   static std::string description() {
     return std::is_signed_v<Integer> ? "an integer" : "a non-negative integer";
   }
@@ -85,8 +84,8 @@ struct ValueTraits<Integer> {
     // Values beyond long long's range are never needed in a dictionary; clip the bounds to it.
     constexpr long long min = static_cast<long long>(std::numeric_limits<Integer>::min());
     constexpr long long max =
-        std::numeric_limits<Integer>::max() > static_cast<unsigned long long>(
-                                                  std::numeric_limits<long long>::max())
+        std::numeric_limits<Integer>::max() >
+                static_cast<unsigned long long>(std::numeric_limits<long long>::max())
             ? std::numeric_limits<long long>::max()
             : static_cast<long long>(std::numeric_limits<Integer>::max());
     return static_cast<Integer>(readInteger(cursor, min, max, description()));
@@ -107,8 +106,7 @@ struct ValueTraits<std::string> {
 
 // Fixed-size column vectors: sphcast::Vector (x y z), Eigen::Vector2d (x y).
 template <class Scalar, int Size, int Options, int MaxRows, int MaxCols>
-  requires(Size > 0)
-struct ValueTraits<Eigen::Matrix<Scalar, Size, 1, Options, MaxRows, MaxCols>> {
+requires(Size > 0) struct ValueTraits<Eigen::Matrix<Scalar, Size, 1, Options, MaxRows, MaxCols>> {
   using VectorType = Eigen::Matrix<Scalar, Size, 1, Options, MaxRows, MaxCols>;
 
   static std::string description() {

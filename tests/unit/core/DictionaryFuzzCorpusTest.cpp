@@ -23,7 +23,8 @@ TEST(DictionaryFuzzCorpus, EveryInputParsesOrThrowsDictionaryError) {
   for (const fs::directory_entry& file : fs::directory_iterator(corpus)) {
     if (!file.is_regular_file()) continue;
     std::ifstream stream(file.path(), std::ios::binary);
-    const std::string text{std::istreambuf_iterator<char>(stream), std::istreambuf_iterator<char>()};
+    const std::string text{std::istreambuf_iterator<char>(stream),
+                           std::istreambuf_iterator<char>()};
     ++inputs;
     try {
       // Named inside the corpus folder, as the fuzzer does, so relative #includes stay there.
@@ -40,8 +41,8 @@ TEST(DictionaryFuzzCorpus, EveryInputParsesOrThrowsDictionaryError) {
       }
     } catch (const DictionaryError&) {
     } catch (const std::exception& error) {
-      ADD_FAILURE() << file.path() << " threw something other than a DictionaryError: "
-                    << error.what();
+      ADD_FAILURE() << file.path()
+                    << " threw something other than a DictionaryError: " << error.what();
     }
   }
   EXPECT_GT(inputs, 0);

@@ -1,5 +1,3 @@
-#include "core/dictionary/Dictionary.h"
-
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -10,6 +8,7 @@
 #include <vector>
 
 #include "core/Real.h"
+#include "core/dictionary/Dictionary.h"
 
 namespace sphcast {
 namespace {
@@ -43,8 +42,8 @@ const Dimensions acceleration{{0, 1, -2, 0, 0, 0, 0}};
 // Values of every supported type
 
 TEST(Dictionary, ReadsNumbersInEveryWrittenForm) {
-  const Dictionary dict = parse(
-      "a 1; b -2; c +3; d 2.5; e -1.5e-3; f 1E3; g .5; h -.25; i 1.; j 1e-400;");
+  const Dictionary dict =
+      parse("a 1; b -2; c +3; d 2.5; e -1.5e-3; f 1E3; g .5; h -.25; i 1.; j 1e-400;");
   EXPECT_EQ(dict.get<double>("a"), 1.0);
   EXPECT_EQ(dict.get<double>("b"), -2.0);
   EXPECT_EQ(dict.get<double>("c"), 3.0);
@@ -69,8 +68,7 @@ TEST(Dictionary, ReadsIntegersOfEveryWidthWhenIntegralAndInRange) {
 }
 
 TEST(Dictionary, ReadsBooleansInAllOpenFoamSpellings) {
-  const Dictionary dict =
-      parse("a yes; b no; c on; d off; e true; f false; g y; h n;");
+  const Dictionary dict = parse("a yes; b no; c on; d off; e true; f false; g y; h n;");
   for (const char* key : {"a", "c", "e", "g"}) EXPECT_TRUE(dict.get<bool>(key)) << key;
   for (const char* key : {"b", "d", "f", "h"}) EXPECT_FALSE(dict.get<bool>(key)) << key;
 }
@@ -94,9 +92,9 @@ TEST(Dictionary, WordRightBeforeAnUnbalancedParenthesisIsAWordAndAList) {
 }
 
 TEST(Dictionary, ReadsQuotedStringsWithEscapes) {
-  const Dictionary dict = parse(
-      R"(a "two words"; b "say \"hi\""; c "back\\slash"; d "tab\there"; e "regex \d+"; )"
-      "f \"line\\\ncontinued\"; g \"\"; \"quoted key\" 1;");
+  const Dictionary dict =
+      parse(R"(a "two words"; b "say \"hi\""; c "back\\slash"; d "tab\there"; e "regex \d+"; )"
+            "f \"line\\\ncontinued\"; g \"\"; \"quoted key\" 1;");
   EXPECT_EQ(dict.get<std::string>("a"), "two words");
   EXPECT_EQ(dict.get<std::string>("b"), "say \"hi\"");
   EXPECT_EQ(dict.get<std::string>("c"), "back\\slash");
@@ -134,8 +132,7 @@ TEST(Dictionary, ReadsTablesAsTuples) {
       "velocity ((0 (0 0 1)) (1 (0 0 2)));\n"
       "mixed ((1 copper yes) (2 \"cast iron\" no));");
   using Row = std::tuple<double, double>;
-  EXPECT_EQ((dict.get<std::vector<Row>>("density")),
-            (std::vector<Row>{{300, 2700}, {900, 2400}}));
+  EXPECT_EQ((dict.get<std::vector<Row>>("density")), (std::vector<Row>{{300, 2700}, {900, 2400}}));
   using VectorRow = std::tuple<double, Vector>;
   EXPECT_EQ((dict.get<std::vector<VectorRow>>("velocity")),
             (std::vector<VectorRow>{{0, Vector(0, 0, 1)}, {1, Vector(0, 0, 2)}}));
@@ -369,18 +366,21 @@ TEST(Dictionary, IncludeIfPresentSkipsAMissingFile) {
 
 TEST(Dictionary, ErrorInsideAnIncludedFilePointsIntoIt) {
   EXPECT_EQ(errorOf([] { Dictionary::parse("#include \"brokenInclude\"", dataDir + "/main"); }),
-            dataDir + "/brokenInclude:2:7: missing ')' before ';' in the value of 'y' (the list "
-                      "opened at line 2, column 3)");
+            dataDir +
+                "/brokenInclude:2:7: missing ')' before ';' in the value of 'y' (the list "
+                "opened at line 2, column 3)");
 }
 
 TEST(Dictionary, MissingIncludeNamesTheIncludingFileAndTheMissingPath) {
-  EXPECT_EQ(errorOf([] { Dictionary::parse("a 1;\n  #include \"missingFile\"\n", dataDir + "/main"); }),
-            dataDir + "/main:2:3: cannot open #include file '" + dataDir + "/missingFile'");
+  EXPECT_EQ(
+      errorOf([] { Dictionary::parse("a 1;\n  #include \"missingFile\"\n", dataDir + "/main"); }),
+      dataDir + "/main:2:3: cannot open #include file '" + dataDir + "/missingFile'");
 }
 
 TEST(Dictionary, IncludeCycleIsAnError) {
-  EXPECT_EQ(errorOf([] { Dictionary::read(dataDir + "/cycleA"); }),
-            dataDir + "/cycleB:2:1: #include cycle: '" + dataDir + "/cycleA' is already being read");
+  EXPECT_EQ(
+      errorOf([] { Dictionary::read(dataDir + "/cycleA"); }),
+      dataDir + "/cycleB:2:1: #include cycle: '" + dataDir + "/cycleA' is already being read");
 }
 
 TEST(Dictionary, IncludeDeeperThan32FilesIsAnError) {
@@ -432,21 +432,26 @@ TEST(Dictionary, CheckKeysAcceptsValidKeys) {
 
 TEST(DictionaryError, MisspelledKeySuggestsTheNearestValidKey) {
   const Dictionary dict = parse("startTime 0;\nendTme 1;\n");
-  EXPECT_EQ(errorOf([&] { dict.checkKeys({"startTime", "endTime", "deltaT"}); }),
+  EXPECT_EQ(errorOf([&] {
+              dict.checkKeys({"startTime", "endTime", "deltaT"});
+            }),
             "controlDict:2:1: unknown key 'endTme' in controlDict; did you mean 'endTime'? "
             "valid keys are: (startTime endTime deltaT)");
 }
 
 TEST(DictionaryError, UnknownKeyWithNothingNearListsTheValidKeys) {
   const Dictionary dict = parse("functions { banana 1; }");
-  EXPECT_EQ(errorOf([&] { dict.subDict("functions").checkKeys({"probes", "forces"}); }),
+  EXPECT_EQ(errorOf([&] {
+              dict.subDict("functions").checkKeys({"probes", "forces"});
+            }),
             "controlDict:1:13: unknown key 'banana' in controlDict/functions; valid keys are: "
             "(probes forces)");
 }
 
 TEST(DictionaryError, MissingSemicolonBeforeClosingBraceOrEndOfFile) {
   EXPECT_EQ(parseError("a { b 1 }"), "controlDict:1:8: missing ';' after the value of 'b'");
-  EXPECT_EQ(parseError("endTime 5\n"), "controlDict:1:10: missing ';' after the value of 'endTime'");
+  EXPECT_EQ(parseError("endTime 5\n"),
+            "controlDict:1:10: missing ';' after the value of 'endTime'");
   EXPECT_EQ(parseError("endTime"), "controlDict:1:8: missing ';' after the value of 'endTime'");
 }
 
@@ -468,12 +473,14 @@ TEST(DictionaryError, UnbalancedBracesAndParentheses) {
             "at line 1, column 8)");
   EXPECT_EQ(parseError("points (1 2"),
             "controlDict:1:8: unbalanced '(' in the value of 'points': missing ')'");
-  EXPECT_EQ(parseError("points 1 2);"), "controlDict:1:11: unbalanced ')' in the value of 'points'");
+  EXPECT_EQ(parseError("points 1 2);"),
+            "controlDict:1:11: unbalanced ')' in the value of 'points'");
   EXPECT_EQ(parseError("a 1;\n)"), "controlDict:2:1: unbalanced ')': no '(' to close");
   EXPECT_EQ(parseError("a { b (1 2 }"),
             "controlDict:1:12: missing ')' before '}' in the value of 'b' (the list opened at "
             "line 1, column 7)");
-  EXPECT_EQ(parseError("nu [0 2 -1"), "controlDict:1:4: unbalanced '[' in the value of 'nu': missing ']'");
+  EXPECT_EQ(parseError("nu [0 2 -1"),
+            "controlDict:1:4: unbalanced '[' in the value of 'nu': missing ']'");
   EXPECT_EQ(parseError("]"), "controlDict:1:1: unbalanced ']': no '[' to close");
   EXPECT_EQ(parseError("(a 1;)"), "controlDict:1:1: expected a key, found '('");
   EXPECT_EQ(parseError("p ({ a 1; });"),
@@ -526,8 +533,9 @@ TEST(DictionaryError, WrongTypeNamesTheKeyAndWhatWasFound) {
 
 TEST(DictionaryError, IntegerOutOfRange) {
   const Dictionary dict = parse("nx 3000000000; n -1; huge 1e300;");
-  EXPECT_EQ(errorOf([&] { dict.get<int>("nx"); }),
-            "controlDict:1:4: number 3000000000 for 'nx' is out of range [-2147483648, 2147483647]");
+  EXPECT_EQ(
+      errorOf([&] { dict.get<int>("nx"); }),
+      "controlDict:1:4: number 3000000000 for 'nx' is out of range [-2147483648, 2147483647]");
   EXPECT_EQ(errorOf([&] { dict.get<std::size_t>("n"); }),
             "controlDict:1:18: number -1 for 'n' is out of range [0, 9223372036854775807]");
   EXPECT_EQ(errorOf([&] { dict.get<long long>("huge"); }),
@@ -545,11 +553,13 @@ TEST(DictionaryError, MissingKeyNamesTheDictionary) {
             "controlDict:2:1: missing key 'x' in controlDict/functions");
   EXPECT_EQ(errorOf([&] { dict.subDict("solver"); }),
             "controlDict:1:1: missing sub-dictionary 'solver' in controlDict");
-  EXPECT_EQ(errorOf([&] { dict.location("x"); }), "controlDict:1:1: missing key 'x' in controlDict");
+  EXPECT_EQ(errorOf([&] { dict.location("x"); }),
+            "controlDict:1:1: missing key 'x' in controlDict");
 }
 
 TEST(DictionaryError, CountMismatchInCountedList) {
-  EXPECT_EQ(parseError("p 3(1 2);"), "controlDict:1:3: list for 'p' has 2 items but its count says 3");
+  EXPECT_EQ(parseError("p 3(1 2);"),
+            "controlDict:1:3: list for 'p' has 2 items but its count says 3");
   const Dictionary spaced = parse("p 3 (1 2);");
   EXPECT_EQ(errorOf([&] { spaced.get<std::vector<double>>("p"); }),
             "controlDict:1:3: list for 'p' has 2 items but its count says 3");
@@ -558,7 +568,8 @@ TEST(DictionaryError, CountMismatchInCountedList) {
 TEST(DictionaryError, UndefinedMacro) {
   EXPECT_EQ(parseError("a $b;"), "controlDict:1:3: undefined macro '$b' in the value of 'a'");
   EXPECT_EQ(parseError("a { x 1; }\n$b"), "controlDict:2:1: undefined macro '$b'");
-  EXPECT_EQ(parseError("a { x 1; } b $a.y;"), "controlDict:1:14: undefined macro '$a.y' in the value of 'b'");
+  EXPECT_EQ(parseError("a { x 1; } b $a.y;"),
+            "controlDict:1:14: undefined macro '$a.y' in the value of 'b'");
   EXPECT_EQ(parseError("a 1; b { c $...a; }"),
             "controlDict:1:12: undefined macro '$...a' in the value of 'c'");
   EXPECT_EQ(parseError("a 1;\n$a"),
@@ -600,7 +611,8 @@ TEST(DictionaryError, UnsupportedDirectives) {
 TEST(DictionaryRobustness, NulAndNonAsciiBytesOutsideStringsAreErrors) {
   EXPECT_EQ(parseError(std::string("a \0;", 4)),
             "controlDict:1:3: invalid byte 0x00 outside a string or comment");
-  EXPECT_EQ(parseError("a \xC3\xA9;"), "controlDict:1:3: invalid byte 0xC3 outside a string or comment");
+  EXPECT_EQ(parseError("a \xC3\xA9;"),
+            "controlDict:1:3: invalid byte 0xC3 outside a string or comment");
   EXPECT_EQ(parseError("a\x01"), "controlDict:1:2: invalid byte 0x01 outside a string or comment");
 }
 
