@@ -448,6 +448,18 @@ TEST(DictionaryError, UnknownKeyWithNothingNearListsTheValidKeys) {
             "(probes forces)");
 }
 
+TEST(DictionaryError, UnknownChoiceListsTheValidOnes) {
+  const Dictionary dict = parse("stopAt  foo;\nwriteControl (a b);");
+  const std::vector<std::string> stopAt{"endTime", "writeNow", "noWriteNow"};
+  EXPECT_EQ(errorOf([&] { dict.getChoice("stopAt", stopAt); }),
+            "controlDict:1:9: unknown stopAt 'foo'; valid stopAt are: (endTime writeNow noWriteNow)");
+  EXPECT_EQ(errorOf([&] { dict.getChoiceOrDefault("stopAt", stopAt, "endTime"); }),
+            "controlDict:1:9: unknown stopAt 'foo'; valid stopAt are: (endTime writeNow noWriteNow)");
+  EXPECT_EQ(errorOf([&] { dict.getChoice("writeControl", {"timeStep", "runTime"}); }),
+            "controlDict:2:14: expected one of (timeStep runTime) for 'writeControl', found a list "
+            "of 2 items");
+}
+
 TEST(DictionaryError, MissingSemicolonBeforeClosingBraceOrEndOfFile) {
   EXPECT_EQ(parseError("a { b 1 }"), "controlDict:1:8: missing ';' after the value of 'b'");
   EXPECT_EQ(parseError("endTime 5\n"),
@@ -603,6 +615,8 @@ TEST(DictionaryError, UnsupportedDirectives) {
   EXPECT_EQ(parseError("#include (a)"),
             "controlDict:1:10: expected a file name after #include, found '('");
   EXPECT_EQ(parseError("# x"), "controlDict:1:1: expected a directive name after '#'");
+  EXPECT_EQ(parseError("a 3{0};"),
+            "controlDict:1:3: uniform lists N{value} are not supported (in the value of 'a')");
 }
 
 // ---------------------------------------------------------------------------------------------
