@@ -224,9 +224,9 @@ bool Parser::parseItem(Lexer& lexer, const Token& token, std::vector<ValueItem>&
   switch (token.kind) {
     case Token::Kind::Number:
       if (token.isInteger && lexer.peek().is('{') && !lexer.peek().afterSpace) {
-        throw DictionaryError(locationOf(token),
-                              "uniform lists N{value} are not supported (in the value of " +
-                                  inQuotes(key) + ")");
+        throw DictionaryError(
+            locationOf(token),
+            "uniform lists N{value} are not supported (in the value of " + inQuotes(key) + ")");
       }
       if (isListCount(token, lexer.peek())) {
         const Token opening = lexer.next();

@@ -451,11 +451,15 @@ TEST(DictionaryError, UnknownKeyWithNothingNearListsTheValidKeys) {
 TEST(DictionaryError, UnknownChoiceListsTheValidOnes) {
   const Dictionary dict = parse("stopAt  foo;\nwriteControl (a b);");
   const std::vector<std::string> stopAt{"endTime", "writeNow", "noWriteNow"};
-  EXPECT_EQ(errorOf([&] { dict.getChoice("stopAt", stopAt); }),
-            "controlDict:1:9: unknown stopAt 'foo'; valid stopAt are: (endTime writeNow noWriteNow)");
-  EXPECT_EQ(errorOf([&] { dict.getChoiceOrDefault("stopAt", stopAt, "endTime"); }),
-            "controlDict:1:9: unknown stopAt 'foo'; valid stopAt are: (endTime writeNow noWriteNow)");
-  EXPECT_EQ(errorOf([&] { dict.getChoice("writeControl", {"timeStep", "runTime"}); }),
+  EXPECT_EQ(
+      errorOf([&] { dict.getChoice("stopAt", stopAt); }),
+      "controlDict:1:9: unknown stopAt 'foo'; valid stopAt are: (endTime writeNow noWriteNow)");
+  EXPECT_EQ(
+      errorOf([&] { dict.getChoiceOrDefault("stopAt", stopAt, "endTime"); }),
+      "controlDict:1:9: unknown stopAt 'foo'; valid stopAt are: (endTime writeNow noWriteNow)");
+  EXPECT_EQ(errorOf([&] {
+              dict.getChoice("writeControl", {"timeStep", "runTime"});
+            }),
             "controlDict:2:14: expected one of (timeStep runTime) for 'writeControl', found a list "
             "of 2 items");
 }
