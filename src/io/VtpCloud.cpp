@@ -3,14 +3,13 @@
 #include <vtkAOSDataArrayTemplate.h>
 #include <vtkCellArray.h>
 #include <vtkCommand.h>
-#include <vtkDataCompressor.h>
 #include <vtkDataArray.h>
+#include <vtkDataCompressor.h>
 #include <vtkDoubleArray.h>
 #include <vtkExecutive.h>
 #include <vtkFieldData.h>
 #include <vtkIdTypeArray.h>
 #include <vtkNew.h>
-#include <vtkObjectFactory.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
@@ -72,8 +71,8 @@ class VtkMessageCollector : public vtkCommand {
     const std::size_t addressEnd = message.find("): ");
     if (addressEnd != std::string::npos) message.erase(0, addressEnd + 3);
     message.erase(std::min(message.find('\n'), message.size()));
-    while (!message.empty() && (std::isspace(static_cast<unsigned char>(message.back())) ||
-                                message.back() == '.')) {
+    while (!message.empty() &&
+           (std::isspace(static_cast<unsigned char>(message.back())) || message.back() == '.')) {
       message.pop_back();
     }
     return message;
@@ -93,8 +92,7 @@ vtkSmartPointer<Array> arrayOver(const Value* values, std::size_t tupleCount, in
   array->SetName(name.c_str());
   array->SetNumberOfComponents(components);
   if (tupleCount > 0) {
-    array->SetArray(const_cast<Value*>(values), static_cast<vtkIdType>(tupleCount) * components,
-                    1);
+    array->SetArray(const_cast<Value*>(values), static_cast<vtkIdType>(tupleCount) * components, 1);
   }
   return array;
 }
@@ -176,7 +174,8 @@ void writePolyData(vtkPolyData* polyData, const fs::path& file) {
   const int written = writer->Write();
   if (!messages->empty()) throw Error(messages->messages());
   if (written != 1 || !pipelineMessages->empty()) {
-    throw Error(pipelineMessages->empty() ? "VTK could not write it" : pipelineMessages->messages());
+    throw Error(pipelineMessages->empty() ? "VTK could not write it"
+                                          : pipelineMessages->messages());
   }
 }
 
@@ -203,8 +202,11 @@ void checkEndsWithClosingTag(const fs::path& file) {
 // its parser factory (CreateXMLParser), the parser when it is given its compressor.
 class ObservedDataParser : public vtkXMLDataParser {
  public:
-  vtkTypeMacro(ObservedDataParser, vtkXMLDataParser)
-  static ObservedDataParser* New();
+  static ObservedDataParser* New() {
+    auto* object = new ObservedDataParser;
+    object->InitializeObjectBase();
+    return object;
+  }
 
   void setCollector(VtkMessageCollector* collector) {
     collector_ = collector;
@@ -218,12 +220,14 @@ class ObservedDataParser : public vtkXMLDataParser {
  private:
   VtkMessageCollector* collector_ = nullptr;
 };
-vtkStandardNewMacro(ObservedDataParser);
 
 class ObservedPolyDataReader : public vtkXMLPolyDataReader {
  public:
-  vtkTypeMacro(ObservedPolyDataReader, vtkXMLPolyDataReader)
-  static ObservedPolyDataReader* New();
+  static ObservedPolyDataReader* New() {
+    auto* object = new ObservedPolyDataReader;
+    object->InitializeObjectBase();
+    return object;
+  }
 
   void setCollectors(VtkMessageCollector* collector, VtkMessageCollector* pipelineCollector) {
     collector_ = collector;
@@ -242,7 +246,6 @@ class ObservedPolyDataReader : public vtkXMLPolyDataReader {
  private:
   VtkMessageCollector* collector_ = nullptr;
 };
-vtkStandardNewMacro(ObservedPolyDataReader);
 
 vtkSmartPointer<vtkPolyData> readPolyData(const fs::path& file) {
   vtkNew<VtkMessageCollector> messages;
@@ -350,7 +353,8 @@ ParticleCloud cloudFrom(vtkPolyData& polyData, const std::string& cloudName) {
   ParticleCloud cloud(cloudName);
   const auto count = static_cast<std::size_t>(polyData.GetNumberOfPoints());
   cloud.resize(count);
-  if (count > 0) copyReals(*polyData.GetPoints()->GetData(), "Points", flatXyz(cloud.positions()), 3 * count);
+  if (count > 0)
+    copyReals(*polyData.GetPoints()->GetData(), "Points", flatXyz(cloud.positions()), 3 * count);
   vtkPointData& pointData = *polyData.GetPointData();
   for (int i = 0; i < pointData.GetNumberOfArrays(); ++i) {
     readPointArray(*pointData.GetAbstractArray(i), cloud);

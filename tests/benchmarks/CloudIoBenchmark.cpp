@@ -71,8 +71,7 @@ class ScratchFolder {
   fs::path path_;
 };
 
-void reportThroughput(benchmark::State& state, const ParticleCloud& cloud,
-                      const fs::path& file) {
+void reportThroughput(benchmark::State& state, const ParticleCloud& cloud, const fs::path& file) {
   state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(cloud.size()));
   state.SetBytesProcessed(state.iterations() * payloadBytes(cloud));
   state.counters["fileMB"] = static_cast<double>(fs::file_size(file)) / 1e6;

@@ -19,9 +19,8 @@ class AtomicFileTest : public ::testing::Test {
  protected:
   void SetUp() override {
     const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    folder_ = fs::temp_directory_path() /
-              ("sphCastAtomicFileTest_" + std::string(info->name()) + "_" +
-               std::to_string(std::random_device{}()));
+    folder_ = fs::temp_directory_path() / ("sphCastAtomicFileTest_" + std::string(info->name()) +
+                                           "_" + std::to_string(std::random_device{}()));
     fs::create_directories(folder_);
   }
   void TearDown() override { fs::remove_all(folder_); }

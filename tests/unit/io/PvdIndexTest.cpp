@@ -65,8 +65,7 @@ class PvdIndexTest : public ::testing::Test {
 
 TEST_F(PvdIndexTest, WriteThenReadRoundTrips) {
   const std::vector<PvdEntry> entries = {entry(0, "0", "metal"), entry(0, "0", "mold"),
-                                         entry(0.05, "0.05", "metal"),
-                                         entry(0.05, "0.05", "mold")};
+                                         entry(0.05, "0.05", "metal"), entry(0.05, "0.05", "mold")};
   const fs::path pvd = folder_ / "conicalMold.pvd";
   writePvd(pvd, entries);
   EXPECT_EQ(readPvd(pvd), entries);
@@ -101,8 +100,8 @@ TEST_F(PvdIndexTest, EntriesAreSortedByTimeThenPart) {
                  entry(0.1, "0.1", "metal"), entry(0, "0", "mold"), entry(0.02, "0.02", "air")});
   const std::vector<PvdEntry> read = readPvd(pvd);
   const std::vector<PvdEntry> expected = {entry(0, "0", "mold"), entry(0.02, "0.02", "air"),
-                                          entry(0.02, "0.02", "metal"),
-                                          entry(0.1, "0.1", "metal"), entry(0.1, "0.1", "mold")};
+                                          entry(0.02, "0.02", "metal"), entry(0.1, "0.1", "metal"),
+                                          entry(0.1, "0.1", "mold")};
   EXPECT_EQ(read, expected);
 }
 
@@ -126,7 +125,7 @@ TEST_F(PvdIndexTest, PartIndexOfACloudIsTheSameAtEveryTime) {
   for (const std::string& line : lines) {
     const std::string expectedPart = line.find("name=\"air\"") != std::string::npos     ? "0"
                                      : line.find("name=\"metal\"") != std::string::npos ? "1"
-                                                                                         : "2";
+                                                                                        : "2";
     EXPECT_NE(line.find("part=\"" + expectedPart + "\""), std::string::npos) << line;
   }
 }

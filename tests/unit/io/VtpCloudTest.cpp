@@ -22,10 +22,20 @@ namespace fs = std::filesystem;
 // Values that a text format or a careless conversion would not keep bit for bit.
 std::vector<Real> awkwardValues() {
   using Limits = std::numeric_limits<Real>;
-  return {Real(0),           -Real(0),         Limits::denorm_min(), -Limits::denorm_min(),
-          Limits::min() / 3, Limits::min(),    Limits::max(),        Limits::lowest(),
-          Limits::epsilon(), Real(1) / 3,      Real(0.1),            Limits::infinity(),
-          -Limits::infinity(), Limits::quiet_NaN()};
+  return {Real(0),
+          -Real(0),
+          Limits::denorm_min(),
+          -Limits::denorm_min(),
+          Limits::min() / 3,
+          Limits::min(),
+          Limits::max(),
+          Limits::lowest(),
+          Limits::epsilon(),
+          Real(1) / 3,
+          Real(0.1),
+          Limits::infinity(),
+          -Limits::infinity(),
+          Limits::quiet_NaN()};
 }
 
 // A cloud with random fields, the awkward values sprinkled over the first particles.
