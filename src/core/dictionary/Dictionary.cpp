@@ -144,6 +144,16 @@ dictionary::ItemCursor Dictionary::valueCursor(std::string_view key, const Dimen
   return dictionary::ItemCursor(items, std::string(key), entry->valueEnd);
 }
 
+void Dictionary::checkDimensions(std::string_view key, const Dimensions& expected) const {
+  const std::string description = "a dimension set " + expected.str();
+  const Entry* entry = findEntry(key);
+  if (entry && !entry->subDict &&
+      (entry->value.empty() || entry->value[0].kind != dictionary::ValueItem::Kind::Dimensions)) {
+    throw DictionaryError(entry->where, "expected " + description + " for " + inQuotes(key));
+  }
+  valueCursor(key, &expected, description).expectEnd();
+}
+
 std::string Dictionary::getChoice(std::string_view key,
                                   const std::vector<std::string>& choices) const {
   const std::string expected = "one of " + listed(choices);

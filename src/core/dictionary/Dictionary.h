@@ -65,6 +65,10 @@ class Dictionary {
   std::string getChoiceOrDefault(std::string_view key, const std::vector<std::string>& choices,
                                  const std::string& fallback) const;
 
+  // An entry that is a dimension set alone, as `dimensions [0 1 -2 0 0 0 0];` in constant/g,
+  // must equal `expected`: "dimensions [0 1 -1 0 0 0 0] of 'dimensions' do not match ...".
+  void checkDimensions(std::string_view key, const Dimensions& expected) const;
+
   // The first key not in validKeys is an error at that key, suggesting the nearest valid one:
   // "unknown key 'endTme' in controlDict; did you mean 'endTime'? valid keys are: (...)".
   void checkKeys(const std::vector<std::string>& validKeys) const;

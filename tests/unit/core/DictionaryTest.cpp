@@ -672,5 +672,15 @@ TEST(DictionaryRobustness, ExponentialMacroExpansionIsStopped) {
       << message;
 }
 
+TEST(Dictionary, ChecksADimensionsEntryAsConstantGWritesIt) {
+  const Dictionary g = parse("dimensions [0 1 -2 0 0 0 0];\nvalue (0 0 -9.81);\nwrong 3;\n");
+  EXPECT_NO_THROW(g.checkDimensions("dimensions", acceleration));
+  EXPECT_EQ(errorOf([&] { g.checkDimensions("dimensions", kinematicViscosity); }),
+            "controlDict:1:12: dimensions [0 1 -2 0 0 0 0] of 'dimensions' do not match the "
+            "expected [0 2 -1 0 0 0 0]");
+  EXPECT_EQ(errorOf([&] { g.checkDimensions("wrong", acceleration); }),
+            "controlDict:3:1: expected a dimension set [0 1 -2 0 0 0 0] for 'wrong'");
+}
+
 }  // namespace
 }  // namespace sphcast
