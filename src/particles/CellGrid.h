@@ -1,0 +1,137 @@
+#pragma once
+
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "core/Real.h"
+#include "particles/WendlandKernel.h"  // SPHCAST_HOST_DEVICE
+
+namespace sphcast {
+
+// Which axes of the domain are periodic: axis a is periodic over [lower[a], lower[a] + period[a])
+// when period[a] > 0, i.e. x and x + period[a] e_a are the same point. A pair loop takes the
+// displacement x_i - x_j from separation() (the minimum image), never from x_i - x_j directly;
+// with no periodic axis the two are identical. Cheap to copy, no pointers: pass it by value
+// into a pair loop (or a GPU kernel).
+class PeriodicBox {
+ public:
+  // No periodic axis.
+  PeriodicBox() = default;
+
+  // Makes `axis` (0, 1, 2 for x, y, z) periodic over [lower, lower + period); throws Error for a
+  // bad axis or a period that is not finite and > 0.
+  void setPeriodic(int axis, Real lower, Real period);
+
+  bool isPeriodic(int axis) const { return period_[axis] > Real(0); }
+  bool anyPeriodic() const { return isPeriodic(0) || isPeriodic(1) || isPeriodic(2); }
+  Real lower(int axis) const { return lower_[axis]; }
+  Real period(int axis) const { return period_[axis]; }
+
+  // The minimum-image displacement x_i - x_j: on each periodic axis the image of x_j nearest to
+  // x_i. Unique for pairs closer than period / 2, which the grid guarantees within its radius
+  // (it requires period > 2 h). Branch-free: a non-periodic axis has period 0 and 1/period 0.
+  SPHCAST_HOST_DEVICE Vector separation(const Vector& xi, const Vector& xj) const {
+    Vector d = xi - xj;
+    for (int a = 0; a < 3; ++a) d[a] -= period_[a] * std::round(d[a] * inversePeriod_[a]);
+    return d;
+  }
+
+  // x moved into [lower, lower + period) on every periodic axis (for the integrator after a
+  // drift); non-periodic axes are left as they are.
+  Vector wrap(const Vector& x) const;
+
+ private:
+  std::array<Real, 3> lower_{0, 0, 0};
+  std::array<Real, 3> period_{0, 0, 0};
+  std::array<Real, 3> inversePeriod_{0, 0, 0};
+};
+
+// A uniform grid of cubic-ish cells of edge >= the search radius h, with the particles of one
+// cloud binned into it by a counting sort (linear in particles + cells, no comparison sort).
+// Cells are numbered c = cx + nx (cy + ny cz), x fastest ("cell order"). After build():
+//   particles of cell c = particlesByCell()[cellStart()[c] .. cellStart()[c + 1]),
+// in increasing particle index within a cell (the sort is stable).
+//
+// Extent per axis: a periodic axis is cut into n = floor(period / h') cells of edge
+// period / n >= h' (h' = h (1 + 1e-6), a margin against round-off); it needs period > 2 h. A
+// non-periodic axis spans the particles' bounding box (recomputed each build), or the domain
+// given by setDomain(); n = floor(extent / h') + 1 cells of edge h', so an axis of zero extent
+// (z in 2D) has exactly one cell and the neighbour stencil stays 3 x 3. Positions outside the
+// grid (outside a fixed domain, or query points of another cloud) are clamped into the edge
+// cells; that keeps every neighbour within h reachable from the clamped cell, only slower.
+//
+// Buffers are kept between builds: a rebuild allocates only when it needs more than any earlier
+// build did. build() throws Error for non-finite positions (naming the first one and how many)
+// and for a grid of more than maxCellCount cells (default 2^26 = 67,108,864, i.e. 256 MiB of
+// cell offsets), e.g. when one particle has flown far away.
+class CellGrid {
+ public:
+  static constexpr std::size_t defaultMaxCellCount = std::size_t(1) << 26;
+
+  // radius: the neighbour search radius (the kernel's support radius h); > 0 and finite.
+  explicit CellGrid(Real radius, const PeriodicBox& periodic = PeriodicBox(),
+                    std::size_t maxCellCount = defaultMaxCellCount);
+
+  // Fixes the non-periodic extent to [lower, upper] instead of the bounding box of each build.
+  void setDomain(const Vector& lower, const Vector& upper);
+  // Goes back to the bounding box of the particles (the default).
+  void useBoundingBox();
+
+  // Bins the particles; parallel where it pays (OpenMP), the scatter is serial and stable.
+  void build(const std::vector<Vector>& positions);
+
+  // The permutation that orders the particles by cell (stable): entry k is the index of the
+  // particle that comes k-th. Use as cloud.reorder(grid.sortPermutation()), then call
+  // adoptCellOrder() (or build() again) so the grid matches the reordered cloud.
+  const std::vector<std::size_t>& sortPermutation();
+  // After the cloud was reordered with sortPermutation(): particle k is now the k-th in cell
+  // order, so the grid is renumbered (O(N), no re-binning).
+  void adoptCellOrder();
+
+  Real radius() const { return radius_; }
+  const PeriodicBox& periodicBox() const { return periodic_; }
+  std::size_t particleCount() const { return cellOfParticle_.size(); }
+  std::array<std::uint32_t, 3> cellCounts() const { return cellCounts_; }
+  std::size_t cellCount() const { return cellStart_.empty() ? 0 : cellStart_.size() - 1; }
+  Vector origin() const { return origin_; }
+  Vector cellSize() const { return cellSize_; }
+
+  // Cell coordinates (cx, cy, cz) of any point, wrapped on periodic axes and clamped into the
+  // grid on the others. Needs a finite x.
+  std::array<std::uint32_t, 3> cellCoordinates(const Vector& x) const;
+  std::uint32_t cellIndex(const std::array<std::uint32_t, 3>& cell) const {
+    return cell[0] + cellCounts_[0] * (cell[1] + cellCounts_[1] * cell[2]);
+  }
+  // The cell of particle i of the last build.
+  std::uint32_t cellOfParticle(std::size_t i) const { return cellOfParticle_[i]; }
+
+  const std::vector<std::uint32_t>& cellStart() const { return cellStart_; }
+  const std::vector<std::uint32_t>& particlesByCell() const { return particlesByCell_; }
+
+ private:
+  void checkFinite(const std::vector<Vector>& positions) const;
+  void fitAxes(const std::vector<Vector>& positions);
+  void countingSort();
+
+  Real radius_;
+  PeriodicBox periodic_;
+  std::size_t maxCellCount_;
+  bool fixedDomain_ = false;
+  Vector domainLower_ = Vector::Zero();
+  Vector domainUpper_ = Vector::Zero();
+
+  Vector origin_ = Vector::Zero();
+  Vector cellSize_ = Vector::Ones();
+  Vector inverseCellSize_ = Vector::Ones();
+  std::array<std::uint32_t, 3> cellCounts_{1, 1, 1};
+
+  std::vector<std::uint32_t> cellOfParticle_;   // per particle
+  std::vector<std::uint32_t> cellStart_;        // per cell, + 1
+  std::vector<std::uint32_t> particlesByCell_;  // per particle
+  std::vector<std::size_t> permutation_;        // per particle, filled by sortPermutation()
+};
+
+}  // namespace sphcast

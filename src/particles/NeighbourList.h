@@ -1,0 +1,67 @@
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "core/Real.h"
+#include "particles/CellGrid.h"
+
+namespace sphcast {
+
+// For every particle i of a cloud A, the particles j of a cloud B with |x_i - x_j| < radius
+// (strictly: pairs at exactly r = h add nothing to any kernel sum or gradient, since W and dW/dr
+// vanish there), the distance taken as the minimum image on periodic axes (PeriodicBox). A is B
+// for fluid-fluid pairs (i itself left out), or another cloud, e.g. fluid A among wall B.
+//
+// Layout: compressed sparse rows.
+//   offsets()   : A.size() + 1 entries (uint64), offsets()[0] = 0,
+//   neighbours(): pairCount() entries (uint32 indices into B);
+//   the neighbours of i are neighbours()[offsets()[i] .. offsets()[i + 1]).
+// Within one i they come in B's cell order (ascending j once B is reordered by its grid), so the
+// pair loop reads B's fields almost sequentially. Each i owns its own range: a pair loop over i
+// under OpenMP writes only to i (gather), no atomics.
+//
+// Building is gather style too: every thread takes a contiguous block of i, writes their
+// neighbours into its own buffer in one pass, and the blocks are then copied into place after a
+// prefix sum of the counts. The result does not depend on the thread count. All buffers are
+// kept between builds (no allocation once the largest list has been seen).
+class NeighbourList {
+ public:
+  // A == B: neighbours of each particle among the same cloud, binned in `grid` (built on exactly
+  // these positions, or adopted after a reorder), self excluded.
+  void buildWithin(const std::vector<Vector>& positions, const CellGrid& grid);
+
+  // A != B: neighbours of each particle at positionsA among the particles at positionsB, binned
+  // in gridB. Throws Error for a non-finite position in A.
+  void buildBetween(const std::vector<Vector>& positionsA, const std::vector<Vector>& positionsB,
+                    const CellGrid& gridB);
+
+  std::size_t particleCount() const { return offsets_.size() - 1; }
+  std::size_t pairCount() const { return offsets_.back(); }
+
+  const std::vector<std::uint64_t>& offsets() const { return offsets_; }
+  const std::vector<std::uint32_t>& neighbours() const { return neighbours_; }
+
+  // The neighbours of particle i of A.
+  std::span<const std::uint32_t> of(std::size_t i) const {
+    return {neighbours_.data() + offsets_[i], neighbours_.data() + offsets_[i + 1]};
+  }
+
+  // Bytes the list holds now (capacity of offsets and neighbours plus the build buffers).
+  std::size_t memoryBytes() const;
+
+ private:
+  void build(const std::vector<Vector>& positionsA, const std::vector<Vector>& positionsB,
+             const CellGrid& gridB, bool sameCloud);
+  void gatherBlocks();
+
+  std::vector<std::uint64_t> offsets_{0};
+  std::vector<std::uint32_t> neighbours_;
+  std::vector<std::uint32_t> counts_;                    // per particle of A
+  std::vector<std::vector<std::uint32_t>> threadLists_;  // per thread, reused
+  std::vector<std::size_t> threadBegin_;                 // first i of each thread's block
+};
+
+}  // namespace sphcast
