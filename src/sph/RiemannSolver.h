@@ -1,0 +1,64 @@
+#pragma once
+
+#include <algorithm>
+
+#include "core/Real.h"
+
+namespace sphcast {
+
+// The state of one side of a particle pair, projected on the line between them: the interface
+// problem is one-dimensional along the unit vector `towardsRight` (from the left particle i to
+// the right particle j, i.e. -e_ij with e_ij = x_ij / |x_ij|).
+struct InterfaceSide {
+  Real density;
+  Real pressure;
+  Vector velocity;
+};
+
+// What the pair sees at the interface: p_ij and v_ij of the paper's eqs. (1) and (2).
+struct InterfaceState {
+  Real pressure;
+  Vector velocity;
+};
+
+// Standard SPH (the paper's comparison, Monaghan 1992): arithmetic means, no dissipation.
+struct ArithmeticMeanInterface {
+  static constexpr const char* name = "standard";
+  InterfaceState operator()(const InterfaceSide& left, const InterfaceSide& right,
+                            const Vector& /*towardsRight*/, Real /*soundSpeed*/) const {
+    return {Real(0.5) * (left.pressure + right.pressure),
+            Real(0.5) * (left.velocity + right.velocity)};
+  }
+};
+
+// The linearised (acoustic) Riemann solver of Parshikov & Medin (2002) with the low-dissipation
+// limiter of Zhang, Hu & Adams (2017, J. Comput. Phys. 335:605): along the pair line,
+//   U* = U_mean + (P_L - P_R) / (2 rho_mean c)
+//   P* = P_mean + beta rho_mean c (U_L - U_R) / 2,   beta = min(eta max(U_L - U_R, 0) / c, 1)
+// so pressure dissipation acts only where the pair compresses, in proportion to how fast, and
+// the tangential velocity is the plain mean. eta = 3 as in Zhang et al.
+struct AcousticRiemannInterface {
+  static constexpr const char* name = "riemann";
+  static constexpr Real limiterSlope = 3;
+
+  InterfaceState operator()(const InterfaceSide& left, const InterfaceSide& right,
+                            const Vector& towardsRight, Real soundSpeed) const {
+    const Real uLeft = left.velocity.dot(towardsRight);
+    const Real uRight = right.velocity.dot(towardsRight);
+    const Real meanDensity = Real(0.5) * (left.density + right.density);
+    const Real impedance = meanDensity * soundSpeed;
+    const Real compression = uLeft - uRight;  // > 0 when the pair closes in
+    const Real limiter =
+        std::min(limiterSlope * std::max(compression, Real(0)) / soundSpeed, Real(1));
+    const Real pressure = Real(0.5) * (left.pressure + right.pressure) +
+                          Real(0.5) * limiter * impedance * compression;
+    const Real normalVelocity =
+        Real(0.5) * (uLeft + uRight) + Real(0.5) * (left.pressure - right.pressure) / impedance;
+    const Vector meanVelocity = Real(0.5) * (left.velocity + right.velocity);
+    const Vector velocity =
+        meanVelocity + (normalVelocity - Real(0.5) * (uLeft + uRight)) * towardsRight;
+    return {pressure, velocity};
+  }
+};
+
+}  // namespace sphcast

@@ -1,0 +1,79 @@
+#include "sph/RiemannSolver.h"
+
+#include <gtest/gtest.h>
+
+#include "sph/EquationOfState.h"
+
+namespace sphcast {
+namespace {
+
+const Vector towardsRight(1, 0, 0);
+constexpr Real c = 50;
+
+TEST(AcousticRiemannInterface, EqualStatesGiveThatState) {
+  const InterfaceSide side{2400, 1.5e4, Vector(0.3, -0.2, 0.1)};
+  const auto star = AcousticRiemannInterface{}(side, side, towardsRight, c);
+  EXPECT_DOUBLE_EQ(star.pressure, 1.5e4);
+  EXPECT_NEAR((star.velocity - side.velocity).norm(), 0, 1e-15);
+}
+
+TEST(AcousticRiemannInterface, StrongCompressionGivesTheAcousticImpedanceJump) {
+  // U_L - U_R = 20 m/s >= c/3: limiter 1, so P* = P_mean + rho c (U_L - U_R) / 2 exactly.
+  const InterfaceSide left{2400, 0, Vector(10, 0, 0)};
+  const InterfaceSide right{2400, 0, Vector(-10, 0, 0)};
+  const auto star = AcousticRiemannInterface{}(left, right, towardsRight, c);
+  EXPECT_DOUBLE_EQ(star.pressure, 0.5 * 2400 * c * 20);
+  EXPECT_NEAR(star.velocity.norm(), 0, 1e-15);
+}
+
+TEST(AcousticRiemannInterface, WeakCompressionIsDampedByTheLimiter) {
+  // U_L - U_R = 0.02 m/s: limiter 3 * 0.02 / 50 = 1.2e-3.
+  const InterfaceSide left{2400, 100, Vector(0.01, 0, 0)};
+  const InterfaceSide right{2400, 100, Vector(-0.01, 0, 0)};
+  const auto star = AcousticRiemannInterface{}(left, right, towardsRight, c);
+  EXPECT_DOUBLE_EQ(star.pressure, 100 + 0.5 * 1.2e-3 * 2400 * c * 0.02);
+}
+
+TEST(AcousticRiemannInterface, ExpansionAddsNoPressureDissipation) {
+  const InterfaceSide left{2400, 100, Vector(-1, 0, 0)};
+  const InterfaceSide right{2400, 300, Vector(1, 0, 0)};
+  const auto star = AcousticRiemannInterface{}(left, right, towardsRight, c);
+  EXPECT_DOUBLE_EQ(star.pressure, 200);
+  // The pressure difference pushes the interface towards the low-pressure side.
+  EXPECT_DOUBLE_EQ(star.velocity.x(), (100.0 - 300.0) / (2 * 2400 * c));
+}
+
+TEST(AcousticRiemannInterface, TangentialVelocityIsTheMean) {
+  const InterfaceSide left{2400, 0, Vector(0, 2, 0)};
+  const InterfaceSide right{2400, 0, Vector(0, -1, 3)};
+  const auto star = AcousticRiemannInterface{}(left, right, towardsRight, c);
+  EXPECT_DOUBLE_EQ(star.velocity.y(), 0.5);
+  EXPECT_DOUBLE_EQ(star.velocity.z(), 1.5);
+  EXPECT_DOUBLE_EQ(star.pressure, 0);
+}
+
+TEST(AcousticRiemannInterface, SwappingTheSidesGivesTheSameInterface) {
+  const InterfaceSide a{2390, 120, Vector(0.4, 0.1, 0)};
+  const InterfaceSide b{2410, -80, Vector(-0.3, 0.2, 0.5)};
+  const auto ab = AcousticRiemannInterface{}(a, b, towardsRight, c);
+  const auto ba = AcousticRiemannInterface{}(b, a, -towardsRight, c);
+  EXPECT_DOUBLE_EQ(ab.pressure, ba.pressure);
+  EXPECT_NEAR((ab.velocity - ba.velocity).norm(), 0, 1e-15);
+}
+
+TEST(ArithmeticMeanInterface, IsStandardSph) {
+  const InterfaceSide a{2390, 120, Vector(0.4, 0.1, 0)};
+  const InterfaceSide b{2410, -80, Vector(-0.3, 0.2, 0.5)};
+  const auto star = ArithmeticMeanInterface{}(a, b, towardsRight, c);
+  EXPECT_DOUBLE_EQ(star.pressure, 20);
+  EXPECT_NEAR((star.velocity - Vector(0.05, 0.15, 0.25)).norm(), 0, 1e-15);
+}
+
+TEST(LinearEquationOfState, IsPaperEquationThreeAndItsInverse) {
+  const LinearEquationOfState eos{50};
+  EXPECT_DOUBLE_EQ(eos.pressure(2410, 2400), 2500 * 10);
+  EXPECT_DOUBLE_EQ(eos.density(eos.pressure(2391.5, 2400), 2400), 2391.5);
+}
+
+}  // namespace
+}  // namespace sphcast
