@@ -112,8 +112,7 @@ class CellGrid {
   const std::vector<std::uint32_t>& particlesByCell() const { return particlesByCell_; }
 
  private:
-  void checkFinite(const std::vector<Vector>& positions) const;
-  void fitAxes(const std::vector<Vector>& positions);
+  void fitAxes(const Vector& boxLower, const Vector& boxUpper);
   void countingSort();
 
   Real radius_;

@@ -1,0 +1,311 @@
+// Cell grid and neighbour lists against a brute-force O(N^2) search, in 2D and 3D, with and
+// without periodic axes, within one cloud and between two.
+#include "particles/NeighbourList.h"
+
+#include <gtest/gtest.h>
+#include <omp.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <random>
+#include <vector>
+
+#include "core/Error.h"
+#include "particles/CellGrid.h"
+#include "particles/ParticleCloud.h"
+
+namespace sphcast {
+namespace {
+
+using Pairs = std::vector<std::vector<std::uint32_t>>;
+
+// Uniform random points in [0, size)^3 (z = 0 when flat), plus a cluster of `clustered` points
+// within 0.1 radius of one spot, so that some cells are crowded and many empty.
+std::vector<Vector> randomPoints(std::size_t count, const Vector& size, std::uint32_t seed,
+                                 std::size_t clustered = 0, double radius = 1) {
+  std::mt19937 random(seed);
+  std::uniform_real_distribution<double> unit(0, 1);
+  std::vector<Vector> points(count);
+  for (auto& x : points) x = Vector(unit(random), unit(random), unit(random)).cwiseProduct(size);
+  for (std::size_t k = 0; k < std::min(clustered, count); ++k) {
+    points[k] = 0.3 * size + 0.1 * radius * Vector(unit(random), unit(random), unit(random));
+    if (size[2] == 0) points[k][2] = 0;
+  }
+  return points;
+}
+
+Pairs bruteForce(const std::vector<Vector>& a, const std::vector<Vector>& b, double radius,
+                 const PeriodicBox& box, bool sameCloud) {
+  Pairs pairs(a.size());
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    for (std::size_t j = 0; j < b.size(); ++j) {
+      if (sameCloud && i == j) continue;
+      if (box.separation(a[i], b[j]).squaredNorm() < radius * radius) {
+        pairs[i].push_back(std::uint32_t(j));
+      }
+    }
+  }
+  return pairs;
+}
+
+Pairs sorted(const NeighbourList& list) {
+  Pairs pairs(list.particleCount());
+  for (std::size_t i = 0; i < pairs.size(); ++i) {
+    const auto neighbours = list.of(i);
+    pairs[i].assign(neighbours.begin(), neighbours.end());
+    std::sort(pairs[i].begin(), pairs[i].end());
+  }
+  return pairs;
+}
+
+void expectWithinMatchesBruteForce(const std::vector<Vector>& x, double radius,
+                                   const PeriodicBox& box = PeriodicBox()) {
+  CellGrid grid(radius, box);
+  grid.build(x);
+  NeighbourList list;
+  list.buildWithin(x, grid);
+  EXPECT_EQ(sorted(list), bruteForce(x, x, radius, box, true));
+  EXPECT_EQ(list.offsets().size(), x.size() + 1);
+}
+
+void expectBetweenMatchesBruteForce(const std::vector<Vector>& a, const std::vector<Vector>& b,
+                                    double radius, const PeriodicBox& box = PeriodicBox()) {
+  CellGrid grid(radius, box);
+  grid.build(b);
+  NeighbourList list;
+  list.buildBetween(a, b, grid);
+  EXPECT_EQ(sorted(list), bruteForce(a, b, radius, box, false));
+}
+
+TEST(NeighbourList, WithinOneCloudMatchesBruteForceIn3D) {
+  expectWithinMatchesBruteForce(randomPoints(1500, Vector(5, 4, 3), 1, 200), 0.7);
+}
+
+TEST(NeighbourList, WithinOneCloudMatchesBruteForceIn2D) {
+  const auto x = randomPoints(2000, Vector(6, 5, 0), 2, 300);
+  CellGrid grid(0.5);
+  grid.build(x);
+  EXPECT_EQ(grid.cellCounts()[2], 1u) << "a flat cloud needs one layer of cells";
+  expectWithinMatchesBruteForce(x, 0.5);
+}
+
+TEST(NeighbourList, FindsPairsAcrossPeriodicBoundariesIn3D) {
+  PeriodicBox box;
+  box.setPeriodic(0, 0, 5);
+  box.setPeriodic(2, 0, 3);
+  expectWithinMatchesBruteForce(randomPoints(1500, Vector(5, 4, 3), 3, 100), 0.7, box);
+  // every axis periodic, and periods of only 2 and 3 cells
+  PeriodicBox tight;
+  tight.setPeriodic(0, 0, 1.5);
+  tight.setPeriodic(1, 0, 2.2);
+  tight.setPeriodic(2, 0, 3.0);
+  expectWithinMatchesBruteForce(randomPoints(800, Vector(1.5, 2.2, 3.0), 4), 0.7, tight);
+}
+
+TEST(NeighbourList, FindsPairsAcrossPeriodicBoundariesIn2D) {
+  PeriodicBox box;
+  box.setPeriodic(0, -1, 4);  // a channel periodic in x
+  auto x = randomPoints(1200, Vector(4, 2, 0), 5, 50);
+  for (auto& p : x) p[0] -= 1;
+  expectWithinMatchesBruteForce(x, 0.3, box);
+}
+
+TEST(NeighbourList, HandlesPositionsOutsideThePeriodicRange) {
+  PeriodicBox box;
+  box.setPeriodic(1, 0, 3);
+  auto x = randomPoints(600, Vector(3, 3, 3), 6);
+  for (std::size_t i = 0; i < x.size(); i += 3) x[i][1] += (i % 2 ? 3.0 : -6.0);  // unwrapped
+  expectWithinMatchesBruteForce(x, 0.6, box);
+}
+
+TEST(NeighbourList, BetweenTwoCloudsMatchesBruteForce) {
+  const auto fluid = randomPoints(900, Vector(4, 4, 4), 7, 100);
+  auto wall = randomPoints(700, Vector(6, 6, 6), 8, 50);
+  for (auto& p : wall) p -= Vector(1, 1, 1);  // extends beyond the fluid on every side
+  expectBetweenMatchesBruteForce(fluid, wall, 0.6);
+  // query points far outside the wall's grid are clamped into it and find nothing wrong
+  auto far = fluid;
+  far[0] = Vector(100, -50, 3);
+  expectBetweenMatchesBruteForce(far, wall, 0.6);
+  PeriodicBox box;
+  box.setPeriodic(1, -1, 6);
+  expectBetweenMatchesBruteForce(fluid, wall, 0.6, box);
+  const auto flatFluid = randomPoints(500, Vector(3, 3, 0), 9);
+  const auto flatWall = randomPoints(400, Vector(4, 4, 0), 10);
+  expectBetweenMatchesBruteForce(flatFluid, flatWall, 0.4);
+}
+
+TEST(NeighbourList, HandlesASingleParticleAndNone) {
+  expectWithinMatchesBruteForce({Vector(1, 2, 3)}, 0.5);
+  expectWithinMatchesBruteForce({}, 0.5);
+  expectBetweenMatchesBruteForce({}, {Vector(1, 2, 3)}, 0.5);
+  expectBetweenMatchesBruteForce({Vector(1, 2, 3)}, {}, 0.5);
+  CellGrid grid(0.5);
+  grid.build({});
+  NeighbourList list;
+  list.buildWithin({}, grid);
+  EXPECT_EQ(list.particleCount(), 0u);
+  EXPECT_EQ(list.pairCount(), 0u);
+}
+
+TEST(NeighbourList, KeepsCoincidentParticlesAsNeighbours) {
+  expectWithinMatchesBruteForce({Vector(1, 1, 0), Vector(1, 1, 0), Vector(1.2, 1, 0)}, 0.5);
+}
+
+TEST(NeighbourList, IsIdenticalForOneAndTwoThreads) {
+  PeriodicBox box;
+  box.setPeriodic(0, 0, 6);
+  const auto x = randomPoints(20000, Vector(6, 5, 4), 11, 2000);
+  CellGrid grid(0.4, box);
+  const int threads = omp_get_max_threads();
+  omp_set_num_threads(1);
+  grid.build(x);
+  const auto permutation1 = grid.sortPermutation();
+  NeighbourList one;
+  one.buildWithin(x, grid);
+  omp_set_num_threads(2);
+  grid.build(x);
+  NeighbourList two;
+  two.buildWithin(x, grid);
+  omp_set_num_threads(threads);
+  EXPECT_EQ(grid.sortPermutation(), permutation1);
+  EXPECT_EQ(one.offsets(), two.offsets());
+  EXPECT_EQ(one.neighbours(), two.neighbours());
+}
+
+TEST(CellGrid, SortPermutationIsAPermutationOrderedByCell) {
+  const auto x = randomPoints(5000, Vector(5, 4, 3), 12, 500);
+  CellGrid grid(0.35);
+  grid.build(x);
+  const auto& order = grid.sortPermutation();
+  ASSERT_EQ(order.size(), x.size());
+  std::vector<bool> seen(x.size(), false);
+  for (const std::size_t i : order) {
+    ASSERT_LT(i, x.size());
+    EXPECT_FALSE(seen[i]) << "index " << i << " twice";
+    seen[i] = true;
+  }
+  for (std::size_t k = 1; k < order.size(); ++k) {
+    const auto previous = grid.cellIndex(grid.cellCoordinates(x[order[k - 1]]));
+    const auto current = grid.cellIndex(grid.cellCoordinates(x[order[k]]));
+    ASSERT_LE(previous, current);
+    if (previous == current) {
+      EXPECT_LT(order[k - 1], order[k]) << "stable within a cell";
+    }
+  }
+}
+
+TEST(CellGrid, ReorderedCloudGivesTheSameNeighbourhoods) {
+  ParticleCloud cloud("metal");
+  cloud.resize(3000);
+  auto& id = cloud.addIdField("id");
+  const auto x = randomPoints(3000, Vector(4, 4, 4), 13, 300);
+  for (std::size_t i = 0; i < x.size(); ++i) cloud.positions()[i] = x[i], id[i] = std::int64_t(i);
+  CellGrid grid(0.5);
+  grid.build(cloud.positions());
+  cloud.reorder(grid.sortPermutation());
+  grid.adoptCellOrder();
+  for (std::size_t k = 0; k < cloud.size(); ++k) {
+    EXPECT_EQ(grid.particlesByCell()[k], k);
+    EXPECT_EQ(grid.cellOfParticle(k), grid.cellIndex(grid.cellCoordinates(cloud.positions()[k])));
+  }
+  NeighbourList reordered;
+  reordered.buildWithin(cloud.positions(), grid);
+  const Pairs expected = bruteForce(x, x, 0.5, PeriodicBox(), true);
+  for (std::size_t k = 0; k < cloud.size(); ++k) {
+    std::vector<std::uint32_t> original;
+    for (const std::uint32_t j : reordered.of(k)) original.push_back(std::uint32_t(id[j]));
+    std::sort(original.begin(), original.end());
+    EXPECT_EQ(original, expected[std::size_t(id[k])]);
+    EXPECT_TRUE(std::is_sorted(reordered.of(k).begin(), reordered.of(k).end()))
+        << "a reordered cloud's neighbours come in increasing index";
+  }
+}
+
+TEST(CellGrid, RebuildReusesItsBuffers) {
+  const auto x = randomPoints(4000, Vector(4, 4, 4), 14);
+  auto denser = x;
+  for (auto& p : denser) p *= 0.99;  // every pair of x is a pair here
+  CellGrid grid(0.5);
+  grid.build(denser);
+  NeighbourList list;
+  list.buildWithin(denser, grid);
+  const auto* neighbours = list.neighbours().data();
+  const auto* byCell = grid.particlesByCell().data();
+  const std::size_t bytes = list.memoryBytes();
+  for (int step = 0; step < 2; ++step) {  // later steps need no more room
+    grid.build(x);
+    list.buildWithin(x, grid);
+  }
+  EXPECT_EQ(list.neighbours().data(), neighbours);
+  EXPECT_EQ(grid.particlesByCell().data(), byCell);
+  EXPECT_EQ(list.memoryBytes(), bytes);
+}
+
+TEST(CellGrid, RejectsNonFinitePositionsWithAMessage) {
+  auto x = randomPoints(100, Vector(1, 1, 1), 15);
+  x[42][1] = std::numeric_limits<Real>::quiet_NaN();
+  x[77][0] = std::numeric_limits<Real>::infinity();
+  CellGrid grid(0.2);
+  try {
+    grid.build(x);
+    FAIL() << "no error for a NaN position";
+  } catch (const Error& error) {
+    EXPECT_NE(std::string(error.what()).find("2 particle(s)"), std::string::npos) << error.what();
+    EXPECT_NE(std::string(error.what()).find("particle 42"), std::string::npos) << error.what();
+  }
+  CellGrid good(0.2);
+  good.build(randomPoints(10, Vector(1, 1, 1), 16));
+  NeighbourList list;
+  EXPECT_THROW(list.buildBetween(x, randomPoints(10, Vector(1, 1, 1), 16), good), Error);
+}
+
+TEST(CellGrid, RejectsAbsurdCellCounts) {
+  std::vector<Vector> x = {Vector(0, 0, 0), Vector(1e6, 1e6, 1e6)};  // one particle flew away
+  CellGrid grid(0.01);
+  try {
+    grid.build(x);
+    FAIL() << "no error for 1e24 cells";
+  } catch (const Error& error) {
+    EXPECT_NE(std::string(error.what()).find("maxCellCount"), std::string::npos) << error.what();
+  }
+  CellGrid limited(0.1, PeriodicBox(), 1000);
+  EXPECT_THROW(limited.build({Vector(0, 0, 0), Vector(2, 2, 2)}), Error);  // 21^3 cells
+  EXPECT_NO_THROW(limited.build({Vector(0, 0, 0), Vector(0.5, 0.5, 0.5)}));
+}
+
+TEST(CellGrid, RejectsPeriodsOfTwoRadiiOrLess) {
+  PeriodicBox box;
+  box.setPeriodic(0, 0, 1.0);
+  EXPECT_THROW(CellGrid(0.5, box), Error);
+  EXPECT_NO_THROW(CellGrid(0.49, box));
+  EXPECT_THROW(box.setPeriodic(3, 0, 1), Error);
+  EXPECT_THROW(box.setPeriodic(1, 0, -1), Error);
+  EXPECT_THROW(CellGrid(0.0), Error);
+}
+
+TEST(CellGrid, FixedDomainClampsOutsideParticlesAndStillFindsAllPairs) {
+  const auto x = randomPoints(1000, Vector(4, 4, 4), 17, 100);
+  CellGrid grid(0.5);
+  grid.setDomain(Vector(1, 1, 1), Vector(3, 3, 3));
+  grid.build(x);
+  EXPECT_EQ(grid.cellCount(), 4u * 4u * 4u);  // floor(2 / (0.5 (1 + 1e-6))) + 1 per axis
+  NeighbourList list;
+  list.buildWithin(x, grid);
+  EXPECT_EQ(sorted(list), bruteForce(x, x, 0.5, PeriodicBox(), true));
+}
+
+TEST(PeriodicBox, SeparationIsTheMinimumImage) {
+  PeriodicBox box;
+  box.setPeriodic(0, 0, 10);
+  const Vector d = box.separation(Vector(0.5, 0, 0), Vector(9.5, 3, 0));
+  EXPECT_NEAR(d[0], 1.0, 1e-12);
+  EXPECT_NEAR(d[1], -3.0, 1e-12);
+  EXPECT_NEAR(box.wrap(Vector(-0.5, 7, 1))[0], 9.5, 1e-12);
+  EXPECT_NEAR(box.wrap(Vector(23, 7, 1))[0], 3.0, 1e-12);
+  EXPECT_EQ(PeriodicBox().separation(Vector(1, 2, 3), Vector(3, 2, 1)), Vector(-2, 0, 2));
+}
+
+}  // namespace
+}  // namespace sphcast
