@@ -1,6 +1,7 @@
 #!/bin/bash
-# particleizeMold loads a gmsh .geo through the gmsh library, and a patch the dictionary names
-# but the mesh lacks is an error listing the groups present. (Particle generation: issue #4.)
+# particleizeMold loads a gmsh .geo through the gmsh library; a patch the dictionary names but
+# the mesh lacks is an error listing the groups present, and nothing is written. With valid
+# patches it writes constant/particles/<cloud>.vtp and constant/particles/patches.
 . "$SPHCAST_TEST_TOOLS"
 mkdir -p "$scratch/mold/system" "$scratch/mold/constant/geometry"
 cd "$scratch/mold"
@@ -13,11 +14,11 @@ GEO
 cat > system/particleizeMoldDict <<'DICT'
 FoamFile { version 2.0; format ascii; class dictionary; object particleizeMoldDict; }
 geometry ("box.geo");
-spacing 0.005;
+spacing 0.01;
 patches
 {
-    moldWall { }
-    lowerMold { }
+    moldWall { cloud mold; type fixedTemperature; }
+    lowerMold { cloud mold; type fixedWall; }
 }
 DICT
 if particleizeMold > out.log 2> err.log; then fail "particleizeMold succeeded"; fi
@@ -26,4 +27,13 @@ grep -qF "patch 'lowerMold' is not a physical group of the geometry; the groups 
     grep -qF "patch 'lowerMold' is not a physical group of the geometry; the groups present are ( cavity moldWall )" err.log ||
     fail "wrong message: $(cat err.log)"
 grep -q "particleizeMoldDict:7:" err.log || fail "no file:line in: $(cat err.log)"
-pass "physical groups read with gmsh; a missing one is named with those present"
+[ -e constant/particles ] && fail "constant/particles written after an error"
+pass "physical groups read with gmsh; a missing one is named with those present; nothing written"
+
+sed -i '/lowerMold/d' system/particleizeMoldDict
+particleizeMold > out.log 2> err.log || fail "particleizeMold failed: $(cat err.log)"
+[ -s constant/particles/mold.vtp ] || fail "no constant/particles/mold.vtp"
+grep -q "particles" constant/particles/patches || fail "no patch list: $(ls constant/particles)"
+grep -q "Patch moldWall (shell, fixedTemperature) -> cloud mold: [0-9]* particles; nearest-neighbour distance / dx: min" out.log ||
+    fail "no spacing statistics in: $(cat out.log)"
+pass "valid patches give constant/particles/mold.vtp, the patch list and spacing statistics"

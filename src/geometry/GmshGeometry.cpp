@@ -1,0 +1,232 @@
+#include "geometry/GmshGeometry.h"
+
+#include <gmsh.h>
+
+#include <algorithm>
+#include <map>
+#include <sstream>
+
+#include "core/Error.h"
+
+namespace sphcast {
+
+namespace {
+
+// gmsh 4.8 throws non-standard objects; its logger keeps the message.
+[[noreturn]] void rethrowGmshError(const std::filesystem::path& file) {
+  std::string reason;
+  gmsh::logger::getLastError(reason);
+  throw Error("gmsh cannot read '" + file.string() + "': " +
+              (reason.empty() ? "unknown gmsh error" : reason));
+}
+
+std::vector<PhysicalGroup> listPhysicalGroups() {
+  std::vector<PhysicalGroup> groups;
+  gmsh::vectorpair dimTags;
+  gmsh::model::getPhysicalGroups(dimTags);
+  for (const auto& [dimension, tag] : dimTags) {
+    PhysicalGroup group;
+    group.dimension = dimension;
+    group.tag = tag;
+    gmsh::model::getPhysicalName(dimension, tag, group.name);
+    std::vector<int> entities;
+    gmsh::model::getEntitiesForPhysicalGroup(dimension, tag, entities);
+    group.entityCount = entities.size();
+    // The group's box is the union of its entities' boxes.
+    auto& box = group.boundingBox;
+    box = {1e300, 1e300, 1e300, -1e300, -1e300, -1e300};
+    for (const int entity : entities) {
+      std::array<double, 6> b{};
+      gmsh::model::getBoundingBox(dimension, entity, b[0], b[1], b[2], b[3], b[4], b[5]);
+      for (std::size_t axis = 0; axis < 3; ++axis) {
+        box[axis] = std::min(box[axis], b[axis]);
+        box[axis + 3] = std::max(box[axis + 3], b[axis + 3]);
+      }
+    }
+    groups.push_back(group);
+  }
+  return groups;
+}
+
+std::vector<int> entitiesOf(const PhysicalGroup& group) {
+  std::vector<int> entities;
+  gmsh::model::getEntitiesForPhysicalGroup(group.dimension, group.tag, entities);
+  return entities;
+}
+
+}  // namespace
+
+GmshGeometry::GmshGeometry(const std::filesystem::path& file, double maxTriangleSize)
+    : file_(file) {
+  if (!std::filesystem::is_regular_file(file)) {
+    throw Error("geometry file '" + file.string() + "' does not exist");
+  }
+  const std::string extension = file.extension().string();
+  if (extension != ".geo" && extension != ".msh") {
+    throw Error("geometry file '" + file.string() + "': unknown kind; valid kinds are (.geo .msh)");
+  }
+  gmsh::initialize();
+  try {
+    gmsh::option::setNumber("General.Terminal", 0);
+    gmsh::option::setNumber("General.Verbosity", 1);
+    gmsh::open(file.string());
+    groups_ = listPhysicalGroups();
+    if (maxTriangleSize > 0.0) {
+      if (extension == ".geo") {
+        gmsh::option::setNumber("Mesh.MeshSizeMax", maxTriangleSize);
+        gmsh::model::mesh::generate(2);
+      }
+      std::vector<std::size_t> tags;
+      std::vector<double> coordinates, parametric;
+      gmsh::model::mesh::getNodes(tags, coordinates, parametric, -1, -1, false, false);
+      const std::size_t largestTag = tags.empty() ? 0 : *std::max_element(tags.begin(), tags.end());
+      nodeIndex_.assign(largestTag + 1, -1);
+      nodes_.reserve(tags.size());
+      for (std::size_t n = 0; n < tags.size(); ++n) {
+        nodeIndex_[tags[n]] = static_cast<int>(n);
+        nodes_.emplace_back(coordinates[3 * n], coordinates[3 * n + 1], coordinates[3 * n + 2]);
+      }
+    }
+  } catch (const Error&) {
+    gmsh::finalize();
+    throw;
+  } catch (...) {
+    try {
+      rethrowGmshError(file);
+    } catch (...) {
+      gmsh::finalize();
+      throw;
+    }
+  }
+}
+
+GmshGeometry::~GmshGeometry() { gmsh::finalize(); }
+
+const PhysicalGroup* GmshGeometry::findGroup(const std::string& name) const {
+  const auto found = std::find_if(groups_.begin(), groups_.end(),
+                                  [&](const PhysicalGroup& group) { return group.name == name; });
+  return found == groups_.end() ? nullptr : &*found;
+}
+
+int GmshGeometry::vertexIndex(std::size_t nodeTag) const {
+  if (nodeTag >= nodeIndex_.size() || nodeIndex_[nodeTag] < 0) {
+    throw Error("mesh of '" + file_.string() + "' uses node " + std::to_string(nodeTag) +
+                " that it does not define");
+  }
+  return nodeIndex_[nodeTag];
+}
+
+TriangleMesh GmshGeometry::surfaceTriangles(const std::vector<std::pair<int, int>>& surfaces) const {
+  TriangleMesh mesh;
+  mesh.vertices = nodes_;  // by node index, so surfaces share their common nodes
+  for (const auto& [surface, owner] : surfaces) {
+    std::vector<int> types;
+    std::vector<std::vector<std::size_t>> elementTags, nodeTags;
+    gmsh::model::mesh::getElements(types, elementTags, nodeTags, 2, surface);
+    for (std::size_t t = 0; t < types.size(); ++t) {
+      // Corner nodes come first in gmsh's numbering: 3 of a (curved) triangle, 4 of a quad.
+      const int type = types[t];
+      const std::size_t nodesPerElement = type == 2 ? 3 : type == 9 ? 6 : type == 3 ? 4
+                                        : type == 16 ? 8 : type == 10 ? 9 : 0;
+      if (nodesPerElement == 0) {
+        throw Error("mesh of '" + file_.string() + "': surface " + std::to_string(surface) +
+                    " has elements of gmsh type " + std::to_string(type) +
+                    "; only triangles and quadrangles are understood");
+      }
+      const auto& nodes = nodeTags[t];
+      for (std::size_t e = 0; e + nodesPerElement <= nodes.size(); e += nodesPerElement) {
+        const int a = vertexIndex(nodes[e]), b = vertexIndex(nodes[e + 1]),
+                  c = vertexIndex(nodes[e + 2]);
+        mesh.triangles.push_back({a, b, c});
+        mesh.owners.push_back(owner);
+        if (type == 3 || type == 16 || type == 10) {
+          mesh.triangles.push_back({a, c, vertexIndex(nodes[e + 3])});
+          mesh.owners.push_back(owner);
+        }
+      }
+    }
+  }
+  mesh.removeUnusedVertices();
+  return mesh;
+}
+
+TriangleMesh GmshGeometry::tetrahedraBoundary(const std::vector<int>& volumeTags) const {
+  std::map<std::array<int, 3>, std::pair<int, std::array<int, 3>>> faces;  // sorted -> uses, face
+  for (const int volume : volumeTags) {
+    std::vector<std::size_t> elementTags, nodeTags;
+    gmsh::model::mesh::getElementsByType(4, elementTags, nodeTags, volume);
+    for (std::size_t e = 0; e + 4 <= nodeTags.size(); e += 4) {
+      const std::array<int, 4> v = {vertexIndex(nodeTags[e]), vertexIndex(nodeTags[e + 1]),
+                                    vertexIndex(nodeTags[e + 2]), vertexIndex(nodeTags[e + 3])};
+      const std::array<std::array<int, 3>, 4> tetFaces = {
+          {{v[0], v[2], v[1]}, {v[0], v[1], v[3]}, {v[1], v[2], v[3]}, {v[0], v[3], v[2]}}};
+      for (const auto& face : tetFaces) {
+        auto key = face;
+        std::sort(key.begin(), key.end());
+        auto& entry = faces[key];
+        ++entry.first;
+        entry.second = face;
+      }
+    }
+  }
+  TriangleMesh mesh;
+  mesh.vertices = nodes_;
+  for (const auto& [key, entry] : faces) {
+    if (entry.first != 1) continue;
+    mesh.triangles.push_back(entry.second);
+    mesh.owners.push_back(0);
+  }
+  mesh.removeUnusedVertices();
+  return mesh;
+}
+
+TriangleMesh GmshGeometry::boundaryOfVolumes(const std::vector<int>& volumeTags) const {
+  gmsh::vectorpair volumes, boundary;
+  for (const int tag : volumeTags) volumes.emplace_back(3, tag);
+  std::vector<std::pair<int, int>> surfaces;
+  try {
+    gmsh::model::getBoundary(volumes, boundary, true, false, false);
+  } catch (...) {
+    rethrowGmshError(file_);
+  }
+  for (const auto& [dimension, tag] : boundary) {
+    if (dimension == 2) surfaces.emplace_back(std::abs(tag), 0);
+  }
+  TriangleMesh mesh = surfaceTriangles(surfaces);
+  if (mesh.size() == 0) mesh = tetrahedraBoundary(volumeTags);
+  return mesh;
+}
+
+TriangleMesh GmshGeometry::surfacesOf(const std::vector<OwnedGroup>& surfaceGroups) const {
+  std::vector<std::pair<int, int>> surfaces;
+  for (const auto& [group, owner] : surfaceGroups) {
+    for (const int surface : entitiesOf(*group)) surfaces.emplace_back(surface, owner);
+  }
+  return surfaceTriangles(surfaces);
+}
+
+std::vector<int> GmshGeometry::volumesOf(const PhysicalGroup& volumeGroup) const {
+  return entitiesOf(volumeGroup);
+}
+
+std::vector<int> GmshGeometry::volumesBoundedBy(const PhysicalGroup& surfaceGroup) const {
+  std::vector<int> volumes;
+  for (const int surface : entitiesOf(surfaceGroup)) {
+    std::vector<int> upward, downward;
+    gmsh::model::getAdjacencies(2, surface, upward, downward);
+    if (upward.size() != 1) {
+      std::ostringstream message;
+      message << "cannot tell which side of physical group '" << surfaceGroup.name
+              << "' is the cavity: its surface " << surface << " in '" << file_.string()
+              << "' bounds " << upward.size()
+              << " volumes; the shell goes outside the one volume (the cavity) its surfaces bound";
+      throw Error(message.str());
+    }
+    volumes.push_back(upward.front());
+  }
+  std::sort(volumes.begin(), volumes.end());
+  volumes.erase(std::unique(volumes.begin(), volumes.end()), volumes.end());
+  return volumes;
+}
+
+}  // namespace sphcast

@@ -1,0 +1,57 @@
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "geometry/GmshModel.h"
+#include "geometry/TriangleMesh.h"
+
+namespace sphcast {
+
+// One gmsh file opened for particle generation: a .geo is meshed on the fly (surfaces only,
+// triangles no larger than maxTriangleSize; not at all when maxTriangleSize is 0, for a look at
+// the physical groups alone); a .msh (2.2 or 4.1) is used as it is.
+// gmsh keeps a single global model, so only one GmshGeometry may exist at a time; it
+// finalises gmsh when destroyed. gmsh's errors become an Error naming the file.
+class GmshGeometry {
+ public:
+  GmshGeometry(const std::filesystem::path& file, double maxTriangleSize);
+  ~GmshGeometry();
+  GmshGeometry(const GmshGeometry&) = delete;
+  GmshGeometry& operator=(const GmshGeometry&) = delete;
+
+  const std::filesystem::path& file() const { return file_; }
+  const std::vector<PhysicalGroup>& groups() const { return groups_; }
+  // nullptr when the model has no group of that name.
+  const PhysicalGroup* findGroup(const std::string& name) const;
+
+  // The triangles of surface groups in one mesh (vertices shared where groups meet, so that
+  // their common edges are inner edges); each triangle's owner is its group's.
+  struct OwnedGroup {
+    const PhysicalGroup* group;
+    int owner;
+  };
+  TriangleMesh surfacesOf(const std::vector<OwnedGroup>& surfaceGroups) const;
+  // The volume entities a surface group's surfaces bound: the cavity its walls enclose. Throws
+  // an Error when one of its surfaces bounds no volume, or two (then the side is ambiguous).
+  std::vector<int> volumesBoundedBy(const PhysicalGroup& surfaceGroup) const;
+  // The volume entities of a volume group.
+  std::vector<int> volumesOf(const PhysicalGroup& volumeGroup) const;
+  // The combined boundary of volume entities (faces shared between two of them drop out).
+  TriangleMesh boundaryOfVolumes(const std::vector<int>& volumeTags) const;
+
+ private:
+  // Triangles of the surfaces (tag, owner).
+  TriangleMesh surfaceTriangles(const std::vector<std::pair<int, int>>& surfaces) const;
+  // Fallback for meshes without surface elements: the faces of the tetrahedra used once.
+  TriangleMesh tetrahedraBoundary(const std::vector<int>& volumeTags) const;
+  int vertexIndex(std::size_t nodeTag) const;
+
+  std::filesystem::path file_;
+  std::vector<PhysicalGroup> groups_;
+  std::vector<Eigen::Vector3d> nodes_;  // all mesh nodes
+  std::vector<int> nodeIndex_;          // node tag -> index in nodes_, -1 for unused tags
+};
+
+}  // namespace sphcast

@@ -1,0 +1,290 @@
+#include "geometry/MoldParticleization.h"
+
+#include <algorithm>
+#include <cmath>
+#include <iomanip>
+#include <sstream>
+
+#include "core/Error.h"
+#include "core/Log.h"
+#include "core/dictionary/Dictionary.h"
+#include "geometry/GmshGeometry.h"
+#include "geometry/LatticeSolid.h"
+
+namespace sphcast {
+
+namespace {
+
+constexpr double defaultMaxParticles = 2e7;
+constexpr int layersWithoutSupportRadius = 3;  // complete for any h <= 3 dx
+const Dimensions length{{0, 1, 0, 0, 0, 0, 0}};
+
+struct PatchRequest {
+  MoldPatch patch;
+  SourceLocation where;
+};
+
+// The shells of one geometry file share the file's cavity; volumes are filled one by one.
+struct ShellJob {
+  TriangleMesh wall;
+  TriangleMesh cavityBoundary;
+};
+struct VolumeJob {
+  TriangleMesh boundary;
+  int patch;
+};
+
+std::vector<PatchRequest> readPatches(const Dictionary& patches) {
+  std::vector<PatchRequest> requests;
+  for (const std::string& name : patches.keys()) {
+    const Dictionary& entry = patches.subDict(name);
+    entry.checkKeys({"cloud", "type", "mode"});
+    PatchRequest request;
+    request.where = patches.location(name);
+    request.patch.name = name;
+    request.patch.id = static_cast<int>(requests.size());
+    request.patch.cloud = entry.get<std::string>("cloud");
+    request.patch.type = entry.getChoice("type", {"fixedWall", "rigidBody", "fixedTemperature"});
+    request.patch.mode = entry.getChoiceOrDefault("mode", {"shell", "volume"}, "shell");
+    requests.push_back(std::move(request));
+  }
+  if (requests.empty()) {
+    throw DictionaryError(patches.location(), "no patches in " + patches.name());
+  }
+  return requests;
+}
+
+int readWallLayers(const Dictionary& dict, double spacing) {
+  if (dict.found("wallLayers")) {
+    const int layers = dict.get<int>("wallLayers");
+    if (layers < 1) {
+      throw DictionaryError(dict.location("wallLayers"),
+                            "'wallLayers' must be at least 1 in " + dict.name());
+    }
+    return layers;
+  }
+  if (!dict.found("supportRadius")) {
+    info() << "wallLayers " << layersWithoutSupportRadius
+           << " (default: complete for a kernel support radius up to 3 dx; give supportRadius "
+              "or wallLayers to choose)\n";
+    return layersWithoutSupportRadius;
+  }
+  const double supportRadius = dict.get<double>("supportRadius", length);
+  if (!(supportRadius > 0.0)) {
+    throw DictionaryError(dict.location("supportRadius"),
+                          "'supportRadius' must be positive in " + dict.name());
+  }
+  // 1e-9: h = 3 dx written in decimals must not become 4 layers.
+  const int layers = static_cast<int>(std::ceil(supportRadius / spacing - 1e-9));
+  info() << "wallLayers " << layers << " = ceil(supportRadius / spacing) = ceil(" << supportRadius
+         << " / " << spacing << ")\n";
+  return std::max(layers, 1);
+}
+
+void logGroups(const GmshGeometry& geometry) {
+  for (const auto& group : geometry.groups()) {
+    const auto& box = group.boundingBox;
+    info() << "    physical group " << std::setw(20) << std::left << group.name << std::right
+           << " dimension " << group.dimension << ", " << group.entityCount
+           << " entities, bounds (" << box[0] << ' ' << box[1] << ' ' << box[2] << ") ("
+           << box[3] << ' ' << box[4] << ' ' << box[5] << ")\n";
+  }
+}
+
+std::string groupNames(const std::vector<PhysicalGroup>& groups) {
+  std::ostringstream names;
+  for (const auto& group : groups) names << ' ' << group.name;
+  return names.str();
+}
+
+ParticleCloud makeCloud(const std::string& name, const WallParticles& particles,
+                        const std::vector<MoldPatch>& patches, double spacing) {
+  std::vector<std::size_t> members;
+  for (std::size_t i = 0; i < particles.size(); ++i) {
+    if (patches[static_cast<std::size_t>(particles.owners[i])].cloud == name) members.push_back(i);
+  }
+  ParticleCloud cloud(name);
+  cloud.resize(members.size());
+  auto& volume = cloud.addScalarField("volume");
+  auto& wallDistance = cloud.addScalarField("wallDistance");
+  auto& normal = cloud.addVectorField("normal");
+  auto& patch = cloud.addIdField("patch");
+  auto& id = cloud.addIdField("id");
+  for (std::size_t m = 0; m < members.size(); ++m) {
+    const std::size_t i = members[m];
+    cloud.positions()[m] = particles.positions[i].cast<Real>();
+    volume[m] = static_cast<Real>(particles.volumes[i]);
+    wallDistance[m] = static_cast<Real>(particles.wallDistances[i]);
+    normal[m] = particles.normals[i].cast<Real>();
+    patch[m] = particles.owners[i];
+    id[m] = static_cast<std::int64_t>(m);
+  }
+  cloud.attributes()["spacing"] = spacing;
+  return cloud;
+}
+
+}  // namespace
+
+ParticleizedMold particleizeMold(const CaseFolder& caseFolder) {
+  const Dictionary dict = Dictionary::read(caseFolder.systemFile("particleizeMoldDict"));
+  dict.checkKeys({"geometry", "spacing", "supportRadius", "wallLayers", "maxParticles", "patches"});
+  ParticleizedMold mold;
+  mold.spacing = dict.get<double>("spacing", length);
+  if (!(mold.spacing > 0.0)) {
+    throw DictionaryError(dict.location("spacing"), "'spacing' must be positive in " + dict.name());
+  }
+  const double spacing = mold.spacing;
+  mold.wallLayers = readWallLayers(dict, spacing);
+  const double maxParticles = dict.getOrDefault<double>("maxParticles", defaultMaxParticles);
+  std::vector<PatchRequest> requests = readPatches(dict.subDict("patches"));
+  const auto files = dict.get<std::vector<std::string>>("geometry");
+  for (const std::string& file : files) {
+    const auto path = caseFolder.constant() / "geometry" / file;
+    if (!std::filesystem::is_regular_file(path)) {
+      throw DictionaryError(dict.location("geometry"),
+                            "geometry file '" + path.string() + "' does not exist");
+    }
+  }
+
+  // Meshes of every patch, file by file (gmsh holds one model at a time).
+  std::vector<ShellJob> shells;
+  std::vector<VolumeJob> volumes;
+  std::vector<bool> resolved(requests.size(), false);
+  std::vector<PhysicalGroup> allGroups;
+  for (const std::string& file : files) {
+    const auto path = caseFolder.constant() / "geometry" / file;
+    info() << "Reading " << path.string() << '\n';
+    // Triangles of dx/2 keep the faceting error of a curved wall small: the sag of a chord s on
+    // a radius R is s^2 / (8 R), the normal's error s / (2 R).
+    const GmshGeometry geometry(path, 0.5 * spacing);
+    logGroups(geometry);
+    allGroups.insert(allGroups.end(), geometry.groups().begin(), geometry.groups().end());
+    std::vector<GmshGeometry::OwnedGroup> shellGroups;
+    std::vector<int> cavityVolumes;
+    for (std::size_t p = 0; p < requests.size(); ++p) {
+      const PhysicalGroup* group = geometry.findGroup(requests[p].patch.name);
+      if (group == nullptr || resolved[p]) continue;
+      resolved[p] = true;
+      const MoldPatch& patch = requests[p].patch;
+      const std::string where = "physical group '" + patch.name + "' of '" + path.string() + "'";
+      if (patch.mode == "shell") {
+        if (group->dimension != 2) {
+          throw DictionaryError(requests[p].where,
+                                "patch '" + patch.name + "' has mode shell, but " + where +
+                                    " is not a surface (dimension " +
+                                    std::to_string(group->dimension) + "); use mode volume");
+        }
+        shellGroups.push_back({group, patch.id});
+        try {
+          const auto bounded = geometry.volumesBoundedBy(*group);
+          cavityVolumes.insert(cavityVolumes.end(), bounded.begin(), bounded.end());
+        } catch (const DictionaryError&) {
+          throw;
+        } catch (const Error& error) {
+          throw DictionaryError(requests[p].where, error.what());
+        }
+      } else {
+        if (group->dimension != 3) {
+          throw DictionaryError(requests[p].where,
+                                "patch '" + patch.name + "' has mode volume, but " + where +
+                                    " is not a volume (dimension " +
+                                    std::to_string(group->dimension) + ")");
+        }
+        VolumeJob job{geometry.boundaryOfVolumes(geometry.volumesOf(*group)), patch.id};
+        const std::size_t freeEdges = job.boundary.freeEdgeCount();
+        if (job.boundary.size() == 0 || freeEdges > 0) {
+          throw DictionaryError(requests[p].where,
+                                "patch '" + patch.name + "' has mode volume, but " + where +
+                                    " is not a closed volume: " + std::to_string(freeEdges) +
+                                    " edges of its boundary mesh belong to one triangle only");
+        }
+        volumes.push_back(std::move(job));
+      }
+    }
+    if (!shellGroups.empty()) {
+      std::sort(cavityVolumes.begin(), cavityVolumes.end());
+      cavityVolumes.erase(std::unique(cavityVolumes.begin(), cavityVolumes.end()),
+                          cavityVolumes.end());
+      shells.push_back({geometry.surfacesOf(shellGroups), geometry.boundaryOfVolumes(cavityVolumes)});
+    }
+  }
+  for (std::size_t p = 0; p < requests.size(); ++p) {
+    if (!resolved[p]) {
+      throw DictionaryError(requests[p].where,
+                            "patch '" + requests[p].patch.name +
+                                "' is not a physical group of the geometry; the groups present "
+                                "are (" + groupNames(allGroups) + " )");
+    }
+  }
+
+  // Refuse a spacing that makes too many particles before making them.
+  double estimate = 0.0;
+  for (const auto& shell : shells) {
+    estimate += estimateShellParticleCount(shell.wall, spacing, mold.wallLayers);
+  }
+  for (const auto& volume : volumes) {
+    estimate += volume.boundary.enclosedVolume() / (spacing * spacing * spacing);
+  }
+  if (estimate > maxParticles) {
+    std::ostringstream message;
+    message << "spacing " << spacing << " m would make about " << std::llround(estimate)
+            << " mold particles, more than maxParticles " << maxParticles << " (raise maxParticles in "
+            << dict.name() << " if you mean it); nothing was written";
+    throw DictionaryError(dict.location("spacing"), message.str());
+  }
+
+  const auto patchCount = static_cast<int>(requests.size());
+  WallParticles all;
+  auto appendParticles = [&all](const WallParticles& more) {
+    all.positions.insert(all.positions.end(), more.positions.begin(), more.positions.end());
+    all.normals.insert(all.normals.end(), more.normals.begin(), more.normals.end());
+    all.wallDistances.insert(all.wallDistances.end(), more.wallDistances.begin(),
+                             more.wallDistances.end());
+    all.volumes.insert(all.volumes.end(), more.volumes.begin(), more.volumes.end());
+    all.owners.insert(all.owners.end(), more.owners.begin(), more.owners.end());
+  };
+  for (const auto& shell : shells) {
+    const LatticeSolid cavity(shell.cavityBoundary, spacing);
+    appendParticles(generateShellParticles(shell.wall, cavity, spacing, mold.wallLayers, patchCount));
+  }
+  for (const auto& volume : volumes) {
+    appendParticles(fillVolumeParticles(volume.boundary, spacing, volume.patch));
+  }
+
+  const auto statistics = nearestNeighbourStatistics(all, patchCount, spacing);
+  for (auto& request : requests) {
+    MoldPatch& patch = request.patch;
+    patch.spacing = statistics[static_cast<std::size_t>(patch.id)];
+    patch.particleCount = patch.spacing.count;
+    info() << "Patch " << patch.name << " (" << patch.mode << ", " << patch.type << ") -> cloud "
+           << patch.cloud << ": " << patch.particleCount
+           << " particles; nearest-neighbour distance / dx: min " << std::setprecision(3)
+           << patch.spacing.min / spacing << ", mean " << patch.spacing.mean / spacing << ", max "
+           << patch.spacing.max / spacing << std::setprecision(6) << '\n';
+    mold.patches.push_back(patch);
+  }
+  std::vector<std::string> cloudNames;
+  for (const auto& patch : mold.patches) {
+    if (std::find(cloudNames.begin(), cloudNames.end(), patch.cloud) == cloudNames.end()) {
+      cloudNames.push_back(patch.cloud);
+    }
+  }
+  for (const auto& name : cloudNames) mold.clouds.push_back(makeCloud(name, all, mold.patches, spacing));
+  return mold;
+}
+
+std::string patchesDictionaryText(const ParticleizedMold& mold) {
+  std::ostringstream text;
+  text << "FoamFile\n{\n    version     2.0;\n    format      ascii;\n    class       dictionary;\n"
+       << "    location    \"constant/particles\";\n    object      patches;\n}\n"
+       << "// Written by particleizeMold: spacing " << mold.spacing << " m, " << mold.wallLayers
+       << " wall layers. 'id' is the value of the particles' 'patch' field.\n\n";
+  for (const auto& patch : mold.patches) {
+    text << patch.name << "\n{\n    id          " << patch.id << ";\n    cloud       " << patch.cloud
+         << ";\n    type        " << patch.type << ";\n    mode        " << patch.mode
+         << ";\n    particles   " << patch.particleCount << ";\n}\n\n";
+  }
+  return text.str();
+}
+
+}  // namespace sphcast

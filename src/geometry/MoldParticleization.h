@@ -1,0 +1,56 @@
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "core/CaseFolder.h"
+#include "geometry/WallParticles.h"
+#include "particles/ParticleCloud.h"
+
+namespace sphcast {
+
+// What system/particleizeMoldDict asks for, read and checked in full (dictionary, geometry
+// files, physical groups, particle count) before a particle is made:
+//
+//   geometry      ("cone.geo" "press.msh");  // in constant/geometry: .geo (meshed by gmsh) or .msh
+//   spacing       0.002;        // particle spacing dx, m
+//   supportRadius 0.0045;       // optional: the kernel's support radius h, m
+//   wallLayers    3;            // optional: default ceil(h / dx), or 3 without supportRadius
+//   maxParticles  2e7;          // optional: refuse a spacing that would make more
+//   patches
+//   {
+//       moldWall   { cloud mold; type fixedTemperature; mode shell; }  // a surface group
+//       upperMold  { cloud upperMold; type rigidBody; mode volume; }    // a volume group
+//   }
+//
+// type: fixedWall | rigidBody | fixedTemperature (how the solver treats the particles);
+// mode: shell (default; `wallLayers` layers behind a surface group, on the side away from the
+// volume the surfaces bound, the cavity) | volume (the whole of a closed volume group).
+// wallLayers = ceil(h / dx): the first layer sits dx/2 behind the wall and layer k at
+// (k + 1/2) dx, so the layers reach wallLayers dx >= h behind it, and a fluid particle touching
+// the wall has a complete kernel.
+struct MoldPatch {
+  std::string name;
+  int id = 0;
+  std::string cloud;
+  std::string type;
+  std::string mode;
+  std::size_t particleCount = 0;
+  SpacingStatistics spacing;  // nearest neighbour among all mold particles
+};
+
+struct ParticleizedMold {
+  double spacing = 0.0;
+  int wallLayers = 0;
+  std::vector<MoldPatch> patches;
+  std::vector<ParticleCloud> clouds;  // fields volume, normal, wallDistance, patch, id
+};
+
+// Reads the dictionary and the geometry and makes the particles; every problem is an Error
+// naming the file, line and key. Logs the groups found and what it does.
+ParticleizedMold particleizeMold(const CaseFolder& caseFolder);
+
+// constant/particles/patches: one sub-dictionary per patch (id, cloud, type, mode, particles).
+std::string patchesDictionaryText(const ParticleizedMold& mold);
+
+}  // namespace sphcast

@@ -1,0 +1,244 @@
+#include "geometry/WallParticles.h"
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <numeric>
+#include <unordered_map>
+#include <unordered_set>
+
+namespace sphcast {
+
+namespace {
+
+// Particles are thinned to at least this many spacings apart (see WallParticles.h).
+constexpr double thinningDistance = 0.75;
+
+using CellKey = std::uint64_t;
+
+// Packs three signed cell indices (|index| < 2^20) into one hash key.
+CellKey cellKey(std::int64_t i, std::int64_t j, std::int64_t k) {
+  constexpr std::int64_t bias = std::int64_t{1} << 20;
+  return (static_cast<CellKey>(i + bias) << 42) | (static_cast<CellKey>(j + bias) << 21) |
+         static_cast<CellKey>(k + bias);
+}
+
+// Points hashed by cubic cells, for "is anything within r" and nearest-neighbour queries.
+class PointGrid {
+ public:
+  explicit PointGrid(double cellSize) : cellSize_(cellSize) {}
+
+  void insert(const Eigen::Vector3d& p, int index) { cells_[keyOf(p)].push_back(index); }
+
+  // Calls visit(index) for every point in the 27 cells around p.
+  template <class Visit>
+  void forEachNear(const Eigen::Vector3d& p, Visit visit) const {
+    const std::int64_t i = cell(p.x()), j = cell(p.y()), k = cell(p.z());
+    for (std::int64_t dk = -1; dk <= 1; ++dk) {
+      for (std::int64_t dj = -1; dj <= 1; ++dj) {
+        for (std::int64_t di = -1; di <= 1; ++di) {
+          const auto found = cells_.find(cellKey(i + di, j + dj, k + dk));
+          if (found == cells_.end()) continue;
+          for (const int index : found->second) visit(index);
+        }
+      }
+    }
+  }
+
+ private:
+  std::int64_t cell(double x) const { return static_cast<std::int64_t>(std::floor(x / cellSize_)); }
+  CellKey keyOf(const Eigen::Vector3d& p) const { return cellKey(cell(p.x()), cell(p.y()), cell(p.z())); }
+
+  double cellSize_;
+  std::unordered_map<CellKey, std::vector<int>> cells_;
+};
+
+struct ShellCandidate {
+  Eigen::Vector3d position;
+  Eigen::Vector3d normal;
+  double wallDistance;
+  double offLayer;  // how far the lattice point was moved to reach its layer
+  int owner;
+  int layer;
+};
+
+// Lattice cells of size `cellSize` that a triangle, grown by `reach`, touches: sorted, so the
+// lattice points are visited in a reproducible order.
+std::vector<std::array<std::int64_t, 3>> cellsNearWall(const TriangleMesh& wall, double cellSize,
+                                                       double reach) {
+  std::unordered_set<CellKey> seen;
+  std::vector<std::array<std::int64_t, 3>> cells;
+  for (const auto& t : wall.triangles) {
+    Eigen::Vector3d lower = wall.vertices[static_cast<std::size_t>(t[0])];
+    Eigen::Vector3d upper = lower;
+    for (const int v : t) {
+      lower = lower.cwiseMin(wall.vertices[static_cast<std::size_t>(v)]);
+      upper = upper.cwiseMax(wall.vertices[static_cast<std::size_t>(v)]);
+    }
+    std::array<std::int64_t, 3> first{}, last{};
+    for (int axis = 0; axis < 3; ++axis) {
+      first[static_cast<std::size_t>(axis)] =
+          static_cast<std::int64_t>(std::floor((lower[axis] - reach) / cellSize));
+      last[static_cast<std::size_t>(axis)] =
+          static_cast<std::int64_t>(std::floor((upper[axis] + reach) / cellSize));
+    }
+    for (std::int64_t k = first[2]; k <= last[2]; ++k) {
+      for (std::int64_t j = first[1]; j <= last[1]; ++j) {
+        for (std::int64_t i = first[0]; i <= last[0]; ++i) {
+          if (seen.insert(cellKey(i, j, k)).second) cells.push_back({i, j, k});
+        }
+      }
+    }
+  }
+  std::sort(cells.begin(), cells.end());
+  return cells;
+}
+
+}  // namespace
+
+WallParticles generateShellParticles(const TriangleMesh& wall, const LatticeSolid& cavity,
+                                     double spacing, int layers, int patchCount) {
+  const TriangleDistanceTree tree(wall);
+  const double reach = (layers + 0.5) * spacing;
+  // Cells a whole number of lattice spacings wide, so each lattice point is in exactly one.
+  const double cellSize = spacing * std::ceil(reach / spacing);
+  const auto cells = cellsNearWall(wall, cellSize, reach);
+  const auto latticePerCell = static_cast<std::int64_t>(std::llround(cellSize / spacing));
+
+  std::vector<ShellCandidate> candidates;
+  // Lattice points per patch and band [k dx, (k+1) dx) behind the wall: the band volumes.
+  std::vector<double> bandPoints(static_cast<std::size_t>(patchCount * layers), 0.0);
+  for (const auto& cell : cells) {
+    for (std::int64_t k = cell[2] * latticePerCell; k < (cell[2] + 1) * latticePerCell; ++k) {
+      for (std::int64_t j = cell[1] * latticePerCell; j < (cell[1] + 1) * latticePerCell; ++j) {
+        for (std::int64_t i = cell[0] * latticePerCell; i < (cell[0] + 1) * latticePerCell; ++i) {
+          const Eigen::Vector3d p(latticeCoordinate(i, spacing), latticeCoordinate(j, spacing),
+                                  latticeCoordinate(k, spacing));
+          const ClosestPoint hit = tree.closest(p, reach);
+          if (hit.triangle < 0 || hit.distance < 1e-9 * spacing) continue;
+          if (tree.onFreeBorder(hit) || cavity.contains(p)) continue;
+          const int owner = wall.owners[static_cast<std::size_t>(hit.triangle)];
+          const auto band = static_cast<int>(std::floor(hit.distance / spacing));
+          if (band < layers) bandPoints[static_cast<std::size_t>(owner * layers + band)] += 1.0;
+          const Eigen::Vector3d outOfMaterial = (hit.point - p) / hit.distance;
+          // The one or two layers nearest to this point's distance.
+          const double layerCoordinate = hit.distance / spacing - 0.5;
+          const auto below = static_cast<int>(std::floor(layerCoordinate));
+          const auto above = static_cast<int>(std::ceil(layerCoordinate));
+          for (int layer = std::max(below, 0); layer <= std::min(above, layers - 1); ++layer) {
+            const double layerDistance = (layer + 0.5) * spacing;
+            candidates.push_back({hit.point - outOfMaterial * layerDistance, outOfMaterial,
+                                  layerDistance, std::abs(hit.distance - layerDistance), owner,
+                                  layer});
+          }
+        }
+      }
+    }
+  }
+
+  // Greedy thinning, candidates nearest to their layer first (stable: reproducible).
+  std::vector<std::size_t> order(candidates.size());
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    // Below 1e-9 dx two offsets are the same: keep lattice order among exact layer points.
+    return candidates[a].offLayer < candidates[b].offLayer - 1e-9 * spacing;
+  });
+  const double minimumSquared = thinningDistance * thinningDistance * spacing * spacing;
+  PointGrid accepted(spacing);
+  std::vector<std::size_t> kept;
+  for (const std::size_t c : order) {
+    const Eigen::Vector3d& p = candidates[c].position;
+    bool crowded = false;
+    accepted.forEachNear(p, [&](int other) {
+      crowded = crowded || (candidates[kept[static_cast<std::size_t>(other)]].position - p)
+                                   .squaredNorm() < minimumSquared;
+    });
+    if (crowded) continue;
+    accepted.insert(p, static_cast<int>(kept.size()));
+    kept.push_back(c);
+  }
+
+  std::vector<double> layerCounts(bandPoints.size(), 0.0);
+  for (const std::size_t c : kept) {
+    layerCounts[static_cast<std::size_t>(candidates[c].owner * layers + candidates[c].layer)] += 1.0;
+  }
+  WallParticles shell;
+  const double cellVolume = spacing * spacing * spacing;
+  for (const std::size_t c : kept) {
+    const ShellCandidate& candidate = candidates[c];
+    const auto band = static_cast<std::size_t>(candidate.owner * layers + candidate.layer);
+    shell.positions.push_back(candidate.position);
+    shell.normals.push_back(candidate.normal);
+    shell.wallDistances.push_back(candidate.wallDistance);
+    shell.volumes.push_back(bandPoints[band] > 0.0 ? cellVolume * bandPoints[band] / layerCounts[band]
+                                                    : cellVolume);
+    shell.owners.push_back(candidate.owner);
+  }
+  return shell;
+}
+
+WallParticles fillVolumeParticles(const TriangleMesh& boundary, double spacing, int patch) {
+  const LatticeSolid solid(boundary, spacing);
+  const TriangleDistanceTree tree(boundary);
+  WallParticles volume;
+  volume.positions = solid.interiorPoints();
+  const double cellVolume = spacing * spacing * spacing;
+  for (const Eigen::Vector3d& p : volume.positions) {
+    const ClosestPoint hit = tree.closest(p, std::numeric_limits<double>::max());
+    Eigen::Vector3d outward;
+    if (hit.distance > 1e-9 * spacing) {
+      outward = (hit.point - p) / hit.distance;
+    } else {  // on the surface: the triangle's normal, whichever way it points
+      const auto& t = boundary.triangles[static_cast<std::size_t>(hit.triangle)];
+      const auto& a = boundary.vertices[static_cast<std::size_t>(t[0])];
+      outward = (boundary.vertices[static_cast<std::size_t>(t[1])] - a)
+                    .cross(boundary.vertices[static_cast<std::size_t>(t[2])] - a)
+                    .normalized();
+    }
+    volume.normals.push_back(outward);
+    volume.wallDistances.push_back(hit.distance);
+    volume.volumes.push_back(cellVolume);
+    volume.owners.push_back(patch);
+  }
+  return volume;
+}
+
+double estimateShellParticleCount(const TriangleMesh& wall, double spacing, int layers) {
+  return wall.area() / (spacing * spacing) * layers;
+}
+
+std::vector<SpacingStatistics> nearestNeighbourStatistics(const WallParticles& particles,
+                                                          int ownerCount, double spacing) {
+  // Neighbours beyond 2 dx are not searched for: such a particle reports 2 dx.
+  const double searchRadius = 2.0 * spacing;
+  PointGrid grid(searchRadius);
+  for (std::size_t i = 0; i < particles.size(); ++i) {
+    grid.insert(particles.positions[i], static_cast<int>(i));
+  }
+  std::vector<SpacingStatistics> statistics(static_cast<std::size_t>(ownerCount));
+  for (auto& s : statistics) s.min = std::numeric_limits<double>::max();
+  for (std::size_t i = 0; i < particles.size(); ++i) {
+    double nearestSquared = searchRadius * searchRadius;
+    grid.forEachNear(particles.positions[i], [&](int j) {
+      if (static_cast<std::size_t>(j) == i) return;
+      nearestSquared = std::min(
+          nearestSquared, (particles.positions[static_cast<std::size_t>(j)] - particles.positions[i])
+                              .squaredNorm());
+    });
+    const double nearest = std::sqrt(nearestSquared);
+    auto& s = statistics[static_cast<std::size_t>(particles.owners[i])];
+    ++s.count;
+    s.min = std::min(s.min, nearest);
+    s.max = std::max(s.max, nearest);
+    s.mean += nearest;
+  }
+  for (auto& s : statistics) {
+    if (s.count == 0) s.min = 0.0;
+    else s.mean /= static_cast<double>(s.count);
+  }
+  return statistics;
+}
+
+}  // namespace sphcast

@@ -1,0 +1,63 @@
+#pragma once
+
+#include <Eigen/Core>
+#include <cstddef>
+#include <vector>
+
+#include "geometry/LatticeSolid.h"
+#include "geometry/TriangleMesh.h"
+
+namespace sphcast {
+
+// Mold particles before they are split into clouds: position, unit normal of the nearest wall
+// pointing out of the mold material (into the cavity), distance to that wall (positive inside
+// the material), volume, and the owner (patch index) of the nearest wall triangle.
+struct WallParticles {
+  std::vector<Eigen::Vector3d> positions;
+  std::vector<Eigen::Vector3d> normals;
+  std::vector<double> wallDistances;
+  std::vector<double> volumes;
+  std::vector<int> owners;
+
+  std::size_t size() const { return positions.size(); }
+};
+
+// `layers` layers of particles behind `wall` (the surfaces of the shell patches, owners = patch
+// indices), on the side away from `cavity`, at distances (k + 1/2) dx, k = 0 .. layers-1.
+//
+// Method: every lattice point (LatticeSolid.h) outside the cavity and within (layers + 1/2) dx
+// of the wall is moved along its wall normal onto the one or two nearest layer surfaces; the
+// candidates are then thinned greedily, nearest-to-their-layer first, so that no two particles
+// are closer than 0.75 dx (a maximal Poisson-disk sample of the layer surfaces, as in
+// Dunbar & Humphreys, "A spatial data structure for fast Poisson-disk sample generation",
+// SIGGRAPH 2006, with lattice points as the dart candidates). On a flat wall parallel to the
+// lattice the candidates already lie on the layers and form the lattice itself; on a curved one
+// they follow the wall at the exact layer distances. 0.75 dx lies between the 0.707 dx of a
+// lattice point's diagonal neighbours in the plane (so that a flat wall keeps exactly the
+// lattice) and dx (so that the thinning leaves no hole wider than a particle).
+// Wall points whose nearest wall point is on the free border of the wall (an edge used by one
+// triangle: the rim of an open mold) are left out, so the shell ends flush with the rim instead
+// of curling around it.
+// A particle's volume is the volume of its layer band [k dx, (k+1) dx) behind its patch (counted
+// on the lattice) shared among the particles of that layer and patch: exactly dx^3 on a flat
+// wall, and the right total on a curved one.
+WallParticles generateShellParticles(const TriangleMesh& wall, const LatticeSolid& cavity,
+                                     double spacing, int layers, int patchCount);
+
+// Every lattice point inside the closed surface `boundary`, with volume dx^3; normal and wall
+// distance refer to the nearest point of `boundary`; owner is `patch`.
+WallParticles fillVolumeParticles(const TriangleMesh& boundary, double spacing, int patch);
+
+// The number of particles generateShellParticles makes, estimated from the wall area without
+// generating them (to refuse a spacing that would make too many).
+double estimateShellParticleCount(const TriangleMesh& wall, double spacing, int layers);
+
+// Nearest-neighbour distances of the particles of each owner, to particles of any owner.
+struct SpacingStatistics {
+  std::size_t count = 0;
+  double min = 0.0, mean = 0.0, max = 0.0;  // m
+};
+std::vector<SpacingStatistics> nearestNeighbourStatistics(const WallParticles& particles,
+                                                          int ownerCount, double spacing);
+
+}  // namespace sphcast
