@@ -203,6 +203,10 @@ void CellGrid::countingSort() {
     particlesByCell_[--cellStart_[cellOfParticle_[i]]] = static_cast<std::uint32_t>(i);
   }
   cellStart_[cells] = static_cast<std::uint32_t>(count);
+  bool identity = true;
+#pragma omp parallel for reduction(&& : identity)
+  for (std::size_t k = 0; k < count; ++k) identity = identity && particlesByCell_[k] == k;
+  inCellOrder_ = identity;
 }
 
 const std::vector<std::size_t>& CellGrid::sortPermutation() {
@@ -215,6 +219,7 @@ void CellGrid::adoptCellOrder() {
   const std::size_t count = particlesByCell_.size();
 #pragma omp parallel for
   for (std::size_t k = 0; k < count; ++k) particlesByCell_[k] = static_cast<std::uint32_t>(k);
+  inCellOrder_ = true;
 #pragma omp parallel for schedule(static, 1024)
   for (std::size_t c = 0; c < cells; ++c) {
     for (std::uint32_t k = cellStart_[c]; k < cellStart_[c + 1]; ++k) {

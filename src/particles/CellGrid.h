@@ -110,6 +110,10 @@ class CellGrid {
 
   const std::vector<std::uint32_t>& cellStart() const { return cellStart_; }
   const std::vector<std::uint32_t>& particlesByCell() const { return particlesByCell_; }
+  // True when particlesByCell() is the identity (the cloud is in cell order: after
+  // adoptCellOrder(), or a build() that found it so); the neighbour search then reads the
+  // positions of a cell range directly, without the index indirection.
+  bool inCellOrder() const { return inCellOrder_; }
 
  private:
   void fitAxes(const Vector& boxLower, const Vector& boxUpper);
@@ -131,6 +135,7 @@ class CellGrid {
   std::vector<std::uint32_t> cellStart_;        // per cell, + 1
   std::vector<std::uint32_t> particlesByCell_;  // per particle
   std::vector<std::size_t> permutation_;        // per particle, filled by sortPermutation()
+  bool inCellOrder_ = true;
 };
 
 }  // namespace sphcast

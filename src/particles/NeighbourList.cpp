@@ -6,6 +6,7 @@
 #include <array>
 #include <cmath>
 #include <cstring>
+#include <limits>
 #include <string>
 
 #include "core/Error.h"
@@ -41,13 +42,55 @@ int neighbourSpans(std::uint32_t c, std::uint32_t n, bool periodic, CellSpan spa
   return 2;
 }
 
-// Appends to `out` the particles j of B near x_i (|x_i - x_j| < radius, minimum image when
-// Periodic), visiting the cell stencil row by row: along x the cells of a span are contiguous
-// in the grid's cell order, so each row is one range of particlesByCell. Returns the count.
+// Where a search writes: a block's buffer, grown (rarely: only beyond any earlier build) so that
+// a whole row of candidates fits before the row is scanned without branches.
+struct PairSink {
+  std::vector<std::uint32_t>& storage;
+  std::size_t used;
+
+  std::uint32_t* roomFor(std::size_t candidates) {
+    const std::size_t needed = used + candidates;
+    if (storage.size() < needed) storage.resize(needed + needed / 4 + 1024);
+    return storage.data();
+  }
+};
+
+// No particle of B has this index: nothing is excluded between two clouds.
+constexpr std::uint32_t noSelf = std::numeric_limits<std::uint32_t>::max();
+
+// |x_i - x_j|^2, the minimum image when Periodic; written out on scalars so that x_i stays in
+// registers in the candidate loop.
 template <bool Periodic>
-std::uint32_t appendNeighbours(std::size_t i, const Vector& xi, const Vector* positionsB,
-                               const CellGrid& grid, bool excludeSelf,
-                               std::vector<std::uint32_t>& out) {
+inline Real squaredDistance(const Vector& xi, const Vector& xj, const PeriodicBox& box) {
+  if constexpr (Periodic) {
+    return box.separation(xi, xj).squaredNorm();
+  } else {
+    const Real dx = xi[0] - xj[0], dy = xi[1] - xj[1], dz = xi[2] - xj[2];
+    return dx * dx + dy * dy + dz * dz;
+  }
+}
+
+// Within one cloud, particle i itself is always among its candidates at distance 0 and was
+// appended exactly once: it is taken out afterwards rather than tested for in every candidate.
+// The list is ascending when B is in cell order (binary search), else it is searched linearly.
+template <bool InCellOrder>
+void removeSelf(std::uint32_t self, std::uint32_t* first, PairSink& sink) {
+  std::uint32_t* last = sink.storage.data() + sink.used;
+  std::uint32_t* found =
+      InCellOrder ? std::lower_bound(first, last, self) : std::find(first, last, self);
+  if (found == last) return;  // cannot happen: distance 0 is always below the radius
+  std::copy(found + 1, last, found);
+  --sink.used;
+}
+
+// Appends the particles j of B near x_i (|x_i - x_j| < radius, minimum image when Periodic;
+// j != self) to the sink, visiting the cell stencil row by row: along x the cells of a span are
+// contiguous in the grid's cell order, so each row is one range of particlesByCell (of B's
+// particles themselves when InCellOrder). Every candidate is stored and the end advanced only
+// for a neighbour, which keeps the loop free of unpredictable branches. Returns the count.
+template <bool Periodic, bool InCellOrder>
+std::uint32_t appendNeighbours(const Vector xi, std::uint32_t self, const Vector* positionsB,
+                               const CellGrid& grid, PairSink& sink) {
   const PeriodicBox& box = grid.periodicBox();
   const Real radiusSquared = grid.radius() * grid.radius();
   const std::array<std::uint32_t, 3> cell = grid.cellCoordinates(xi);
@@ -59,25 +102,40 @@ std::uint32_t appendNeighbours(std::size_t i, const Vector& xi, const Vector* po
   }
   const std::uint32_t* cellStart = grid.cellStart().data();
   const std::uint32_t* byCell = grid.particlesByCell().data();
-  const std::size_t before = out.size();
+  const std::size_t before = sink.used;
   for (int sz = 0; sz < spanCount[2]; ++sz) {
     for (std::uint32_t cz = spans[2][sz].first; cz <= spans[2][sz].last; ++cz) {
       for (int sy = 0; sy < spanCount[1]; ++sy) {
         for (std::uint32_t cy = spans[1][sy].first; cy <= spans[1][sy].last; ++cy) {
           const std::uint32_t row = n[0] * (cy + n[1] * cz);
           for (int sx = 0; sx < spanCount[0]; ++sx) {
+            const std::uint32_t begin = cellStart[row + spans[0][sx].first];
             const std::uint32_t end = cellStart[row + spans[0][sx].last + 1];
-            for (std::uint32_t k = cellStart[row + spans[0][sx].first]; k < end; ++k) {
-              const std::uint32_t j = byCell[k];
-              const Vector d = Periodic ? box.separation(xi, positionsB[j]) : xi - positionsB[j];
-              if (d.squaredNorm() < radiusSquared && !(excludeSelf && j == i)) out.push_back(j);
+            std::uint32_t* out = sink.roomFor(end - begin);
+            std::size_t used = sink.used;
+            for (std::uint32_t k = begin; k < end; ++k) {
+              const std::uint32_t j = InCellOrder ? k : byCell[k];
+              out[used] = j;
+              used += squaredDistance<Periodic>(xi, positionsB[j], box) < radiusSquared;
             }
+            sink.used = used;
           }
         }
       }
     }
   }
-  return static_cast<std::uint32_t>(out.size() - before);
+  if (self != noSelf) removeSelf<InCellOrder>(self, sink.storage.data() + before, sink);
+  return static_cast<std::uint32_t>(sink.used - before);
+}
+
+using SearchFunction = std::uint32_t (*)(Vector, std::uint32_t, const Vector*,
+                                         const CellGrid&, PairSink&);
+
+SearchFunction searchFor(bool periodic, bool inCellOrder) {
+  if (periodic) {
+    return inCellOrder ? appendNeighbours<true, true> : appendNeighbours<true, false>;
+  }
+  return inCellOrder ? appendNeighbours<false, true> : appendNeighbours<false, false>;
 }
 
 void checkFinite(const std::vector<Vector>& positions) {
@@ -119,21 +177,24 @@ void NeighbourList::build(const std::vector<Vector>& positionsA,
   // does not depend on how many there are.
   const std::size_t blocks = std::max<std::size_t>(
       1, std::min<std::size_t>(count / 64, 8 * std::size_t(omp_get_max_threads())));
-  if (threadLists_.size() < blocks) threadLists_.resize(blocks);
-  threadBegin_.resize(blocks + 1);
-  for (std::size_t b = 0; b <= blocks; ++b) threadBegin_[b] = count * b / blocks;
+  if (blockStorage_.size() < blocks) blockStorage_.resize(blocks);
+  blockUsed_.resize(blocks);
+  blockBegin_.resize(blocks + 1);
+  for (std::size_t b = 0; b <= blocks; ++b) blockBegin_[b] = count * b / blocks;
   counts_.resize(count);
-  const bool periodic = gridB.periodicBox().anyPeriodic();
+  // one search per pair of (periodic?, B in cell order?), chosen once, not per pair
+  const SearchFunction search =
+      searchFor(gridB.periodicBox().anyPeriodic(), gridB.inCellOrder());
   const Vector* xB = positionsB.data();
 
 #pragma omp parallel for schedule(dynamic, 1)
   for (std::size_t b = 0; b < blocks; ++b) {
-    std::vector<std::uint32_t>& list = threadLists_[b];
-    list.clear();
-    for (std::size_t i = threadBegin_[b]; i < threadBegin_[b + 1]; ++i) {
-      counts_[i] = periodic ? appendNeighbours<true>(i, positionsA[i], xB, gridB, sameCloud, list)
-                            : appendNeighbours<false>(i, positionsA[i], xB, gridB, sameCloud, list);
+    PairSink sink{blockStorage_[b], 0};
+    for (std::size_t i = blockBegin_[b]; i < blockBegin_[b + 1]; ++i) {
+      const std::uint32_t self = sameCloud ? static_cast<std::uint32_t>(i) : noSelf;
+      counts_[i] = search(positionsA[i], self, xB, gridB, sink);
     }
+    blockUsed_[b] = sink.used;
   }
   gatherBlocks();
 }
@@ -145,13 +206,12 @@ void NeighbourList::gatherBlocks() {
   offsets_[0] = 0;
   for (std::size_t i = 0; i < count; ++i) offsets_[i + 1] = offsets_[i] + counts_[i];
   neighbours_.resize(offsets_[count]);
-  const std::size_t blocks = threadBegin_.size() - 1;
+  const std::size_t blocks = blockBegin_.size() - 1;
 #pragma omp parallel for schedule(dynamic, 1)
   for (std::size_t b = 0; b < blocks; ++b) {
-    const std::vector<std::uint32_t>& list = threadLists_[b];
-    if (!list.empty()) {
-      std::memcpy(neighbours_.data() + offsets_[threadBegin_[b]], list.data(),
-                  list.size() * sizeof(std::uint32_t));
+    if (blockUsed_[b] > 0) {
+      std::memcpy(neighbours_.data() + offsets_[blockBegin_[b]], blockStorage_[b].data(),
+                  blockUsed_[b] * sizeof(std::uint32_t));
     }
   }
 }
@@ -160,8 +220,8 @@ std::size_t NeighbourList::memoryBytes() const {
   std::size_t bytes = offsets_.capacity() * sizeof(std::uint64_t) +
                       neighbours_.capacity() * sizeof(std::uint32_t) +
                       counts_.capacity() * sizeof(std::uint32_t) +
-                      threadBegin_.capacity() * sizeof(std::size_t);
-  for (const auto& list : threadLists_) bytes += list.capacity() * sizeof(std::uint32_t);
+                      (blockBegin_.capacity() + blockUsed_.capacity()) * sizeof(std::size_t);
+  for (const auto& block : blockStorage_) bytes += block.capacity() * sizeof(std::uint32_t);
   return bytes;
 }
 

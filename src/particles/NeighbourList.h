@@ -59,9 +59,10 @@ class NeighbourList {
 
   std::vector<std::uint64_t> offsets_{0};
   std::vector<std::uint32_t> neighbours_;
-  std::vector<std::uint32_t> counts_;                    // per particle of A
-  std::vector<std::vector<std::uint32_t>> threadLists_;  // per thread, reused
-  std::vector<std::size_t> threadBegin_;                 // first i of each thread's block
+  std::vector<std::uint32_t> counts_;                     // per particle of A
+  std::vector<std::vector<std::uint32_t>> blockStorage_;  // per block of i, only grows
+  std::vector<std::size_t> blockUsed_;                    // entries of blockStorage_ in use
+  std::vector<std::size_t> blockBegin_;                   // first i of each block
 };
 
 }  // namespace sphcast
