@@ -205,6 +205,32 @@ TriangleMesh GmshGeometry::surfacesOf(const std::vector<OwnedGroup>& surfaceGrou
   return surfaceTriangles(surfaces);
 }
 
+double GmshGeometry::groupMeasure(const PhysicalGroup& group) const {
+  double measure = 0.0;
+  for (const int entity : entitiesOf(group)) {
+    try {
+      double mass = 0.0;
+      gmsh::model::occ::getMass(group.dimension, entity, mass);
+      measure += mass;
+      continue;
+    } catch (...) {
+      // not an OpenCASCADE entity
+    }
+    if (!nodes_.empty()) {
+      const TriangleMesh mesh = group.dimension == 2
+                                    ? surfaceTriangles({{entity, 0}})
+                                    : boundaryOfVolumes({entity});
+      measure += group.dimension == 2 ? mesh.area() : mesh.enclosedVolume();
+      continue;
+    }
+    std::array<double, 6> b{};
+    gmsh::model::getBoundingBox(group.dimension, entity, b[0], b[1], b[2], b[3], b[4], b[5]);
+    const double x = b[3] - b[0], y = b[4] - b[1], z = b[5] - b[2];
+    measure += group.dimension == 2 ? 2.0 * (x * y + y * z + z * x) : x * y * z;
+  }
+  return measure;
+}
+
 std::vector<int> GmshGeometry::volumesOf(const PhysicalGroup& volumeGroup) const {
   return entitiesOf(volumeGroup);
 }

@@ -36,6 +36,10 @@ class GmshGeometry {
   // The volume entities a surface group's surfaces bound: the cavity its walls enclose. Throws
   // an Error when one of its surfaces bounds no volume, or two (then the side is ambiguous).
   std::vector<int> volumesBoundedBy(const PhysicalGroup& surfaceGroup) const;
+  // Area of a surface group or volume of a volume group: exact from the CAD for OpenCASCADE
+  // entities, from the mesh when there is one, else from the entities' bounding boxes (an
+  // overestimate). For refusing too fine a spacing before meshing.
+  double groupMeasure(const PhysicalGroup& group) const;
   // The volume entities of a volume group.
   std::vector<int> volumesOf(const PhysicalGroup& volumeGroup) const;
   // The combined boundary of volume entities (faces shared between two of them drop out).
