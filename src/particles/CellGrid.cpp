@@ -28,7 +28,7 @@ std::string formatVector(const Vector& x) {
 struct BoundingBox {
   Vector lower;
   Vector upper;
-  std::size_t nonFinite = 0;                                    // how many particles
+  std::size_t nonFinite = 0;  // how many particles
   std::size_t firstNonFinite = std::numeric_limits<std::size_t>::max();
 };
 
@@ -60,9 +60,10 @@ void PeriodicBox::setPeriodic(int axis, Real lower, Real period) {
     throw Error("PeriodicBox: axis " + std::to_string(axis) + " is not 0, 1 or 2 (x, y, z)");
   }
   if (!std::isfinite(lower) || !std::isfinite(period) || !(period > Real(0))) {
-    throw Error(std::string("PeriodicBox: periodic axis ") + axisName(axis) + " needs a finite "
-                "lower bound and a period > 0, got lower " + std::to_string(lower) +
-                ", period " + std::to_string(period));
+    throw Error(std::string("PeriodicBox: periodic axis ") + axisName(axis) +
+                " needs a finite "
+                "lower bound and a period > 0, got lower " +
+                std::to_string(lower) + ", period " + std::to_string(period));
   }
   lower_[axis] = lower;
   period_[axis] = period;
@@ -83,7 +84,8 @@ CellGrid::CellGrid(Real radius, const PeriodicBox& periodic, std::size_t maxCell
     : radius_(radius),
       periodic_(periodic),
       // cell indices and cell offsets are 32-bit
-      maxCellCount_(std::min<std::size_t>(maxCellCount, std::numeric_limits<std::uint32_t>::max() - 1)) {
+      maxCellCount_(
+          std::min<std::size_t>(maxCellCount, std::numeric_limits<std::uint32_t>::max() - 1)) {
   if (!std::isfinite(radius) || !(radius > Real(0))) {
     throw Error("CellGrid: the search radius must be finite and > 0, got " +
                 std::to_string(radius));
@@ -99,8 +101,8 @@ CellGrid::CellGrid(Real radius, const PeriodicBox& periodic, std::size_t maxCell
     }
     if (cells > double(maxCellCount)) {
       throw Error(std::string("CellGrid: periodic axis ") + axisName(a) + " would need " +
-                  std::to_string(cells) + " cells, more than the limit maxCellCount = " +
-                  std::to_string(maxCellCount));
+                  std::to_string(cells) +
+                  " cells, more than the limit maxCellCount = " + std::to_string(maxCellCount));
     }
     cellCounts_[a] = static_cast<std::uint32_t>(cells);
     origin_[a] = periodic.lower(a);
@@ -178,10 +180,18 @@ void CellGrid::fitAxes(const Vector& boxLower, const Vector& boxUpper) {
 }
 
 std::array<std::uint32_t, 3> CellGrid::cellCoordinates(const Vector& x) const {
+  std::array<double, 3> fraction;
+  return cellCoordinates(x, fraction);
+}
+
+std::array<std::uint32_t, 3> CellGrid::cellCoordinates(const Vector& x,
+                                                       std::array<double, 3>& fraction) const {
   std::array<std::uint32_t, 3> cell{};
   for (int a = 0; a < 3; ++a) {
     const double cells = double(cellCounts_[a]);
-    double c = std::floor((double(x[a]) - double(origin_[a])) * double(inverseCellSize_[a]));
+    const double scaled = (double(x[a]) - double(origin_[a])) * double(inverseCellSize_[a]);
+    double c = std::floor(scaled);
+    fraction[a] = std::clamp(scaled - c, 0.0, 1.0);
     if (periodic_.isPeriodic(a)) c -= cells * std::floor(c / cells);  // wrap into [0, n)
     cell[a] = static_cast<std::uint32_t>(std::clamp(c, 0.0, cells - 1.0));
   }

@@ -102,6 +102,11 @@ class CellGrid {
   // Cell coordinates (cx, cy, cz) of any point, wrapped on periodic axes and clamped into the
   // grid on the others. Needs a finite x.
   std::array<std::uint32_t, 3> cellCoordinates(const Vector& x) const;
+  // The same, and where x lies along each axis in its cell, as a fraction of the cell edge in
+  // [0, 1). For a clamped point it is the fraction in its unclamped cell, so distances from it
+  // to the grid's cells are underestimated, never over (the search prunes with them).
+  std::array<std::uint32_t, 3> cellCoordinates(const Vector& x,
+                                               std::array<double, 3>& fraction) const;
   std::uint32_t cellIndex(const std::array<std::uint32_t, 3>& cell) const {
     return cell[0] + cellCounts_[0] * (cell[1] + cellCounts_[1] * cell[2]);
   }

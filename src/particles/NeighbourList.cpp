@@ -14,32 +14,39 @@
 namespace sphcast {
 namespace {
 
-// A run of consecutive cells [first, last] along one axis.
-struct CellSpan {
-  std::uint32_t first;
-  std::uint32_t last;
+// A cell next to (or at) x_i along one axis, and the gap between x_i and that cell along the
+// axis, squared.
+struct AxisCell {
+  std::uint32_t cell;
+  double gapSquared;
 };
 
-// The cells within one step of cell c along an axis of n cells, as at most three spans in
-// increasing order: clipped at the ends of a non-periodic axis, wrapped (and never visited
-// twice, n >= 2) on a periodic one.
-int neighbourSpans(std::uint32_t c, std::uint32_t n, bool periodic, CellSpan spans[3]) {
-  if (!periodic || (c > 0 && c + 1 < n)) {
-    spans[0] = {c > 0 ? c - 1 : 0, c + 1 < n ? c + 1 : c};
-    return 1;
+// The cells within one step of cell c along an axis of n cells, in increasing order (so that a
+// row's cells are visited in memory order): clipped at the ends of a non-periodic axis, wrapped
+// and never listed twice (n >= 2) on a periodic one. u is x_i's fraction in its cell, edge the
+// cell edge.
+int neighbourCells(std::uint32_t c, std::uint32_t n, bool periodic, double u, double edge,
+                   AxisCell cells[3]) {
+  const double below = u * edge * u * edge, above = (1 - u) * edge * (1 - u) * edge;
+  int count = 0;
+  if (!periodic) {
+    if (c > 0) cells[count++] = {c - 1, below};
+    cells[count++] = {c, 0.0};
+    if (c + 1 < n) cells[count++] = {c + 1, above};
+    return count;
   }
-  if (n == 2) {
-    spans[0] = {0, 1};
-    return 1;
-  }
-  if (c == 0) {  // wraps to n - 1
-    spans[0] = {0, 1};
-    spans[1] = {n - 1, n - 1};
+  if (n == 2) {  // the cell before is the cell after
+    const AxisCell other{1 - c, std::min(below, above)};
+    cells[0] = c == 0 ? AxisCell{0, 0.0} : other;
+    cells[1] = c == 0 ? other : AxisCell{1, 0.0};
     return 2;
   }
-  spans[0] = {0, 0};  // c == n - 1 wraps to 0
-  spans[1] = {c - 1, c};
-  return 2;
+  cells[0] = {c == 0 ? n - 1 : c - 1, below};
+  cells[1] = {c, 0.0};
+  cells[2] = {c + 1 == n ? 0 : c + 1, above};
+  if (c == 0) std::rotate(cells, cells + 1, cells + 3);      // 0, 1, n - 1
+  if (c + 1 == n) std::rotate(cells, cells + 2, cells + 3);  // 0, n - 2, n - 1
+  return 3;
 }
 
 // Where a search writes: a block's buffer, grown (rarely: only beyond any earlier build) so that
@@ -83,44 +90,54 @@ void removeSelf(std::uint32_t self, std::uint32_t* first, PairSink& sink) {
   --sink.used;
 }
 
-// Appends the particles j of B near x_i (|x_i - x_j| < radius, minimum image when Periodic;
-// j != self) to the sink, visiting the cell stencil row by row: along x the cells of a span are
-// contiguous in the grid's cell order, so each row is one range of particlesByCell (of B's
-// particles themselves when InCellOrder). Every candidate is stored and the end advanced only
-// for a neighbour, which keeps the loop free of unpredictable branches. Returns the count.
+// Appends the particles j of B with |x_i - x_j| < radius (minimum image when Periodic) to the
+// sink. The stencil of 3 x 3 x 3 cells is visited row by row (y, z fixed); a row whose gap to
+// x_i already reaches the radius is skipped, and along x only the cells within the remaining
+// reach sqrt(h^2 - gy^2 - gz^2) are scanned. Consecutive cells of a row are contiguous in the
+// grid's cell order, so each run is one range of particlesByCell (of B's particles themselves
+// when InCellOrder). Every candidate is stored and the end advanced only for a neighbour, which
+// keeps the loop free of unpredictable branches. Returns the count.
 template <bool Periodic, bool InCellOrder>
 std::uint32_t appendNeighbours(const Vector xi, std::uint32_t self, const Vector* positionsB,
                                const CellGrid& grid, PairSink& sink) {
   const PeriodicBox& box = grid.periodicBox();
   const Real radiusSquared = grid.radius() * grid.radius();
-  const std::array<std::uint32_t, 3> cell = grid.cellCoordinates(xi);
+  // pruning compares gaps with a radius grown by the cell margin: round-off never prunes a pair
+  const double reachSquared = double(grid.radius()) * double(grid.radius()) * (1 + 4e-6);
+  std::array<double, 3> fraction;
+  const std::array<std::uint32_t, 3> home = grid.cellCoordinates(xi, fraction);
   const std::array<std::uint32_t, 3> n = grid.cellCounts();
-  std::array<std::array<CellSpan, 3>, 3> spans;
-  std::array<int, 3> spanCount;
+  std::array<std::array<AxisCell, 3>, 3> cells;
+  std::array<int, 3> cellCount;
   for (int a = 0; a < 3; ++a) {
-    spanCount[a] = neighbourSpans(cell[a], n[a], box.isPeriodic(a), spans[a].data());
+    cellCount[a] = neighbourCells(home[a], n[a], box.isPeriodic(a), fraction[a],
+                                  double(grid.cellSize()[a]), cells[a].data());
   }
   const std::uint32_t* cellStart = grid.cellStart().data();
   const std::uint32_t* byCell = grid.particlesByCell().data();
   const std::size_t before = sink.used;
-  for (int sz = 0; sz < spanCount[2]; ++sz) {
-    for (std::uint32_t cz = spans[2][sz].first; cz <= spans[2][sz].last; ++cz) {
-      for (int sy = 0; sy < spanCount[1]; ++sy) {
-        for (std::uint32_t cy = spans[1][sy].first; cy <= spans[1][sy].last; ++cy) {
-          const std::uint32_t row = n[0] * (cy + n[1] * cz);
-          for (int sx = 0; sx < spanCount[0]; ++sx) {
-            const std::uint32_t begin = cellStart[row + spans[0][sx].first];
-            const std::uint32_t end = cellStart[row + spans[0][sx].last + 1];
-            std::uint32_t* out = sink.roomFor(end - begin);
-            std::size_t used = sink.used;
-            for (std::uint32_t k = begin; k < end; ++k) {
-              const std::uint32_t j = InCellOrder ? k : byCell[k];
-              out[used] = j;
-              used += squaredDistance<Periodic>(xi, positionsB[j], box) < radiusSquared;
-            }
-            sink.used = used;
-          }
+  for (int z = 0; z < cellCount[2]; ++z) {
+    for (int y = 0; y < cellCount[1]; ++y) {
+      const double reachX = reachSquared - cells[2][z].gapSquared - cells[1][y].gapSquared;
+      if (reachX <= 0) continue;
+      const std::uint32_t row = n[0] * (cells[1][y].cell + n[1] * cells[2][z].cell);
+      for (int x = 0; x < cellCount[0]; ++x) {
+        if (cells[0][x].gapSquared >= reachX) continue;
+        const std::uint32_t first = cells[0][x].cell;
+        while (x + 1 < cellCount[0] && cells[0][x + 1].gapSquared < reachX &&
+               cells[0][x + 1].cell == cells[0][x].cell + 1) {
+          ++x;  // extend the run of consecutive cells
         }
+        const std::uint32_t begin = cellStart[row + first];
+        const std::uint32_t end = cellStart[row + cells[0][x].cell + 1];
+        std::uint32_t* out = sink.roomFor(end - begin);
+        std::size_t used = sink.used;
+        for (std::uint32_t k = begin; k < end; ++k) {
+          const std::uint32_t j = InCellOrder ? k : byCell[k];
+          out[used] = j;
+          used += squaredDistance<Periodic>(xi, positionsB[j], box) < radiusSquared;
+        }
+        sink.used = used;
       }
     }
   }
@@ -128,8 +145,8 @@ std::uint32_t appendNeighbours(const Vector xi, std::uint32_t self, const Vector
   return static_cast<std::uint32_t>(sink.used - before);
 }
 
-using SearchFunction = std::uint32_t (*)(Vector, std::uint32_t, const Vector*,
-                                         const CellGrid&, PairSink&);
+using SearchFunction = std::uint32_t (*)(Vector, std::uint32_t, const Vector*, const CellGrid&,
+                                         PairSink&);
 
 SearchFunction searchFor(bool periodic, bool inCellOrder) {
   if (periodic) {
@@ -183,8 +200,7 @@ void NeighbourList::build(const std::vector<Vector>& positionsA,
   for (std::size_t b = 0; b <= blocks; ++b) blockBegin_[b] = count * b / blocks;
   counts_.resize(count);
   // one search per pair of (periodic?, B in cell order?), chosen once, not per pair
-  const SearchFunction search =
-      searchFor(gridB.periodicBox().anyPeriodic(), gridB.inCellOrder());
+  const SearchFunction search = searchFor(gridB.periodicBox().anyPeriodic(), gridB.inCellOrder());
   const Vector* xB = positionsB.data();
 
 #pragma omp parallel for schedule(dynamic, 1)

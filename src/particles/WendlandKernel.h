@@ -45,7 +45,9 @@ class WendlandC2Kernel {
   }
 
   SPHCAST_HOST_DEVICE constexpr explicit WendlandC2Kernel(Real supportRadius)
-      : h_(supportRadius), inverseH_(Real(1) / supportRadius), alpha_(normalisationFor(supportRadius)) {}
+      : h_(supportRadius),
+        inverseH_(Real(1) / supportRadius),
+        alpha_(normalisationFor(supportRadius)) {}
 
   SPHCAST_HOST_DEVICE constexpr Real supportRadius() const { return h_; }
   SPHCAST_HOST_DEVICE constexpr Real normalisation() const { return alpha_; }

@@ -32,8 +32,8 @@ sphcast::ParticleCloud latticeCloud(std::int64_t count) {
   for (std::size_t z = 0; z < side; ++z) {
     for (std::size_t y = 0; y < side; ++y) {
       for (std::size_t x = 0; x < side; ++x) {
-        cloud.positions()[i++] = Vector(Real(x) + jitter(random), Real(y) + jitter(random),
-                                        Real(z) + jitter(random));
+        cloud.positions()[i++] =
+            Vector(Real(x) + jitter(random), Real(y) + jitter(random), Real(z) + jitter(random));
       }
     }
   }
@@ -76,8 +76,7 @@ void NeighbourListBuild(benchmark::State& state) {
       benchmark::Counter(pairs * double(state.iterations()), benchmark::Counter::kIsRate);
   state.counters["neighbours"] = pairs / particles;
   state.counters["listBytes/particle"] = double(list.memoryBytes()) / particles;
-  state.counters["CSRBytes/particle"] =
-      (double(list.offsets().size()) * 8 + pairs * 4) / particles;
+  state.counters["CSRBytes/particle"] = (double(list.offsets().size()) * 8 + pairs * 4) / particles;
 }
 
 // Args: particles, h/dx

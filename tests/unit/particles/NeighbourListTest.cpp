@@ -18,24 +18,27 @@
 namespace sphcast {
 namespace {
 
+// Real literals, so that the tests build without conversions in the single-precision build too.
+constexpr Real operator""_r(long double value) { return static_cast<Real>(value); }
+
 using Pairs = std::vector<std::vector<std::uint32_t>>;
 
 // Uniform random points in [0, size)^3 (z = 0 when flat), plus a cluster of `clustered` points
 // within 0.1 radius of one spot, so that some cells are crowded and many empty.
 std::vector<Vector> randomPoints(std::size_t count, const Vector& size, std::uint32_t seed,
-                                 std::size_t clustered = 0, double radius = 1) {
+                                 std::size_t clustered = 0, Real radius = 1) {
   std::mt19937 random(seed);
-  std::uniform_real_distribution<double> unit(0, 1);
+  std::uniform_real_distribution<Real> unit(0, 1);
   std::vector<Vector> points(count);
   for (auto& x : points) x = Vector(unit(random), unit(random), unit(random)).cwiseProduct(size);
   for (std::size_t k = 0; k < std::min(clustered, count); ++k) {
-    points[k] = 0.3 * size + 0.1 * radius * Vector(unit(random), unit(random), unit(random));
+    points[k] = 0.3_r * size + 0.1_r * radius * Vector(unit(random), unit(random), unit(random));
     if (size[2] == 0) points[k][2] = 0;
   }
   return points;
 }
 
-Pairs bruteForce(const std::vector<Vector>& a, const std::vector<Vector>& b, double radius,
+Pairs bruteForce(const std::vector<Vector>& a, const std::vector<Vector>& b, Real radius,
                  const PeriodicBox& box, bool sameCloud) {
   Pairs pairs(a.size());
   for (std::size_t i = 0; i < a.size(); ++i) {
@@ -59,7 +62,7 @@ Pairs sorted(const NeighbourList& list) {
   return pairs;
 }
 
-void expectWithinMatchesBruteForce(const std::vector<Vector>& x, double radius,
+void expectWithinMatchesBruteForce(const std::vector<Vector>& x, Real radius,
                                    const PeriodicBox& box = PeriodicBox()) {
   CellGrid grid(radius, box);
   grid.build(x);
@@ -70,7 +73,7 @@ void expectWithinMatchesBruteForce(const std::vector<Vector>& x, double radius,
 }
 
 void expectBetweenMatchesBruteForce(const std::vector<Vector>& a, const std::vector<Vector>& b,
-                                    double radius, const PeriodicBox& box = PeriodicBox()) {
+                                    Real radius, const PeriodicBox& box = PeriodicBox()) {
   CellGrid grid(radius, box);
   grid.build(b);
   NeighbourList list;
@@ -79,28 +82,28 @@ void expectBetweenMatchesBruteForce(const std::vector<Vector>& a, const std::vec
 }
 
 TEST(NeighbourList, WithinOneCloudMatchesBruteForceIn3D) {
-  expectWithinMatchesBruteForce(randomPoints(1500, Vector(5, 4, 3), 1, 200), 0.7);
+  expectWithinMatchesBruteForce(randomPoints(1500, Vector(5, 4, 3), 1, 200), 0.7_r);
 }
 
 TEST(NeighbourList, WithinOneCloudMatchesBruteForceIn2D) {
   const auto x = randomPoints(2000, Vector(6, 5, 0), 2, 300);
-  CellGrid grid(0.5);
+  CellGrid grid(0.5_r);
   grid.build(x);
   EXPECT_EQ(grid.cellCounts()[2], 1u) << "a flat cloud needs one layer of cells";
-  expectWithinMatchesBruteForce(x, 0.5);
+  expectWithinMatchesBruteForce(x, 0.5_r);
 }
 
 TEST(NeighbourList, FindsPairsAcrossPeriodicBoundariesIn3D) {
   PeriodicBox box;
   box.setPeriodic(0, 0, 5);
   box.setPeriodic(2, 0, 3);
-  expectWithinMatchesBruteForce(randomPoints(1500, Vector(5, 4, 3), 3, 100), 0.7, box);
+  expectWithinMatchesBruteForce(randomPoints(1500, Vector(5, 4, 3), 3, 100), 0.7_r, box);
   // every axis periodic, and periods of only 2 and 3 cells
   PeriodicBox tight;
-  tight.setPeriodic(0, 0, 1.5);
-  tight.setPeriodic(1, 0, 2.2);
-  tight.setPeriodic(2, 0, 3.0);
-  expectWithinMatchesBruteForce(randomPoints(800, Vector(1.5, 2.2, 3.0), 4), 0.7, tight);
+  tight.setPeriodic(0, 0, 1.5_r);
+  tight.setPeriodic(1, 0, 2.2_r);
+  tight.setPeriodic(2, 0, 3.0_r);
+  expectWithinMatchesBruteForce(randomPoints(800, Vector(1.5_r, 2.2_r, 3.0_r), 4), 0.7_r, tight);
 }
 
 TEST(NeighbourList, FindsPairsAcrossPeriodicBoundariesIn2D) {
@@ -108,40 +111,40 @@ TEST(NeighbourList, FindsPairsAcrossPeriodicBoundariesIn2D) {
   box.setPeriodic(0, -1, 4);  // a channel periodic in x
   auto x = randomPoints(1200, Vector(4, 2, 0), 5, 50);
   for (auto& p : x) p[0] -= 1;
-  expectWithinMatchesBruteForce(x, 0.3, box);
+  expectWithinMatchesBruteForce(x, 0.3_r, box);
 }
 
 TEST(NeighbourList, HandlesPositionsOutsideThePeriodicRange) {
   PeriodicBox box;
   box.setPeriodic(1, 0, 3);
   auto x = randomPoints(600, Vector(3, 3, 3), 6);
-  for (std::size_t i = 0; i < x.size(); i += 3) x[i][1] += (i % 2 ? 3.0 : -6.0);  // unwrapped
-  expectWithinMatchesBruteForce(x, 0.6, box);
+  for (std::size_t i = 0; i < x.size(); i += 3) x[i][1] += (i % 2 ? 3.0_r : -6.0_r);  // unwrapped
+  expectWithinMatchesBruteForce(x, 0.6_r, box);
 }
 
 TEST(NeighbourList, BetweenTwoCloudsMatchesBruteForce) {
   const auto fluid = randomPoints(900, Vector(4, 4, 4), 7, 100);
   auto wall = randomPoints(700, Vector(6, 6, 6), 8, 50);
   for (auto& p : wall) p -= Vector(1, 1, 1);  // extends beyond the fluid on every side
-  expectBetweenMatchesBruteForce(fluid, wall, 0.6);
+  expectBetweenMatchesBruteForce(fluid, wall, 0.6_r);
   // query points far outside the wall's grid are clamped into it and find nothing wrong
   auto far = fluid;
   far[0] = Vector(100, -50, 3);
-  expectBetweenMatchesBruteForce(far, wall, 0.6);
+  expectBetweenMatchesBruteForce(far, wall, 0.6_r);
   PeriodicBox box;
   box.setPeriodic(1, -1, 6);
-  expectBetweenMatchesBruteForce(fluid, wall, 0.6, box);
+  expectBetweenMatchesBruteForce(fluid, wall, 0.6_r, box);
   const auto flatFluid = randomPoints(500, Vector(3, 3, 0), 9);
   const auto flatWall = randomPoints(400, Vector(4, 4, 0), 10);
-  expectBetweenMatchesBruteForce(flatFluid, flatWall, 0.4);
+  expectBetweenMatchesBruteForce(flatFluid, flatWall, 0.4_r);
 }
 
 TEST(NeighbourList, HandlesASingleParticleAndNone) {
-  expectWithinMatchesBruteForce({Vector(1, 2, 3)}, 0.5);
-  expectWithinMatchesBruteForce({}, 0.5);
-  expectBetweenMatchesBruteForce({}, {Vector(1, 2, 3)}, 0.5);
-  expectBetweenMatchesBruteForce({Vector(1, 2, 3)}, {}, 0.5);
-  CellGrid grid(0.5);
+  expectWithinMatchesBruteForce({Vector(1, 2, 3)}, 0.5_r);
+  expectWithinMatchesBruteForce({}, 0.5_r);
+  expectBetweenMatchesBruteForce({}, {Vector(1, 2, 3)}, 0.5_r);
+  expectBetweenMatchesBruteForce({Vector(1, 2, 3)}, {}, 0.5_r);
+  CellGrid grid(0.5_r);
   grid.build({});
   NeighbourList list;
   list.buildWithin({}, grid);
@@ -150,14 +153,14 @@ TEST(NeighbourList, HandlesASingleParticleAndNone) {
 }
 
 TEST(NeighbourList, KeepsCoincidentParticlesAsNeighbours) {
-  expectWithinMatchesBruteForce({Vector(1, 1, 0), Vector(1, 1, 0), Vector(1.2, 1, 0)}, 0.5);
+  expectWithinMatchesBruteForce({Vector(1, 1, 0), Vector(1, 1, 0), Vector(1.2_r, 1, 0)}, 0.5_r);
 }
 
 TEST(NeighbourList, IsIdenticalForOneAndTwoThreads) {
   PeriodicBox box;
   box.setPeriodic(0, 0, 6);
   const auto x = randomPoints(20000, Vector(6, 5, 4), 11, 2000);
-  CellGrid grid(0.4, box);
+  CellGrid grid(0.4_r, box);
   const int threads = omp_get_max_threads();
   omp_set_num_threads(1);
   grid.build(x);
@@ -176,7 +179,7 @@ TEST(NeighbourList, IsIdenticalForOneAndTwoThreads) {
 
 TEST(CellGrid, SortPermutationIsAPermutationOrderedByCell) {
   const auto x = randomPoints(5000, Vector(5, 4, 3), 12, 500);
-  CellGrid grid(0.35);
+  CellGrid grid(0.35_r);
   grid.build(x);
   const auto& order = grid.sortPermutation();
   ASSERT_EQ(order.size(), x.size());
@@ -202,7 +205,7 @@ TEST(CellGrid, ReorderedCloudGivesTheSameNeighbourhoods) {
   auto& id = cloud.addIdField("id");
   const auto x = randomPoints(3000, Vector(4, 4, 4), 13, 300);
   for (std::size_t i = 0; i < x.size(); ++i) cloud.positions()[i] = x[i], id[i] = std::int64_t(i);
-  CellGrid grid(0.5);
+  CellGrid grid(0.5_r);
   grid.build(cloud.positions());
   cloud.reorder(grid.sortPermutation());
   grid.adoptCellOrder();
@@ -212,7 +215,7 @@ TEST(CellGrid, ReorderedCloudGivesTheSameNeighbourhoods) {
   }
   NeighbourList reordered;
   reordered.buildWithin(cloud.positions(), grid);
-  const Pairs expected = bruteForce(x, x, 0.5, PeriodicBox(), true);
+  const Pairs expected = bruteForce(x, x, 0.5_r, PeriodicBox(), true);
   for (std::size_t k = 0; k < cloud.size(); ++k) {
     std::vector<std::uint32_t> original;
     for (const std::uint32_t j : reordered.of(k)) original.push_back(std::uint32_t(id[j]));
@@ -226,8 +229,8 @@ TEST(CellGrid, ReorderedCloudGivesTheSameNeighbourhoods) {
 TEST(CellGrid, RebuildReusesItsBuffers) {
   const auto x = randomPoints(4000, Vector(4, 4, 4), 14);
   auto denser = x;
-  for (auto& p : denser) p *= 0.99;  // every pair of x is a pair here
-  CellGrid grid(0.5);
+  for (auto& p : denser) p *= 0.99_r;  // every pair of x is a pair here
+  CellGrid grid(0.5_r);
   grid.build(denser);
   NeighbourList list;
   list.buildWithin(denser, grid);
@@ -247,7 +250,7 @@ TEST(CellGrid, RejectsNonFinitePositionsWithAMessage) {
   auto x = randomPoints(100, Vector(1, 1, 1), 15);
   x[42][1] = std::numeric_limits<Real>::quiet_NaN();
   x[77][0] = std::numeric_limits<Real>::infinity();
-  CellGrid grid(0.2);
+  CellGrid grid(0.2_r);
   try {
     grid.build(x);
     FAIL() << "no error for a NaN position";
@@ -255,55 +258,56 @@ TEST(CellGrid, RejectsNonFinitePositionsWithAMessage) {
     EXPECT_NE(std::string(error.what()).find("2 particle(s)"), std::string::npos) << error.what();
     EXPECT_NE(std::string(error.what()).find("particle 42"), std::string::npos) << error.what();
   }
-  CellGrid good(0.2);
+  CellGrid good(0.2_r);
   good.build(randomPoints(10, Vector(1, 1, 1), 16));
   NeighbourList list;
   EXPECT_THROW(list.buildBetween(x, randomPoints(10, Vector(1, 1, 1), 16), good), Error);
 }
 
 TEST(CellGrid, RejectsAbsurdCellCounts) {
-  std::vector<Vector> x = {Vector(0, 0, 0), Vector(1e6, 1e6, 1e6)};  // one particle flew away
-  CellGrid grid(0.01);
+  std::vector<Vector> x = {Vector(0, 0, 0), Vector(1e6_r, 1e6_r, 1e6_r)};  // one particle flew away
+  CellGrid grid(0.01_r);
   try {
     grid.build(x);
     FAIL() << "no error for 1e24 cells";
   } catch (const Error& error) {
     EXPECT_NE(std::string(error.what()).find("maxCellCount"), std::string::npos) << error.what();
   }
-  CellGrid limited(0.1, PeriodicBox(), 1000);
+  CellGrid limited(0.1_r, PeriodicBox(), 1000);
   EXPECT_THROW(limited.build({Vector(0, 0, 0), Vector(2, 2, 2)}), Error);  // 21^3 cells
-  EXPECT_NO_THROW(limited.build({Vector(0, 0, 0), Vector(0.5, 0.5, 0.5)}));
+  EXPECT_NO_THROW(limited.build({Vector(0, 0, 0), Vector(0.5_r, 0.5_r, 0.5_r)}));
 }
 
 TEST(CellGrid, RejectsPeriodsOfTwoRadiiOrLess) {
   PeriodicBox box;
-  box.setPeriodic(0, 0, 1.0);
-  EXPECT_THROW(CellGrid(0.5, box), Error);
-  EXPECT_NO_THROW(CellGrid(0.49, box));
+  box.setPeriodic(0, 0, 1.0_r);
+  EXPECT_THROW(CellGrid(0.5_r, box), Error);
+  EXPECT_NO_THROW(CellGrid(0.49_r, box));
   EXPECT_THROW(box.setPeriodic(3, 0, 1), Error);
   EXPECT_THROW(box.setPeriodic(1, 0, -1), Error);
-  EXPECT_THROW(CellGrid(0.0), Error);
+  EXPECT_THROW(CellGrid(0.0_r), Error);
 }
 
 TEST(CellGrid, FixedDomainClampsOutsideParticlesAndStillFindsAllPairs) {
   const auto x = randomPoints(1000, Vector(4, 4, 4), 17, 100);
-  CellGrid grid(0.5);
+  CellGrid grid(0.5_r);
   grid.setDomain(Vector(1, 1, 1), Vector(3, 3, 3));
   grid.build(x);
   EXPECT_EQ(grid.cellCount(), 4u * 4u * 4u);  // floor(2 / (0.5 (1 + 1e-6))) + 1 per axis
   NeighbourList list;
   list.buildWithin(x, grid);
-  EXPECT_EQ(sorted(list), bruteForce(x, x, 0.5, PeriodicBox(), true));
+  EXPECT_EQ(sorted(list), bruteForce(x, x, 0.5_r, PeriodicBox(), true));
 }
 
 TEST(PeriodicBox, SeparationIsTheMinimumImage) {
   PeriodicBox box;
   box.setPeriodic(0, 0, 10);
-  const Vector d = box.separation(Vector(0.5, 0, 0), Vector(9.5, 3, 0));
-  EXPECT_NEAR(d[0], 1.0, 1e-12);
-  EXPECT_NEAR(d[1], -3.0, 1e-12);
-  EXPECT_NEAR(box.wrap(Vector(-0.5, 7, 1))[0], 9.5, 1e-12);
-  EXPECT_NEAR(box.wrap(Vector(23, 7, 1))[0], 3.0, 1e-12);
+  const Real tolerance = 100 * std::numeric_limits<Real>::epsilon();
+  const Vector d = box.separation(Vector(0.5_r, 0, 0), Vector(9.5_r, 3, 0));
+  EXPECT_NEAR(d[0], 1.0_r, tolerance);
+  EXPECT_NEAR(d[1], -3.0_r, tolerance);
+  EXPECT_NEAR(box.wrap(Vector(-0.5_r, 7, 1))[0], 9.5_r, tolerance);
+  EXPECT_NEAR(box.wrap(Vector(23, 7, 1))[0], 3.0_r, tolerance);
   EXPECT_EQ(PeriodicBox().separation(Vector(1, 2, 3), Vector(3, 2, 1)), Vector(-2, 0, 2));
 }
 
