@@ -209,6 +209,21 @@ double estimateShellParticleCount(const TriangleMesh& wall, double spacing, int 
   return wall.area() / (spacing * spacing) * layers;
 }
 
+std::vector<bool> closerThan(const std::vector<Eigen::Vector3d>& points,
+                             const std::vector<Eigen::Vector3d>& obstacles, double radius) {
+  PointGrid grid(radius);
+  for (std::size_t i = 0; i < obstacles.size(); ++i) grid.insert(obstacles[i], static_cast<int>(i));
+  std::vector<bool> close(points.size(), false);
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    grid.forEachNear(points[i], [&](int j) {
+      if ((obstacles[static_cast<std::size_t>(j)] - points[i]).squaredNorm() < radius * radius) {
+        close[i] = true;
+      }
+    });
+  }
+  return close;
+}
+
 std::vector<SpacingStatistics> nearestNeighbourStatistics(const WallParticles& particles,
                                                           int ownerCount, double spacing) {
   // Neighbours beyond 2 dx are not searched for: such a particle reports 2 dx.

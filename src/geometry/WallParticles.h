@@ -52,6 +52,10 @@ WallParticles fillVolumeParticles(const TriangleMesh& boundary, double spacing, 
 // generating them (to refuse a spacing that would make too many).
 double estimateShellParticleCount(const TriangleMesh& wall, double spacing, int layers);
 
+// For each point, whether one of `obstacles` is closer than `radius`.
+std::vector<bool> closerThan(const std::vector<Eigen::Vector3d>& points,
+                             const std::vector<Eigen::Vector3d>& obstacles, double radius);
+
 // Nearest-neighbour distances of the particles of each owner, to particles of any owner.
 struct SpacingStatistics {
   std::size_t count = 0;
