@@ -238,4 +238,10 @@ void CellGrid::adoptCellOrder() {
   }
 }
 
+std::size_t CellGrid::memoryBytes() const {
+  return (cellOfParticle_.capacity() + cellStart_.capacity() + particlesByCell_.capacity()) *
+             sizeof(std::uint32_t) +
+         permutation_.capacity() * sizeof(std::size_t);
+}
+
 }  // namespace sphcast

@@ -113,6 +113,9 @@ class CellGrid {
   // The cell of particle i of the last build.
   std::uint32_t cellOfParticle(std::size_t i) const { return cellOfParticle_[i]; }
 
+  // Bytes the grid holds now (capacities of its arrays).
+  std::size_t memoryBytes() const;
+
   const std::vector<std::uint32_t>& cellStart() const { return cellStart_; }
   const std::vector<std::uint32_t>& particlesByCell() const { return particlesByCell_; }
   // True when particlesByCell() is the identity (the cloud is in cell order: after

@@ -10,10 +10,11 @@
 
 namespace sphcast {
 
-// For every particle i of a cloud A, the particles j of a cloud B with |x_i - x_j| < radius
-// (strictly: pairs at exactly r = h add nothing to any kernel sum or gradient, since W and dW/dr
-// vanish there), the distance taken as the minimum image on periodic axes (PeriodicBox). A is B
-// for fluid-fluid pairs (i itself left out), or another cloud, e.g. fluid A among wall B.
+// For every particle i of a cloud A, the particles j of a cloud B with |x_i - x_j| < radius,
+// the radius of B's CellGrid (normally the kernel's support radius h), the distance taken as the
+// minimum image on periodic axes (PeriodicBox). Strictly less: a pair at exactly r = h adds
+// nothing to any kernel sum or gradient, since W and dW/dr vanish there. A is B for fluid-fluid
+// pairs (i itself left out), or another cloud, e.g. fluid A among wall B.
 //
 // Layout: compressed sparse rows.
 //   offsets()   : A.size() + 1 entries (uint64), offsets()[0] = 0,
@@ -23,10 +24,27 @@ namespace sphcast {
 // pair loop reads B's fields almost sequentially. Each i owns its own range: a pair loop over i
 // under OpenMP writes only to i (gather), no atomics.
 //
-// Building is gather style too: every thread takes a contiguous block of i, writes their
-// neighbours into its own buffer in one pass, and the blocks are then copied into place after a
-// prefix sum of the counts. The result does not depend on the thread count. All buffers are
-// kept between builds (no allocation once the largest list has been seen).
+// Building is gather style too: the i are cut into contiguous blocks (8 per thread, scheduled
+// dynamically, so clustered particles balance); each block writes its neighbours into its own
+// buffer in one pass over the 3 x 3 x 3 cell stencil (rows and end cells beyond the radius
+// skipped), then the blocks are copied into place after a prefix sum of the counts. The result
+// does not depend on the thread count. All buffers are kept between builds and only grow, so a
+// rebuild every step allocates nothing once the largest list has been seen; the price is that
+// the block buffers hold a second copy of the indices (memoryBytes() counts them).
+//
+// A pair loop (gather: each i writes only to itself, so it runs under OpenMP as it is):
+//   const auto& x = cloud.positions();
+//   const std::uint64_t* offsets = list.offsets().data();
+//   const std::uint32_t* neighbours = list.neighbours().data();
+//   #pragma omp parallel for
+//   for (std::size_t i = 0; i < x.size(); ++i) {
+//     for (std::uint64_t n = offsets[i]; n < offsets[i + 1]; ++n) {
+//       const std::uint32_t j = neighbours[n];
+//       const Vector xij = periodic.separation(x[i], x[j]);  // minimum image
+//       const Real r = xij.norm();                          // 0 <= r < h
+//       rate[i] += ... kernel.gradient(xij, r) ...;
+//     }
+//   }
 class NeighbourList {
  public:
   // A == B: neighbours of each particle among the same cloud, binned in `grid` (built on exactly

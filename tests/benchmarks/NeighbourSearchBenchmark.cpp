@@ -54,6 +54,7 @@ void CellGridBuildAndReorder(benchmark::State& state) {
   state.SetItemsProcessed(state.iterations() * std::int64_t(cloud.size()));
   state.counters["particles"] = double(cloud.size());
   state.counters["cells"] = double(grid.cellCount());
+  state.counters["gridBytes/particle"] = double(grid.memoryBytes()) / double(cloud.size());
 }
 
 void NeighbourListBuild(benchmark::State& state) {

@@ -62,6 +62,16 @@ Pairs sorted(const NeighbourList& list) {
   return pairs;
 }
 
+// The points in the grid's cell order, the grid told so: the search then reads them directly.
+std::vector<Vector> inCellOrder(const std::vector<Vector>& x, CellGrid& grid) {
+  std::vector<Vector> ordered(x.size());
+  const auto& order = grid.sortPermutation();
+  for (std::size_t k = 0; k < x.size(); ++k) ordered[k] = x[order[k]];
+  grid.adoptCellOrder();
+  return ordered;
+}
+
+// Checks both searches: through the grid's index (cloud as given) and direct (cloud reordered).
 void expectWithinMatchesBruteForce(const std::vector<Vector>& x, Real radius,
                                    const PeriodicBox& box = PeriodicBox()) {
   CellGrid grid(radius, box);
@@ -70,6 +80,10 @@ void expectWithinMatchesBruteForce(const std::vector<Vector>& x, Real radius,
   list.buildWithin(x, grid);
   EXPECT_EQ(sorted(list), bruteForce(x, x, radius, box, true));
   EXPECT_EQ(list.offsets().size(), x.size() + 1);
+  const auto ordered = inCellOrder(x, grid);
+  ASSERT_TRUE(grid.inCellOrder());
+  list.buildWithin(ordered, grid);
+  EXPECT_EQ(sorted(list), bruteForce(ordered, ordered, radius, box, true));
 }
 
 void expectBetweenMatchesBruteForce(const std::vector<Vector>& a, const std::vector<Vector>& b,
@@ -79,6 +93,9 @@ void expectBetweenMatchesBruteForce(const std::vector<Vector>& a, const std::vec
   NeighbourList list;
   list.buildBetween(a, b, grid);
   EXPECT_EQ(sorted(list), bruteForce(a, b, radius, box, false));
+  const auto ordered = inCellOrder(b, grid);
+  list.buildBetween(a, ordered, grid);
+  EXPECT_EQ(sorted(list), bruteForce(a, ordered, radius, box, false));
 }
 
 TEST(NeighbourList, WithinOneCloudMatchesBruteForceIn3D) {
@@ -213,6 +230,8 @@ TEST(CellGrid, ReorderedCloudGivesTheSameNeighbourhoods) {
     EXPECT_EQ(grid.particlesByCell()[k], k);
     EXPECT_EQ(grid.cellOfParticle(k), grid.cellIndex(grid.cellCoordinates(cloud.positions()[k])));
   }
+  grid.build(cloud.positions());  // a rebuild finds the cloud still in cell order
+  EXPECT_TRUE(grid.inCellOrder());
   NeighbourList reordered;
   reordered.buildWithin(cloud.positions(), grid);
   const Pairs expected = bruteForce(x, x, 0.5_r, PeriodicBox(), true);
