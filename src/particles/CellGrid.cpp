@@ -16,6 +16,10 @@ namespace {
 // relative error of a float Real is ~1e-7).
 constexpr double cellMargin = 1.0 + 1e-6;
 
+// Below this many particles the light per-particle loops run on one thread: a parallel region
+// costs more than the loop (and much more on a machine whose cores other jobs share).
+constexpr std::size_t parallelThreshold = 32768;
+
 const char* axisName(int axis) { return axis == 0 ? "x" : axis == 1 ? "y" : "z"; }
 
 std::string formatVector(const Vector& x) {
@@ -38,8 +42,9 @@ BoundingBox scanPositions(const std::vector<Vector>& positions) {
   Real lo0 = big, lo1 = big, lo2 = big, hi0 = -big, hi1 = -big, hi2 = -big;
   std::size_t nonFinite = 0, firstNonFinite = std::numeric_limits<std::size_t>::max();
   const std::size_t count = positions.size();
-#pragma omp parallel for reduction(min : lo0, lo1, lo2, firstNonFinite) \
-    reduction(max : hi0, hi1, hi2) reduction(+ : nonFinite)
+#pragma omp parallel for if (count > parallelThreshold)                        \
+    reduction(min : lo0, lo1, lo2, firstNonFinite) reduction(max : hi0, hi1, hi2) \
+    reduction(+ : nonFinite)
   for (std::size_t i = 0; i < count; ++i) {
     const Vector& x = positions[i];
     if (!std::isfinite(x[0]) || !std::isfinite(x[1]) || !std::isfinite(x[2])) {
@@ -143,7 +148,7 @@ void CellGrid::build(const std::vector<Vector>& positions) {
   }
 
   cellOfParticle_.resize(count);
-#pragma omp parallel for
+#pragma omp parallel for if (count > parallelThreshold)
   for (std::size_t i = 0; i < count; ++i) {
     cellOfParticle_[i] = cellIndex(cellCoordinates(positions[i]));
   }
@@ -209,13 +214,13 @@ void CellGrid::countingSort() {
   for (std::size_t i = 0; i < count; ++i) ++cellStart_[cellOfParticle_[i]];
   for (std::size_t c = 1; c < cells; ++c) cellStart_[c] += cellStart_[c - 1];
   particlesByCell_.resize(count);
+  bool identity = true;  // every particle stays where it is: the cloud is in cell order
   for (std::size_t i = count; i-- > 0;) {
-    particlesByCell_[--cellStart_[cellOfParticle_[i]]] = static_cast<std::uint32_t>(i);
+    const std::uint32_t k = --cellStart_[cellOfParticle_[i]];
+    particlesByCell_[k] = static_cast<std::uint32_t>(i);
+    identity = identity && k == i;
   }
   cellStart_[cells] = static_cast<std::uint32_t>(count);
-  bool identity = true;
-#pragma omp parallel for reduction(&& : identity)
-  for (std::size_t k = 0; k < count; ++k) identity = identity && particlesByCell_[k] == k;
   inCellOrder_ = identity;
 }
 
@@ -226,16 +231,14 @@ const std::vector<std::size_t>& CellGrid::sortPermutation() {
 
 void CellGrid::adoptCellOrder() {
   const std::size_t cells = cellCount();
-  const std::size_t count = particlesByCell_.size();
-#pragma omp parallel for
-  for (std::size_t k = 0; k < count; ++k) particlesByCell_[k] = static_cast<std::uint32_t>(k);
-  inCellOrder_ = true;
-#pragma omp parallel for schedule(static, 1024)
+#pragma omp parallel for schedule(static, 1024) if (particleCount() > parallelThreshold)
   for (std::size_t c = 0; c < cells; ++c) {
     for (std::uint32_t k = cellStart_[c]; k < cellStart_[c + 1]; ++k) {
+      particlesByCell_[k] = k;
       cellOfParticle_[k] = static_cast<std::uint32_t>(c);
     }
   }
+  inCellOrder_ = true;
 }
 
 std::size_t CellGrid::memoryBytes() const {

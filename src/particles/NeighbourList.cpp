@@ -62,6 +62,9 @@ struct PairSink {
   }
 };
 
+// Below this many particles the light loops (finiteness check, copy) run on one thread.
+constexpr std::size_t parallelThreshold = 32768;
+
 // No particle of B has this index: nothing is excluded between two clouds.
 constexpr std::uint32_t noSelf = std::numeric_limits<std::uint32_t>::max();
 
@@ -158,7 +161,7 @@ SearchFunction searchFor(bool periodic, bool inCellOrder) {
 void checkFinite(const std::vector<Vector>& positions) {
   std::size_t nonFinite = 0;
   const std::size_t count = positions.size();
-#pragma omp parallel for reduction(+ : nonFinite)
+#pragma omp parallel for reduction(+ : nonFinite) if (count > parallelThreshold)
   for (std::size_t i = 0; i < count; ++i) nonFinite += positions[i].allFinite() ? 0 : 1;
   if (nonFinite == 0) return;
   std::size_t first = 0;
@@ -203,7 +206,7 @@ void NeighbourList::build(const std::vector<Vector>& positionsA,
   const SearchFunction search = searchFor(gridB.periodicBox().anyPeriodic(), gridB.inCellOrder());
   const Vector* xB = positionsB.data();
 
-#pragma omp parallel for schedule(dynamic, 1)
+#pragma omp parallel for schedule(dynamic, 1) if (blocks > 1)
   for (std::size_t b = 0; b < blocks; ++b) {
     PairSink sink{blockStorage_[b], 0};
     for (std::size_t i = blockBegin_[b]; i < blockBegin_[b + 1]; ++i) {
@@ -223,7 +226,7 @@ void NeighbourList::gatherBlocks() {
   for (std::size_t i = 0; i < count; ++i) offsets_[i + 1] = offsets_[i] + counts_[i];
   neighbours_.resize(offsets_[count]);
   const std::size_t blocks = blockBegin_.size() - 1;
-#pragma omp parallel for schedule(dynamic, 1)
+#pragma omp parallel for schedule(dynamic, 1) if (count > parallelThreshold)
   for (std::size_t b = 0; b < blocks; ++b) {
     if (blockUsed_[b] > 0) {
       std::memcpy(neighbours_.data() + offsets_[blockBegin_[b]], blockStorage_[b].data(),

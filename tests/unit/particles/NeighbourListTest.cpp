@@ -176,8 +176,9 @@ TEST(NeighbourList, KeepsCoincidentParticlesAsNeighbours) {
 TEST(NeighbourList, IsIdenticalForOneAndTwoThreads) {
   PeriodicBox box;
   box.setPeriodic(0, 0, 6);
-  const auto x = randomPoints(20000, Vector(6, 5, 4), 11, 2000);
-  CellGrid grid(0.4_r, box);
+  // above the size from which the grid's loops run in parallel too
+  const auto x = randomPoints(40000, Vector(6, 5, 4), 11, 4000);
+  CellGrid grid(0.3_r, box);
   const int threads = omp_get_max_threads();
   omp_set_num_threads(1);
   grid.build(x);
