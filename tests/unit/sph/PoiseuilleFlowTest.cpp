@@ -1,0 +1,107 @@
+// Poiseuille flow between plates (Morris, Fox & Zhu 1997, J. Comput. Phys. 136:214): the
+// transient series solution for a fluid at rest driven from t = 0 by a body force F,
+//   v(y,t) = F/(2 nu) y (L - y)
+//            - sum_n 4 F L^2/(nu pi^3 (2n+1)^3) sin((2n+1) pi y/L) exp(-(2n+1)^2 pi^2 nu t/L^2)
+// with Morris's L = 1 mm, nu = 1e-6 m^2/s, F = 2e-4 m/s^2 (v_max = 2.5e-5 m/s, Re = 0.025).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "FlowTestCases.h"
+#include "sph/WeaklyCompressibleFlow.h"
+
+namespace sphcast {
+namespace {
+
+constexpr double channelWidth = 1e-3;
+constexpr double kinematicViscosity = 1e-6;
+constexpr double bodyForce = 2e-4;
+constexpr double peakSpeed = bodyForce * channelWidth * channelWidth / (8 * kinematicViscosity);
+
+double poiseuilleSeries(double y, double t) {
+  constexpr double pi = std::numbers::pi;
+  const double L = channelWidth;
+  double v = bodyForce / (2 * kinematicViscosity) * y * (L - y);
+  for (int n = 0; n < 200; ++n) {
+    const double k = 2 * n + 1;
+    v -= 4 * bodyForce * L * L / (kinematicViscosity * pi * pi * pi * k * k * k) *
+         std::sin(k * pi * y / L) * std::exp(-k * k * pi * pi * kinematicViscosity * t / (L * L));
+  }
+  return v;
+}
+
+struct PoiseuilleError {
+  double atTenthSecond;  // largest |v - v_exact| / v_max over the particles
+  double atSteadyState;
+};
+
+PoiseuilleError runPoiseuille(int rowsAcross, const std::string& scheme,
+                               const std::string& viscousForm = "Morris") {
+  const Real dx = channelWidth / rowsAcross;
+  const int columns = 8;  // periodic in x over 8 dx > 2 h
+  const Real density = 1000;
+  auto fluid = testing::fluidBlock2D(columns, rowsAcross, dx, Vector::Zero(), density,
+                                     density * kinematicViscosity);
+  auto wall = testing::emptyWall();
+  testing::addWallCells(
+      wall, 0, columns, -3, 0, dx, Vector::Zero(), [](int, int) { return Vector(0, 1, 0); },
+      [dx](int, int row) { return (-row - Real(0.5)) * dx; });
+  testing::addWallCells(
+      wall, 0, columns, rowsAcross, rowsAcross + 3, dx, Vector::Zero(),
+      [](int, int) { return Vector(0, -1, 0); },
+      [dx, rowsAcross](int, int row) { return (row - rowsAcross + Real(0.5)) * dx; });
+
+  FlowSettings settings;
+  settings.dimension = 2;
+  settings.supportRadius = 3 * dx;
+  settings.soundSpeed = Real(100 * peakSpeed);  // Mach 0.01: density varies by 1e-4
+  settings.gravity = Vector(bodyForce, 0, 0);
+  settings.densityScheme = scheme;
+  settings.viscousForm = viscousForm;
+  settings.periodic.setPeriodic(0, 0, columns * dx);
+  WeaklyCompressibleFlow flow(settings, fluid, {&wall});
+
+  auto largestError = [&](double t) {
+    double worst = 0;
+    for (std::size_t i = 0; i < fluid.size(); ++i) {
+      const double y = fluid.positions()[i].y();
+      const double error = std::abs(fluid.vectorField("U")[i].x() - poiseuilleSeries(y, t));
+      worst = std::max(worst, error / peakSpeed);
+    }
+    return worst;
+  };
+  PoiseuilleError errors{};
+  double t = 0;
+  std::string limiter;
+  for (const double checkAt : {0.1, 1.0}) {
+    while (t < checkAt - 1e-12) {
+      const double dt = std::min(flow.stepLimits(0.25).smallest(limiter), checkAt - t);
+      flow.step(dt);
+      t += dt;
+    }
+    (checkAt == 0.1 ? errors.atTenthSecond : errors.atSteadyState) = largestError(t);
+  }
+  return errors;
+}
+
+TEST(PoiseuilleFlow, FollowsMorrisSeriesSolutionAndConverges) {
+  const auto coarse = runPoiseuille(10, "riemann");
+  const auto fine = runPoiseuille(20, "riemann");
+  const auto finer = runPoiseuille(40, "riemann");
+  std::printf("Poiseuille max |v - v_exact| / v_max at t = 0.1 s, 1 s: 10 rows %.4f %.4f, "
+              "20 rows %.4f %.4f, 40 rows %.4f %.4f\n",
+              coarse.atTenthSecond, coarse.atSteadyState, fine.atTenthSecond,
+              fine.atSteadyState, finer.atTenthSecond, finer.atSteadyState);
+  EXPECT_LT(finer.atTenthSecond, 0.02);
+  EXPECT_LT(finer.atSteadyState, 0.02);
+  EXPECT_LT(finer.atSteadyState, coarse.atSteadyState);
+}
+
+TEST(PoiseuilleFlow, StandardSchemeAgreesAtLowMach) {
+  const auto errors = runPoiseuille(20, "standard");
+  EXPECT_LT(errors.atSteadyState, 0.05);
+}
+
+}  // namespace
+}  // namespace sphcast
