@@ -104,12 +104,11 @@ struct FluidPair {
   }
 };
 
-// A wall particle k seen from fluid particle i: a mirror state, as Zhang, Hu & Adams (2017) and
-// Adami, Hu & Adams (2012) build it. Its pressure continues the fluid's hydrostatically,
-// p_k = p_i + rho_i g_n . (x_k - x_i) with g_n the wall-normal part of gravity, so a resting
-// fluid's weight is carried by the wall; its velocity mirrors the fluid's, v_k = 2 v_wall - v_i,
-// so any approach is resisted (impermeability through the Riemann solver). Its mass is
-// rho_i V_k and its viscosity mu_i.
+// A wall particle k seen from fluid particle i: a mirror state (Adami, Hu & Adams 2012, J.
+// Comput. Phys. 231:7057; with the Riemann solver as Zhang, Hu & Adams 2017). Its pressure p_k
+// is extrapolated from the fluid around it (wallPressure), and its velocity mirrors the fluid's,
+// v_k = 2 v_wall - v_i, so any approach is resisted through the interface pressure. Its mass is
+// rho_k V_k, its viscosity mu_i.
 // No-slip shear as Morris, Fox & Zhu (1997): the fluid's velocity relative to the wall is
 // extended linearly through the wall surface, v_ik = beta (v_i - v_wall), beta = 1 + d_k / d_i,
 // with d_k the wall particle's depth behind the surface and d_i the fluid particle's distance in
@@ -119,6 +118,8 @@ struct WallParticle {
   Vector normal;  // unit, out of the wall into the fluid
   Real volume;
   Real depth;     // distance of the particle centre behind the wall surface
+  Real pressure;  // extrapolated from the fluid (wallPressure)
+  Real density;   // from the pressure through the equation of state
 };
 
 template <int Dim, class Interface, class Viscosity>
@@ -126,14 +127,30 @@ inline void accumulateWallPair(const InterfaceSide& i, Real viscosityI, const Wa
                                Real halfSpacing, const Vector& xik, Real r, const Vector& gradW,
                                const FlowConstants& constants, Real& densityRate,
                                Vector& acceleration) {
-  const Vector normalGravity = constants.gravity.dot(k.normal) * k.normal;
-  const InterfaceSide mirror{i.density, i.pressure - i.density * normalGravity.dot(xik),
-                             Real(2) * k.velocity - i.velocity};
+  const InterfaceSide mirror{k.density, k.pressure, Real(2) * k.velocity - i.velocity};
   const Real fluidDistance = std::max(xik.dot(k.normal) - k.depth, halfSpacing);
   const Real beta = Real(1) + k.depth / fluidDistance;
-  FluidPair<Dim, Interface, Viscosity>::accumulate(i, mirror, i.density * k.volume, viscosityI, viscosityI,
-                                        beta * (i.velocity - k.velocity), xik, r, gradW,
-                                        constants, densityRate, acceleration);
+  FluidPair<Dim, Interface, Viscosity>::accumulate(
+      i, mirror, k.density * k.volume, viscosityI, viscosityI, beta * (i.velocity - k.velocity),
+      xik, r, gradW, constants, densityRate, acceleration);
 }
+
+// Adami et al. (2012) eq. (27), static wall: the pressure of wall particle w from its fluid
+// neighbours f, p_w = (sum p_f W_wf + g . sum rho_f (x_w - x_f) W_wf) / sum W_wf, the
+// hydrostatic continuation of the fluid's pressure into the wall; 0 without fluid neighbours.
+struct WallPressureSums {
+  Real weight = 0;
+  Real pressure = 0;
+  Vector densityMoment = Vector::Zero();
+
+  void add(Real w, Real fluidPressure, Real fluidDensity, const Vector& xwf) {
+    weight += w;
+    pressure += fluidPressure * w;
+    densityMoment += fluidDensity * w * xwf;
+  }
+  Real wallPressure(const Vector& gravity) const {
+    return weight > Real(0) ? (pressure + gravity.dot(densityMoment)) / weight : Real(0);
+  }
+};
 
 }  // namespace sphcast

@@ -52,6 +52,8 @@ WeaklyCompressibleFlow::WeaklyCompressibleFlow(FlowSettings settings, ParticleCl
     wallGrids_.back().build(wall->positions());
   }
   wallNeighbours_.resize(walls_.size());
+  fluidAroundWall_.resize(walls_.size());
+  for (const ParticleCloud* wall : walls_) wallPressure_.emplace_back(wall->size(), Real(0));
   const bool restarted = fluid_.hasVectorField("acceleration") && fluid_.hasScalarField("densityRate");
   fluid_.addScalarField("p");
   fluid_.addVectorField("acceleration");
@@ -70,6 +72,7 @@ void WeaklyCompressibleFlow::findNeighbours() {
   fluidNeighbours_.buildWithin(fluid_.positions(), fluidGrid_);
   for (std::size_t w = 0; w < walls_.size(); ++w) {
     wallNeighbours_[w].buildBetween(fluid_.positions(), walls_[w]->positions(), wallGrids_[w]);
+    fluidAroundWall_[w].buildBetween(walls_[w]->positions(), fluid_.positions(), fluidGrid_);
   }
 }
 
@@ -84,8 +87,32 @@ void WeaklyCompressibleFlow::updatePressure() {
   }
 }
 
+template <int Dim>
+void WeaklyCompressibleFlow::extrapolateWallPressure() {
+  const WendlandC2Kernel<Dim> kernel(settings_.supportRadius);
+  const PeriodicBox periodic = settings_.periodic;
+  const auto& x = fluid_.positions();
+  const auto& rho = fluid_.scalarField("rho");
+  const auto& p = fluid_.scalarField("p");
+  for (std::size_t w = 0; w < walls_.size(); ++w) {
+    const auto& wallX = walls_[w]->positions();
+    auto& wallPressure = wallPressure_[w];
+#pragma omp parallel for schedule(static)
+    for (std::size_t k = 0; k < wallX.size(); ++k) {
+      WallPressureSums sums;
+      for (const std::uint32_t f : fluidAroundWall_[w].of(k)) {
+        const Vector xkf = periodic.separation(wallX[k], x[f]);
+        sums.add(kernel.value(xkf.norm()), p[f], rho[f], xkf);
+      }
+      wallPressure[k] = sums.wallPressure(settings_.gravity);
+    }
+  }
+}
+
 template <int Dim, class Interface, class Viscosity>
 void WeaklyCompressibleFlow::computeRatesFor() {
+  extrapolateWallPressure<Dim>();
+  const LinearEquationOfState eos{settings_.soundSpeed};
   const WendlandC2Kernel<Dim> kernel(settings_.supportRadius);
   const Real spacing = static_cast<Real>(fluid_.attributes().at("spacing"));
   const FlowConstants constants{settings_.soundSpeed, settings_.gravity,
@@ -97,6 +124,7 @@ void WeaklyCompressibleFlow::computeRatesFor() {
   const auto& p = fluid_.scalarField("p");
   const auto& mass = fluid_.scalarField("mass");
   const auto& mu = fluid_.scalarField("viscosity");
+  const auto& restDensity = fluid_.scalarField("restDensity");
   auto& densityRate = fluid_.scalarField("densityRate");
   auto& acceleration = fluid_.vectorField("acceleration");
   struct WallArrays {
@@ -104,13 +132,15 @@ void WeaklyCompressibleFlow::computeRatesFor() {
     const Real* volume;
     const Vector* normal;
     const Real* depth;
+    const Real* pressure;
     const NeighbourList* neighbours;
   };
   std::vector<WallArrays> walls;
   for (std::size_t w = 0; w < walls_.size(); ++w) {
     walls.push_back({walls_[w]->positions().data(), walls_[w]->scalarField("volume").data(),
                      walls_[w]->vectorField("normal").data(),
-                     walls_[w]->scalarField("wallDistance").data(), &wallNeighbours_[w]});
+                     walls_[w]->scalarField("wallDistance").data(), wallPressure_[w].data(),
+                     &wallNeighbours_[w]});
   }
   const Real halfSpacing = Real(0.5) * spacing;
 
@@ -130,7 +160,9 @@ void WeaklyCompressibleFlow::computeRatesFor() {
       for (const std::uint32_t k : wall.neighbours->of(i)) {
         const Vector xik = periodic.separation(x[i], wall.position[k]);
         const Real r = xik.norm();
-        const WallParticle particle{Vector::Zero(), wall.normal[k], wall.volume[k], wall.depth[k]};
+        const WallParticle particle{Vector::Zero(),   wall.normal[k],   wall.volume[k],
+                                    wall.depth[k],    wall.pressure[k],
+                                    eos.density(wall.pressure[k], restDensity[i])};
         accumulateWallPair<Dim, Interface, Viscosity>(self, mu[i], particle, halfSpacing, xik, r,
                                            kernel.gradient(xik, r), constants, rate, accel);
       }

@@ -57,6 +57,8 @@ class WeaklyCompressibleFlow {
  private:
   void findNeighbours();
   void updatePressure();
+  template <int Dim>
+  void extrapolateWallPressure();
   void computeRates();
   template <int Dim>
   void computeRatesInDimension();
@@ -71,7 +73,9 @@ class WeaklyCompressibleFlow {
   CellGrid fluidGrid_;
   std::vector<CellGrid> wallGrids_;
   NeighbourList fluidNeighbours_;
-  std::vector<NeighbourList> wallNeighbours_;
+  std::vector<NeighbourList> wallNeighbours_;       // fluid particles' wall neighbours
+  std::vector<NeighbourList> fluidAroundWall_;      // wall particles' fluid neighbours
+  std::vector<std::vector<Real>> wallPressure_;     // per wall cloud, per particle
 };
 
 }  // namespace sphcast

@@ -1,0 +1,102 @@
+// A 2D water column at rest in a tank (validation.md: p = rho g (H - z), the fluid stays at rest).
+// Coarse CI version: 20 x 20 particles, t sqrt(g/H) = 20; the long run (>= 100) is a tutorial.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "FlowTestCases.h"
+#include "sph/WeaklyCompressibleFlow.h"
+
+namespace sphcast {
+namespace {
+
+struct TankResult {
+  double pressureError;   // RMS of p - rho0 g (H - y), over rho0 g H
+  double largestSpeed;    // over sqrt(g H)
+  double largestDrift;    // largest displacement, over dx
+  std::size_t escaped;    // particles outside the tank
+};
+
+TankResult runTank(const std::string& scheme, double dimensionlessTime) {
+  const int columns = 20;
+  const int rows = 20;
+  const Real dx = 0.002;
+  const Real height = rows * dx;
+  const Real width = columns * dx;
+  const Real g = 9.81;
+  const Real rho0 = 1000;
+  const Real c = 10;  // ~16 sqrt(g H): density varies by 0.4 %
+  auto fluid = testing::fluidBlock2D(columns, rows, dx, Vector::Zero(), rho0, 1e-3);
+  for (std::size_t i = 0; i < fluid.size(); ++i) {
+    // Start in hydrostatic balance: rho = rho0 (1 + g (H - y) / c^2).
+    fluid.scalarField("rho")[i] = rho0 * (1 + g * (height - fluid.positions()[i].y()) / (c * c));
+  }
+  const auto start = fluid.positions();
+  auto id = fluid.addIdField("id");
+  for (std::size_t i = 0; i < id.size(); ++i) id[i] = static_cast<std::int64_t>(i);
+  fluid.idField("id") = id;
+
+  auto wall = testing::emptyWall();
+  const int layers = 3;
+  // The normal and depth of a wall cell: towards the fluid, distance behind the nearest face
+  // (behind a corner, the distance to the corner).
+  auto outside = [=](int column, int row) {
+    const Real ox = column < 0 ? Real(column + 0.5) : (column >= columns ? Real(column - columns + 0.5) : 0);
+    const Real oy = row < 0 ? Real(row + 0.5) : 0;
+    return Vector(ox, oy, 0);
+  };
+  auto normal = [=](int column, int row) { return Vector(-outside(column, row)); };
+  auto depth = [=](int column, int row) { return outside(column, row).norm() * dx; };
+  testing::addWallCells(wall, -layers, columns + layers, -layers, 0, dx, Vector::Zero(), normal, depth);
+  testing::addWallCells(wall, -layers, 0, 0, rows + 10, dx, Vector::Zero(), normal, depth);
+  testing::addWallCells(wall, columns, columns + layers, 0, rows + 10, dx, Vector::Zero(), normal, depth);
+
+  FlowSettings settings;
+  settings.dimension = 2;
+  settings.supportRadius = 3 * dx;
+  settings.soundSpeed = c;
+  settings.gravity = Vector(0, -g, 0);
+  settings.densityScheme = scheme;
+  WeaklyCompressibleFlow flow(settings, fluid, {&wall});
+
+  const double endTime = dimensionlessTime / std::sqrt(g / height);
+  std::string limiter;
+  for (double t = 0; t < endTime;) {
+    const double dt = flow.stepLimits(0.25).smallest(limiter);
+    flow.step(dt);
+    t += dt;
+  }
+
+  TankResult result{};
+  double squares = 0;
+  for (std::size_t i = 0; i < fluid.size(); ++i) {
+    const Vector& x = fluid.positions()[i];
+    const double exact = rho0 * g * (height - x.y());
+    squares += std::pow(fluid.scalarField("p")[i] - exact, 2);
+    result.largestSpeed =
+        std::max(result.largestSpeed, double(fluid.vectorField("U")[i].norm()) / std::sqrt(g * height));
+    const auto original = static_cast<std::size_t>(fluid.idField("id")[i]);
+    result.largestDrift = std::max(result.largestDrift, double((x - start[original]).norm()) / dx);
+    if (x.x() < 0 || x.x() > width || x.y() < 0) ++result.escaped;
+  }
+  result.pressureError = std::sqrt(squares / double(fluid.size())) / (rho0 * g * height);
+  return result;
+}
+
+TEST(HydrostaticTank, RiemannSchemeKeepsTheColumnAtRestWithHydrostaticPressure) {
+  const auto result = runTank("riemann", 20);
+  std::printf("hydrostatic tank 2D, 20x20, t sqrt(g/H) = 20: pressure RMS error %.4f rho g H, "
+              "largest speed %.4f sqrt(gH), largest drift %.3f dx, %zu escaped\n",
+              result.pressureError, result.largestSpeed, result.largestDrift, result.escaped);
+  // Measured at this coarse resolution without kernel-gradient correction (not built yet): RMS
+  // pressure error 0.047 rho g H, largest speed 0.0076 sqrt(gH), largest drift 2.0 dx. With the
+  // wall pressure mirrored per pair instead of Adami's extrapolation the same run gave 0.077,
+  // 0.062 and 18 dx: the bounds below separate the two.
+  EXPECT_EQ(result.escaped, 0u);
+  EXPECT_LT(result.pressureError, 0.06);
+  EXPECT_LT(result.largestSpeed, 0.015);
+  EXPECT_LT(result.largestDrift, 3.0);
+}
+
+}  // namespace
+}  // namespace sphcast
