@@ -1,10 +1,12 @@
 #include "solver/CastingSolver.h"
 
 #include <algorithm>
+#include <filesystem>
 #include <limits>
 #include <ostream>
 
 #include "core/Error.h"
+#include "io/VtpCloud.h"
 #include "solver/Gravity.h"
 
 namespace sphcast {
@@ -12,7 +14,9 @@ namespace sphcast {
 CastingSolver::CastingSolver(const CaseFolder& caseFolder)
     : caseFolder_(caseFolder),
       time_(caseFolder),
-      motion_(readGravity(caseFolder)),
+      gravity_(readGravity(caseFolder)),
+      motion_(gravity_),
+      flowSetup_(readFlowSetup(caseFolder, gravity_)),
       writer_(caseFolder, time_.settings().purgeWrite) {
   for (const std::string& repaired : caseFolder_.recoverInterruptedWrites()) {
     info() << "Repaired interrupted write: " << repaired << std::endl;
@@ -24,17 +28,70 @@ CastingSolver::CastingSolver(const CaseFolder& caseFolder)
     throw Error("time folder " + (caseFolder_.root() / time_.startTimeName()).string() +
                 " holds no cloud (.vtp) to run");
   }
-  for (const ParticleCloud& cloud : clouds_) {
-    info() << "Cloud " << cloud.name() << ": " << cloud.size() << " particles"
-           << (cloud.hasVectorField("U") ? ", moving" : ", static (no U field)") << '\n';
-    if (time_.settings().adjustTimeStep && cloud.hasVectorField("U")) {
-      motion_.stableDeltaT(cloud, time_.settings().maxCo);  // fail now, not after writing
+  if (flowSetup_.enabled) {
+    setUpFlow();
+  } else {
+    for (const ParticleCloud& cloud : clouds_) {
+      info() << "Cloud " << cloud.name() << ": " << cloud.size() << " particles"
+             << (cloud.hasVectorField("U") ? ", moving ballistically" : ", static (no U field)")
+             << '\n';
+      if (time_.settings().adjustTimeStep && cloud.hasVectorField("U")) {
+        motion_.stableDeltaT(cloud, time_.settings().maxCo);  // fail now, not after writing
+      }
     }
   }
   info() << std::endl;
 }
 
-double CastingSolver::stableDeltaT() const {
+ParticleCloud& CastingSolver::cloudNamed(const std::string& name) {
+  for (ParticleCloud& cloud : clouds_) {
+    if (cloud.name() == name) return cloud;
+  }
+  std::string present;
+  for (const ParticleCloud& cloud : clouds_) present += " " + cloud.name();
+  throw Error("constant/physicsModels names the fluid cloud '" + name + "', but time " +
+              time_.startTimeName() + " holds only (" + present + " )");
+}
+
+void CastingSolver::setUpFlow() {
+  ParticleCloud& fluid = cloudNamed(flowSetup_.fluidCloud);
+  for (const std::string& added : prepareFluidFields(flowSetup_, fluid)) {
+    info() << "Cloud " << fluid.name() << ": initial " << added << " from constant/\n";
+  }
+  // A wall cloud is taken from the start time when it is there (setCastFields may have set its
+  // fields), else from constant/particles, where particleizeMold wrote it.
+  std::vector<const ParticleCloud*> walls;
+  for (const std::string& wallName : flowSetup_.wallClouds) {
+    const auto inTime = std::find_if(clouds_.begin(), clouds_.end(),
+                                     [&](const ParticleCloud& c) { return c.name() == wallName; });
+    if (inTime != clouds_.end()) {
+      walls.push_back(&*inTime);
+      continue;
+    }
+    const auto file = caseFolder_.constant() / "particles" / (wallName + ".vtp");
+    if (!std::filesystem::exists(file)) {
+      throw Error("wall cloud '" + wallName + "' is neither in time " + time_.startTimeName() +
+                  " nor in constant/particles (run particleizeMold)");
+    }
+    staticClouds_.push_back(readCloudVtp(file, wallName));
+  }
+  for (const ParticleCloud& wall : staticClouds_) walls.push_back(&wall);
+  flow_ = std::make_unique<WeaklyCompressibleFlow>(flowSetup_.settings, fluid, walls);
+  info() << "Flow: weakly compressible SPH, densityScheme " << flowSetup_.settings.densityScheme
+         << ", viscousForm " << flowSetup_.settings.viscousForm << ", h = "
+         << flowSetup_.settings.supportRadius << " m, c = " << flowSetup_.settings.soundSpeed
+         << " m/s\n"
+         << "    fluid " << fluid.name() << ": " << fluid.size() << " particles, "
+         << flow_->fluidPairCount() << " pairs\n";
+  for (const ParticleCloud* wall : walls) {
+    info() << "    wall " << wall->name() << ": " << wall->size() << " particles\n";
+  }
+  // Everything else stays where it is: only the fluid moves.
+}
+
+double CastingSolver::stableDeltaT(std::string& limiter) const {
+  if (flow_) return flow_->stepLimits(time_.settings().maxCo).smallest(limiter);
+  limiter = "maxCo on particle travel";
   double stable = std::numeric_limits<double>::max();
   for (const ParticleCloud& cloud : clouds_) {
     if (cloud.hasVectorField("U")) {
@@ -45,6 +102,10 @@ double CastingSolver::stableDeltaT() const {
 }
 
 void CastingSolver::evolve(double deltaT) {
+  if (flow_) {
+    flow_->step(deltaT);
+    return;
+  }
   for (ParticleCloud& cloud : clouds_) {
     if (cloud.hasVectorField("U")) motion_.step(cloud, deltaT);
   }
@@ -61,8 +122,12 @@ void CastingSolver::writeResults() {
 void CastingSolver::logStep(bool printBlock) {
   if (!printBlock) return;
   info() << "deltaT = " << time_.deltaT() << "  (" << time_.deltaTLimiter() << ")\n"
-         << "Time = " << time_.timeName() << "\n\n"
-         << clock_.timesLine() << '\n'
+         << "Time = " << time_.timeName() << "\n\n";
+  if (flow_) {
+    const auto [lowest, highest] = flow_->densityRange();
+    info() << "Density range " << lowest << " .. " << highest << " kg/m^3\n";
+  }
+  info() << clock_.timesLine() << '\n'
          << clock_.progressLine(time_.progress(), stepsTaken_) << '\n'
          << std::endl;  // flushed: a killed run's log ends at its last step
 }
@@ -76,7 +141,9 @@ void CastingSolver::run() {
   info() << "Starting time loop\n\n";
   while (time_.run()) {
     logRereadMessage();
-    time_.adjustDeltaT(stableDeltaT(), "maxCo on particle travel");
+    std::string limiter;
+    const double stable = stableDeltaT(limiter);
+    time_.adjustDeltaT(stable, limiter);
     time_.advance();
     ++stepsTaken_;
     evolve(time_.deltaT());

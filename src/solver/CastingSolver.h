@@ -1,5 +1,7 @@
 #pragma once
 
+#include <memory>
+#include <string>
 #include <vector>
 
 #include "core/CaseFolder.h"
@@ -8,11 +10,15 @@
 #include "particles/ParticleCloud.h"
 #include "solver/BallisticMotion.h"
 #include "solver/CaseWriter.h"
+#include "solver/FlowSetup.h"
+#include "sph/WeaklyCompressibleFlow.h"
 
 namespace sphcast {
 
-// The casting time loop of sphCastFoam. For now the clouds move ballistically under constant/g
-// (BallisticMotion); the SPH flow, heat and solidification models plug in as later passes.
+// The casting time loop of sphCastFoam. With a flow model in constant/physicsModels the fluid
+// cloud runs weakly compressible SPH among the wall clouds; without one the clouds move
+// ballistically under constant/g (BallisticMotion). Heat and solidification plug in as later
+// passes.
 class CastingSolver {
  public:
   // Reads and checks everything the run needs (controlDict, constant/g, the start time's
@@ -25,7 +31,9 @@ class CastingSolver {
   const std::vector<ParticleCloud>& clouds() const { return clouds_; }
 
  private:
-  double stableDeltaT() const;
+  void setUpFlow();
+  ParticleCloud& cloudNamed(const std::string& name);
+  double stableDeltaT(std::string& limiter) const;
   void evolve(double deltaT);
   void writeResults();
   void logStep(bool printBlock);
@@ -33,8 +41,12 @@ class CastingSolver {
 
   const CaseFolder& caseFolder_;
   TimeControl time_;
+  Vector gravity_;
   BallisticMotion motion_;
-  std::vector<ParticleCloud> clouds_;
+  FlowSetup flowSetup_;
+  std::vector<ParticleCloud> clouds_;         // of the time folders: read, stepped, written
+  std::vector<ParticleCloud> staticClouds_;   // of constant/particles: read only
+  std::unique_ptr<WeaklyCompressibleFlow> flow_;
   CaseWriter writer_;
   RunClock clock_;
   long stepsTaken_ = 0;

@@ -1,0 +1,39 @@
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "core/CaseFolder.h"
+#include "core/Real.h"
+#include "sph/WeaklyCompressibleFlow.h"
+
+namespace sphcast {
+
+// What constant/physicsModels, system/sphSchemes and constant/physicalProperties ask of the flow:
+//
+//   constant/physicsModels:  flow { model weaklyCompressible; fluid metal; walls (mold); }
+//                            (model none, or no flow entry: clouds move ballistically)
+//   system/sphSchemes:       densityScheme riemann;      // riemann | standard
+//                            viscousForm   Morris;       // Morris | Cleary
+//                            supportRadius 0.0045;       // h, m
+//                            soundSpeed    50;           // c of eq. (3), m/s
+//   constant/physicalProperties:  metal { density 2400; viscosity 1.28e-3; }
+//                            (rho_s in kg/m^3 and dynamic viscosity in Pa s; temperature
+//                            tables replace them with the thermal models)
+struct FlowSetup {
+  bool enabled = false;
+  std::string fluidCloud;
+  std::vector<std::string> wallClouds;
+  FlowSettings settings;
+  Real restDensity = 0;
+  Real viscosity = 0;
+};
+
+// Reads and checks the three dictionaries (errors name file, line and key).
+FlowSetup readFlowSetup(const CaseFolder& caseFolder, const Vector& gravity);
+
+// Gives the fluid cloud the fields the flow needs that the start time lacks: rho (rho_s),
+// mass (rho volume), viscosity, restDensity. Returns what it added, for the log.
+std::vector<std::string> prepareFluidFields(const FlowSetup& setup, ParticleCloud& fluid);
+
+}  // namespace sphcast
