@@ -143,8 +143,10 @@ void CellGrid::build(const std::vector<Vector>& positions) {
   }
   if (count == 0) {
     fitAxes(Vector::Zero(), Vector::Zero());
+    imagesByCell_ = imagesByCell(origin_, origin_);
   } else {
     fitAxes(box.lower, box.upper);
+    imagesByCell_ = imagesByCell(box.lower, box.upper);
   }
 
   cellOfParticle_.resize(count);
@@ -182,6 +184,21 @@ void CellGrid::fitAxes(const Vector& boxLower, const Vector& boxUpper) {
     cellSize_[a] = Real(edge);
     inverseCellSize_[a] = Real(1.0 / edge);
   }
+}
+
+bool CellGrid::imagesByCell(const Vector& lower, const Vector& upper) const {
+  for (int a = 0; a < 3; ++a) {
+    if (!periodic_.isPeriodic(a)) continue;
+    if (cellCounts_[a] < 3) return false;  // with 2 cells, the cell before is the cell after
+    // (x - origin) / edge is monotone in x, as cellCoordinates evaluates it: the box's corners
+    // bound every point's unwrapped cell
+    const double first =
+        std::floor((double(lower[a]) - double(origin_[a])) * double(inverseCellSize_[a]));
+    const double last =
+        std::floor((double(upper[a]) - double(origin_[a])) * double(inverseCellSize_[a]));
+    if (!(first >= 0.0 && last <= double(cellCounts_[a]) - 1.0)) return false;
+  }
+  return true;
 }
 
 std::array<std::uint32_t, 3> CellGrid::cellCoordinates(const Vector& x) const {

@@ -8,25 +8,33 @@
 #include <cstring>
 #include <limits>
 #include <string>
+#include <utility>
 
 #include "core/Error.h"
 
 namespace sphcast {
 namespace {
 
-// A cell next to (or at) x_i along one axis, and the gap between x_i and that cell along the
-// axis, squared.
+// A cell next to (or at) x_i along one axis, the gap between x_i and that cell along the axis,
+// squared, and the periodic image of the cell seen from x_i: period * k with k = -1 for the cell
+// before cell 0 (cell n - 1), +1 for the cell after cell n - 1 (cell 0), 0 otherwise.
 struct AxisCell {
   std::uint32_t cell;
   double gapSquared;
+  Real imageShift = 0;
 };
+
+// How a search takes the periodic image of a candidate: none (no periodic axis), per candidate
+// (PeriodicBox::separation), or per run of cells (the image shift of the stencil cell, the same
+// value separation() would subtract for every pair closer than the radius; see imagesByCell).
+enum class Images { none, perCandidate, perCell };
 
 // The cells within one step of cell c along an axis of n cells, in increasing order (so that a
 // row's cells are visited in memory order): clipped at the ends of a non-periodic axis, wrapped
 // and never listed twice (n >= 2) on a periodic one. u is x_i's fraction in its cell, edge the
 // cell edge.
 int neighbourCells(std::uint32_t c, std::uint32_t n, bool periodic, double u, double edge,
-                   AxisCell cells[3]) {
+                   Real period, AxisCell cells[3]) {
   const double below = u * edge * u * edge, above = (1 - u) * edge * (1 - u) * edge;
   int count = 0;
   if (!periodic) {
@@ -41,9 +49,10 @@ int neighbourCells(std::uint32_t c, std::uint32_t n, bool periodic, double u, do
     cells[1] = c == 0 ? other : AxisCell{1, 0.0};
     return 2;
   }
-  cells[0] = {c == 0 ? n - 1 : c - 1, below};
-  cells[1] = {c, 0.0};
-  cells[2] = {c + 1 == n ? 0 : c + 1, above};
+  // period * (+-1) as separation() forms it, so the shifted difference is bit for bit its own
+  cells[0] = {c == 0 ? n - 1 : c - 1, below, c == 0 ? period * Real(-1) : Real(0)};
+  cells[1] = {c, 0.0, Real(0)};
+  cells[2] = {c + 1 == n ? 0 : c + 1, above, c + 1 == n ? period * Real(1) : Real(0)};
   if (c == 0) std::rotate(cells, cells + 1, cells + 3);      // 0, 1, n - 1
   if (c + 1 == n) std::rotate(cells, cells + 2, cells + 3);  // 0, n - 2, n - 1
   return 3;
@@ -68,12 +77,20 @@ constexpr std::size_t parallelThreshold = 32768;
 // No particle of B has this index: nothing is excluded between two clouds.
 constexpr std::uint32_t noSelf = std::numeric_limits<std::uint32_t>::max();
 
-// |x_i - x_j|^2, the minimum image when Periodic; written out on scalars so that x_i stays in
-// registers in the candidate loop.
-template <bool Periodic>
-inline Real squaredDistance(const Vector& xi, const Vector& xj, const PeriodicBox& box) {
-  if constexpr (Periodic) {
-    return box.separation(xi, xj).squaredNorm();
+// |x_i - x_j|^2, the minimum image unless Images::none (with Images::perCell the image shift
+// of the candidate's cell); written out on scalars so that x_i stays in registers in the
+// candidate loop.
+template <Images Image>
+inline Real squaredDistance(const Vector& xi, const Vector& xj, const PeriodicBox& box,
+                            const std::array<Real, 3>& shift) {
+  if constexpr (Image == Images::perCell) {
+    const Real dx = (xi[0] - xj[0]) - shift[0], dy = (xi[1] - xj[1]) - shift[1],
+               dz = (xi[2] - xj[2]) - shift[2];
+    return dx * dx + dy * dy + dz * dz;
+  } else if constexpr (Image == Images::perCandidate) {
+    const Real dx = box.minimumImage(xi[0] - xj[0], 0), dy = box.minimumImage(xi[1] - xj[1], 1),
+               dz = box.minimumImage(xi[2] - xj[2], 2);
+    return dx * dx + dy * dy + dz * dz;
   } else {
     const Real dx = xi[0] - xj[0], dy = xi[1] - xj[1], dz = xi[2] - xj[2];
     return dx * dx + dy * dy + dz * dz;
@@ -93,14 +110,14 @@ void removeSelf(std::uint32_t self, std::uint32_t* first, PairSink& sink) {
   --sink.used;
 }
 
-// Appends the particles j of B with |x_i - x_j| < radius (minimum image when Periodic) to the
-// sink. The stencil of 3 x 3 x 3 cells is visited row by row (y, z fixed); a row whose gap to
+// Appends the particles j of B with |x_i - x_j| < radius (the minimum image on periodic axes,
+// taken as Image says) to the sink. The stencil of 3 x 3 x 3 cells is visited row by row (y, z fixed); a row whose gap to
 // x_i already reaches the radius is skipped, and along x only the cells within the remaining
 // reach sqrt(h^2 - gy^2 - gz^2) are scanned. Consecutive cells of a row are contiguous in the
 // grid's cell order, so each run is one range of particlesByCell (of B's particles themselves
 // when InCellOrder). Every candidate is stored and the end advanced only for a neighbour, which
 // keeps the loop free of unpredictable branches. Returns the count.
-template <bool Periodic, bool InCellOrder>
+template <Images Image, bool InCellOrder>
 std::uint32_t appendNeighbours(const Vector xi, std::uint32_t self, const Vector* positionsB,
                                const CellGrid& grid, PairSink& sink) {
   const PeriodicBox& box = grid.periodicBox();
@@ -114,7 +131,7 @@ std::uint32_t appendNeighbours(const Vector xi, std::uint32_t self, const Vector
   std::array<int, 3> cellCount;
   for (int a = 0; a < 3; ++a) {
     cellCount[a] = neighbourCells(home[a], n[a], box.isPeriodic(a), fraction[a],
-                                  double(grid.cellSize()[a]), cells[a].data());
+                                  double(grid.cellSize()[a]), box.period(a), cells[a].data());
   }
   const std::uint32_t* cellStart = grid.cellStart().data();
   const std::uint32_t* byCell = grid.particlesByCell().data();
@@ -127,9 +144,12 @@ std::uint32_t appendNeighbours(const Vector xi, std::uint32_t self, const Vector
       for (int x = 0; x < cellCount[0]; ++x) {
         if (cells[0][x].gapSquared >= reachX) continue;
         const std::uint32_t first = cells[0][x].cell;
+        const std::array<Real, 3> shift{cells[0][x].imageShift, cells[1][y].imageShift,
+                                        cells[2][z].imageShift};
         while (x + 1 < cellCount[0] && cells[0][x + 1].gapSquared < reachX &&
-               cells[0][x + 1].cell == cells[0][x].cell + 1) {
-          ++x;  // extend the run of consecutive cells
+               cells[0][x + 1].cell == cells[0][x].cell + 1 &&
+               cells[0][x + 1].imageShift == shift[0]) {
+          ++x;  // extend the run of consecutive cells (of one periodic image)
         }
         const std::uint32_t begin = cellStart[row + first];
         const std::uint32_t end = cellStart[row + cells[0][x].cell + 1];
@@ -138,7 +158,7 @@ std::uint32_t appendNeighbours(const Vector xi, std::uint32_t self, const Vector
         for (std::uint32_t k = begin; k < end; ++k) {
           const std::uint32_t j = InCellOrder ? k : byCell[k];
           out[used] = j;
-          used += squaredDistance<Periodic>(xi, positionsB[j], box) < radiusSquared;
+          used += squaredDistance<Image>(xi, positionsB[j], box, shift) < radiusSquared;
         }
         sink.used = used;
       }
@@ -151,11 +171,30 @@ std::uint32_t appendNeighbours(const Vector xi, std::uint32_t self, const Vector
 using SearchFunction = std::uint32_t (*)(Vector, std::uint32_t, const Vector*, const CellGrid&,
                                          PairSink&);
 
-SearchFunction searchFor(bool periodic, bool inCellOrder) {
-  if (periodic) {
-    return inCellOrder ? appendNeighbours<true, true> : appendNeighbours<true, false>;
+template <Images Image>
+SearchFunction searchFor(bool inCellOrder) {
+  return inCellOrder ? appendNeighbours<Image, true> : appendNeighbours<Image, false>;
+}
+
+SearchFunction searchFor(bool periodic, bool imagesByCell, bool inCellOrder) {
+  if (!periodic) return searchFor<Images::none>(inCellOrder);
+  return imagesByCell ? searchFor<Images::perCell>(inCellOrder)
+                      : searchFor<Images::perCandidate>(inCellOrder);
+}
+
+// The bounding box of the query points (all finite).
+std::pair<Vector, Vector> boundingBox(const std::vector<Vector>& positions) {
+  constexpr Real big = std::numeric_limits<Real>::max();
+  Real lo0 = big, lo1 = big, lo2 = big, hi0 = -big, hi1 = -big, hi2 = -big;
+  const std::size_t count = positions.size();
+#pragma omp parallel for if (count > parallelThreshold) reduction(min : lo0, lo1, lo2) \
+    reduction(max : hi0, hi1, hi2)
+  for (std::size_t i = 0; i < count; ++i) {
+    const Vector& x = positions[i];
+    lo0 = std::min(lo0, x[0]), lo1 = std::min(lo1, x[1]), lo2 = std::min(lo2, x[2]);
+    hi0 = std::max(hi0, x[0]), hi1 = std::max(hi1, x[1]), hi2 = std::max(hi2, x[2]);
   }
-  return inCellOrder ? appendNeighbours<false, true> : appendNeighbours<false, false>;
+  return {Vector(lo0, lo1, lo2), Vector(hi0, hi1, hi2)};
 }
 
 void checkFinite(const std::vector<Vector>& positions) {
@@ -202,8 +241,14 @@ void NeighbourList::build(const std::vector<Vector>& positionsA,
   blockBegin_.resize(blocks + 1);
   for (std::size_t b = 0; b <= blocks; ++b) blockBegin_[b] = count * b / blocks;
   counts_.resize(count);
-  // one search per pair of (periodic?, B in cell order?), chosen once, not per pair
-  const SearchFunction search = searchFor(gridB.periodicBox().anyPeriodic(), gridB.inCellOrder());
+  // one search per (periodic images how?, B in cell order?), chosen once, not per pair
+  const bool periodic = gridB.periodicBox().anyPeriodic();
+  bool imagesByCell = periodic && gridB.imagesByCell();
+  if (imagesByCell && !sameCloud && count > 0) {
+    const auto [lower, upper] = boundingBox(positionsA);
+    imagesByCell = gridB.imagesByCell(lower, upper);
+  }
+  const SearchFunction search = searchFor(periodic, imagesByCell, gridB.inCellOrder());
   const Vector* xB = positionsB.data();
 
 #pragma omp parallel for schedule(dynamic, 1) if (blocks > 1)
