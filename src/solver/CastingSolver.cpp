@@ -77,6 +77,9 @@ void CastingSolver::setUpFlow() {
   }
   for (const ParticleCloud& wall : staticClouds_) walls.push_back(&wall);
   flow_ = std::make_unique<WeaklyCompressibleFlow>(flowSetup_.settings, fluid, walls);
+  fluid_ = &fluid;
+  lastGoodFluid_ = std::make_unique<ParticleCloud>(fluid);
+  domain_ = walls.empty() ? defaultDomain({&fluid}) : defaultDomain(walls);
   info() << "Flow: weakly compressible SPH, densityScheme " << flowSetup_.settings.densityScheme
          << ", viscousForm " << flowSetup_.settings.viscousForm << ", h = "
          << flowSetup_.settings.supportRadius << " m, c = " << flowSetup_.settings.soundSpeed
@@ -86,6 +89,8 @@ void CastingSolver::setUpFlow() {
   for (const ParticleCloud* wall : walls) {
     info() << "    wall " << wall->name() << ": " << wall->size() << " particles\n";
   }
+  info() << "    domain (" << domain_.lower.transpose() << ") (" << domain_.upper.transpose()
+         << "): a particle outside it, or not finite, stops the run\n";
   // Everything else stays where it is: only the fluid moves.
 }
 
@@ -137,6 +142,20 @@ void CastingSolver::logRereadMessage() {
   if (!message.empty()) info() << message << "\n\n";
 }
 
+void CastingSolver::stopIfParticlesWentBad(const TimeState& before) {
+  const ParticleCheck check = checkParticles(*fluid_, domain_);
+  if (check.good()) return;
+  const std::string what = check.describe(*fluid_, domain_);
+  *fluid_ = *lastGoodFluid_;
+  std::vector<const ParticleCloud*> written;
+  for (const ParticleCloud& cloud : clouds_) written.push_back(&cloud);
+  writer_.write(before, written);
+  throw Error("at time " + time_.timeName() + " (step " + std::to_string(time_.timeIndex()) +
+              "): " + what + ". The last good state, time " + before.name +
+              ", is written; restart from it with a smaller maxCo or deltaT, or look for a "
+              "gap in the walls there.");
+}
+
 void CastingSolver::run() {
   info() << "Starting time loop\n\n";
   while (time_.run()) {
@@ -144,9 +163,12 @@ void CastingSolver::run() {
     std::string limiter;
     const double stable = stableDeltaT(limiter);
     time_.adjustDeltaT(stable, limiter);
+    const TimeState before = time_.state();
+    if (flow_) *lastGoodFluid_ = *fluid_;  // reuses its storage: no allocation per step
     time_.advance();
     ++stepsTaken_;
     evolve(time_.deltaT());
+    if (flow_) stopIfParticlesWentBad(before);
     const bool printBlock = stepsTaken_ % time_.settings().logInterval == 0 || time_.writeTime();
     logStep(printBlock);
     if (time_.writeTime()) writeResults();

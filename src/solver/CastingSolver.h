@@ -11,6 +11,7 @@
 #include "solver/BallisticMotion.h"
 #include "solver/CaseWriter.h"
 #include "solver/FlowSetup.h"
+#include "solver/ParticleCheck.h"
 #include "sph/WeaklyCompressibleFlow.h"
 
 namespace sphcast {
@@ -38,6 +39,7 @@ class CastingSolver {
   void writeResults();
   void logStep(bool printBlock);
   void logRereadMessage();
+  void stopIfParticlesWentBad(const TimeState& before);
 
   const CaseFolder& caseFolder_;
   TimeControl time_;
@@ -47,6 +49,9 @@ class CastingSolver {
   std::vector<ParticleCloud> clouds_;         // of the time folders: read, stepped, written
   std::vector<ParticleCloud> staticClouds_;   // of constant/particles: read only
   std::unique_ptr<WeaklyCompressibleFlow> flow_;
+  ParticleCloud* fluid_ = nullptr;
+  Domain domain_;
+  std::unique_ptr<ParticleCloud> lastGoodFluid_;  // the fluid before the step being taken
   CaseWriter writer_;
   RunClock clock_;
   long stepsTaken_ = 0;
