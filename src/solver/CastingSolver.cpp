@@ -89,7 +89,9 @@ void CastingSolver::setUpFlow() {
   for (const ParticleCloud* wall : walls) {
     info() << "    wall " << wall->name() << ": " << wall->size() << " particles\n";
   }
-  info() << "    domain (" << domain_.lower.transpose() << ") (" << domain_.upper.transpose()
+  const Eigen::IOFormat plain(Eigen::StreamPrecision, Eigen::DontAlignCols, " ", " ");
+  info() << "    domain (" << domain_.lower.transpose().format(plain) << ") ("
+         << domain_.upper.transpose().format(plain)
          << "): a particle outside it, or not finite, stops the run\n";
   // Everything else stays where it is: only the fluid moves.
 }

@@ -63,13 +63,15 @@ ParticleCheck checkParticles(const ParticleCloud& cloud, const Domain& domain) {
 }
 
 std::string ParticleCheck::describe(const ParticleCloud& cloud, const Domain& domain) const {
+  const Eigen::IOFormat plain(Eigen::StreamPrecision, Eigen::DontAlignCols, " ", " ");
   std::ostringstream text;
   text.precision(6);
   text << outside << " particle(s) of cloud '" << cloud.name() << "' left the domain ("
-       << domain.lower.transpose() << ") (" << domain.upper.transpose() << "), " << nonFinite
+       << domain.lower.transpose().format(plain) << ") ("
+       << domain.upper.transpose().format(plain) << "), " << nonFinite
        << " went non-finite; the first, particle " << first;
   if (cloud.hasIdField("id") && first < cloud.size()) text << " (id " << cloud.idField("id")[first] << ")";
-  text << ", at (" << firstPosition.transpose() << ")";
+  text << ", at (" << firstPosition.transpose().format(plain) << ")";
   return text.str();
 }
 
