@@ -13,12 +13,13 @@ namespace sphcast {
 
 CastingSolver::CastingSolver(const CaseFolder& caseFolder)
     : caseFolder_(caseFolder),
+      repairedWrites_(caseFolder.recoverInterruptedWrites()),
       time_(caseFolder),
       gravity_(readGravity(caseFolder)),
       motion_(gravity_),
       flowSetup_(readFlowSetup(caseFolder, gravity_)),
       writer_(caseFolder, time_.settings().purgeWrite) {
-  for (const std::string& repaired : caseFolder_.recoverInterruptedWrites()) {
+  for (const std::string& repaired : repairedWrites_) {
     info() << "Repaired interrupted write: " << repaired << std::endl;
   }
   info() << "Starting from time " << time_.startTimeName() << " (index " << time_.timeIndex()

@@ -42,6 +42,9 @@ class CastingSolver {
   void stopIfParticlesWentBad(const TimeState& before);
 
   const CaseFolder& caseFolder_;
+  // Repaired before the start time is chosen: a time folder set aside by a killed write must
+  // be back in place when latestTime is looked for.
+  std::vector<std::string> repairedWrites_;
   TimeControl time_;
   Vector gravity_;
   BallisticMotion motion_;
