@@ -111,12 +111,13 @@ void removeSelf(std::uint32_t self, std::uint32_t* first, PairSink& sink) {
 }
 
 // Appends the particles j of B with |x_i - x_j| < radius (the minimum image on periodic axes,
-// taken as Image says) to the sink. The stencil of 3 x 3 x 3 cells is visited row by row (y, z fixed); a row whose gap to
-// x_i already reaches the radius is skipped, and along x only the cells within the remaining
-// reach sqrt(h^2 - gy^2 - gz^2) are scanned. Consecutive cells of a row are contiguous in the
-// grid's cell order, so each run is one range of particlesByCell (of B's particles themselves
-// when InCellOrder). Every candidate is stored and the end advanced only for a neighbour, which
-// keeps the loop free of unpredictable branches. Returns the count.
+// taken as Image says) to the sink. The stencil of 3 x 3 x 3 cells is visited row by row (y, z
+// fixed); a row whose gap to x_i already reaches the radius is skipped, and along x only the
+// cells within the remaining reach sqrt(h^2 - gy^2 - gz^2) are scanned. Consecutive cells of a
+// row (of one periodic image) are contiguous in the grid's cell order, so each run is one range
+// of particlesByCell (of B's particles themselves when InCellOrder). Every candidate is stored
+// and the end advanced only for a neighbour, which keeps the loop free of unpredictable
+// branches. Returns the count.
 template <Images Image, bool InCellOrder>
 std::uint32_t appendNeighbours(const Vector xi, std::uint32_t self, const Vector* positionsB,
                                const CellGrid& grid, PairSink& sink) {
@@ -155,10 +156,18 @@ std::uint32_t appendNeighbours(const Vector xi, std::uint32_t self, const Vector
         const std::uint32_t end = cellStart[row + cells[0][x].cell + 1];
         std::uint32_t* out = sink.roomFor(end - begin);
         std::size_t used = sink.used;
-        for (std::uint32_t k = begin; k < end; ++k) {
-          const std::uint32_t j = InCellOrder ? k : byCell[k];
-          out[used] = j;
-          used += squaredDistance<Image>(xi, positionsB[j], box, shift) < radiusSquared;
+        auto scan = [&]<Images RunImage>() {
+          for (std::uint32_t k = begin; k < end; ++k) {
+            const std::uint32_t j = InCellOrder ? k : byCell[k];
+            out[used] = j;
+            used += squaredDistance<RunImage>(xi, positionsB[j], box, shift) < radiusSquared;
+          }
+        };
+        // most runs of a periodic grid are not across a boundary: no shift to subtract there
+        if (Image == Images::perCell && shift[0] == 0 && shift[1] == 0 && shift[2] == 0) {
+          scan.template operator()<Images::none>();
+        } else {
+          scan.template operator()<Image>();
         }
         sink.used = used;
       }
