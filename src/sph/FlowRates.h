@@ -91,11 +91,13 @@ struct FluidPair {
                          Real viscosityI, Real viscosityJ, const Vector& shearVelocity,
                          const Vector& xij, Real r, const Vector& gradW,
                          const FlowConstants& constants, Real& densityRate, Vector& acceleration) {
-    const Vector towardsJ = r > Real(0) ? Vector(-xij / r) : Vector::Zero();
+    // -e_ij = -x_ij / r, one division for the three components
+    const Vector towardsJ = r > Real(0) ? Vector((Real(-1) / r) * xij) : Vector::Zero();
     const InterfaceState star = Interface{}(i, j, towardsJ, constants.soundSpeed);
-    densityRate +=
-        Real(2) * i.density * (massJ / j.density) * (i.velocity - star.velocity).dot(gradW);
     const Real inverseDensities = Real(1) / (i.density * j.density);
+    // m_j / rho_j = m_j rho_i / (rho_i rho_j): the division is shared with the momentum terms
+    const Real volumeJ = massJ * i.density * inverseDensities;
+    densityRate += Real(2) * i.density * volumeJ * (i.velocity - star.velocity).dot(gradW);
     acceleration -= Real(2) * massJ * star.pressure * inverseDensities * gradW;
     const Real harmonicViscosity = Real(2) * viscosityI * viscosityJ / (viscosityI + viscosityJ);
     acceleration += Viscosity::template acceleration<Dim>(

@@ -37,6 +37,8 @@ struct ArithmeticMeanInterface {
 //   P* = P_mean + beta rho_mean c (U_L - U_R) / 2,   beta = min(eta max(U_L - U_R, 0) / c, 1)
 // so pressure dissipation acts only where the pair compresses, in proportion to how fast, and
 // the tangential velocity is the plain mean. eta = 3 as in Zhang et al.
+// Evaluated with one division per pair: beta rho_mean c = rho_mean min(eta max(U_L - U_R, 0), c)
+// (c cancels), and v* = v_mean + (U* - U_mean) e = v_mean + (P_L - P_R) / (2 rho_mean c) e.
 struct AcousticRiemannInterface {
   static constexpr const char* name = "riemann";
   static constexpr Real limiterSlope = 3;
@@ -46,18 +48,17 @@ struct AcousticRiemannInterface {
     const Real uLeft = left.velocity.dot(towardsRight);
     const Real uRight = right.velocity.dot(towardsRight);
     const Real meanDensity = Real(0.5) * (left.density + right.density);
-    const Real impedance = meanDensity * soundSpeed;
     const Real compression = uLeft - uRight;  // > 0 when the pair closes in
-    const Real limiter =
-        std::min(limiterSlope * std::max(compression, Real(0)) / soundSpeed, Real(1));
-    const Real pressure = Real(0.5) * (left.pressure + right.pressure) +
-                          Real(0.5) * limiter * impedance * compression;
-    const Real normalVelocity =
-        Real(0.5) * (uLeft + uRight) + Real(0.5) * (left.pressure - right.pressure) / impedance;
+    // beta rho_mean c, with beta = min(eta max(U_L - U_R, 0) / c, 1)
+    const Real limitedImpedance =
+        meanDensity * std::min(limiterSlope * std::max(compression, Real(0)), soundSpeed);
+    const Real pressure =
+        Real(0.5) * (left.pressure + right.pressure) + Real(0.5) * limitedImpedance * compression;
+    // U* - U_mean
+    const Real normalVelocityJump =
+        Real(0.5) * (left.pressure - right.pressure) / (meanDensity * soundSpeed);
     const Vector meanVelocity = Real(0.5) * (left.velocity + right.velocity);
-    const Vector velocity =
-        meanVelocity + (normalVelocity - Real(0.5) * (uLeft + uRight)) * towardsRight;
-    return {pressure, velocity};
+    return {pressure, meanVelocity + normalVelocityJump * towardsRight};
   }
 };
 
