@@ -162,10 +162,24 @@ void WeaklyCompressibleFlow::computeRatesFor() {
   // periodic, chosen once per pass (with no periodic axis separation() is x_i - x_j).
   // The fluid neighbours of i are taken in chunks: first the geometry of every pair of the
   // chunk (x_ij, r, dW/dr / r), a loop whose pairs do not depend on each other, so the square
-  // roots and kernel polynomials of many pairs are in flight at once (-45 % per pair against
-  // one pair at a time); then the physics, pair by pair in list order. The values are those of
-  // kernel.gradient(xij, r), bit for bit.
+  // roots and kernel polynomials of many pairs are in flight at once (measured: a step 11 %
+  // faster than one pair at a time); then the physics, pair by pair in list order. The values
+  // are those of kernel.gradient(xij, r), bit for bit.
   constexpr std::size_t chunk = 64;
+  // A fluid particle at least h inside every periodic face, of a fluid whose particles all lie
+  // in the periodic box (the grid checked it: imagesByCell), has no neighbour across a face:
+  // for each of its neighbours |x_i - x_j| < h < period / 2, where separation() subtracts
+  // nothing. Its pairs take the plain difference, chosen once per particle.
+  const bool inBox = periodic.anyPeriodic() && fluidGrid_.imagesByCell();
+  Vector interiorLower = Vector::Constant(-std::numeric_limits<Real>::max());
+  Vector interiorUpper = Vector::Constant(std::numeric_limits<Real>::max());
+  for (int a = 0; a < 3; ++a) {
+    if (!periodic.isPeriodic(a)) continue;
+    const Real margin = settings_.supportRadius * Real(1.000001);  // round-off in x_i +- h
+    interiorLower[a] = periodic.lower(a) + margin;
+    interiorUpper[a] = periodic.lower(a) + periodic.period(a) - margin;
+  }
+  auto plainDifference = [](const Vector& a, const Vector& b) { return Vector(a - b); };
   auto ratesWith = [&](auto separation) {
 #pragma omp parallel for schedule(static)
     for (std::size_t i = 0; i < x.size(); ++i) {
@@ -175,16 +189,25 @@ void WeaklyCompressibleFlow::computeRatesFor() {
       const InterfaceSide self{rho[i], p[i], vi};
       Real rate = 0;
       Vector accel = gravity;
+      const bool interior = inBox && (xi.array() >= interiorLower.array()).all() &&
+                            (xi.array() <= interiorUpper.array()).all();
       Real xijX[chunk], xijY[chunk], xijZ[chunk], distance[chunk], gradientFactor[chunk];
       for (std::uint64_t first = fluidOffsets[i]; first < fluidOffsets[i + 1]; first += chunk) {
         const std::size_t pairs = std::min<std::uint64_t>(chunk, fluidOffsets[i + 1] - first);
         const std::uint32_t* neighbourJ = fluidNeighbours + first;
-        for (std::size_t n = 0; n < pairs; ++n) {
-          const Vector xij = separation(xi, x[neighbourJ[n]]);
-          const Real r = xij.norm();
-          xijX[n] = xij[0], xijY[n] = xij[1], xijZ[n] = xij[2];
-          distance[n] = r;
-          gradientFactor[n] = kernel.derivativeOverDistance(r);  // grad W = this x_ij
+        auto geometryWith = [&](auto pairSeparation) {
+          for (std::size_t n = 0; n < pairs; ++n) {
+            const Vector xij = pairSeparation(xi, x[neighbourJ[n]]);
+            const Real r = xij.norm();
+            xijX[n] = xij[0], xijY[n] = xij[1], xijZ[n] = xij[2];
+            distance[n] = r;
+            gradientFactor[n] = kernel.derivativeOverDistance(r);  // grad W = this x_ij
+          }
+        };
+        if (interior) {
+          geometryWith(plainDifference);
+        } else {
+          geometryWith(separation);
         }
         for (std::size_t n = 0; n < pairs; ++n) {
           const std::uint32_t j = neighbourJ[n];
@@ -213,7 +236,7 @@ void WeaklyCompressibleFlow::computeRatesFor() {
   if (periodic.anyPeriodic()) {
     ratesWith([periodic](const Vector& a, const Vector& b) { return periodic.separation(a, b); });
   } else {
-    ratesWith([](const Vector& a, const Vector& b) { return Vector(a - b); });
+    ratesWith(plainDifference);
   }
 }
 
