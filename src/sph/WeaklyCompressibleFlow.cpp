@@ -67,8 +67,12 @@ WeaklyCompressibleFlow::WeaklyCompressibleFlow(FlowSettings settings, ParticleCl
 
 void WeaklyCompressibleFlow::findNeighbours() {
   fluidGrid_.build(fluid_.positions());
-  fluid_.reorder(fluidGrid_.sortPermutation());
-  fluidGrid_.adoptCellOrder();
+  // a cloud still in cell order (no particle changed cell) needs no reorder, which would copy
+  // every field through a fresh allocation
+  if (!fluidGrid_.inCellOrder()) {
+    fluid_.reorder(fluidGrid_.sortPermutation());
+    fluidGrid_.adoptCellOrder();
+  }
   fluidNeighbours_.buildWithin(fluid_.positions(), fluidGrid_);
   for (std::size_t w = 0; w < walls_.size(); ++w) {
     wallNeighbours_[w].buildBetween(fluid_.positions(), walls_[w]->positions(), wallGrids_[w]);
