@@ -4,6 +4,7 @@
 //    carries (U, rho, p, m, T), renumber the grid: particles/s.
 //  - NeighbourListBuild: the CSR list within the cloud: particles/s and pairs/s, with the
 //    neighbours per particle and the list's bytes per particle as counters.
+//  - NeighbourListBuildPeriodic: the same, the cube periodic on all three axes (minimum image).
 #include <benchmark/benchmark.h>
 
 #include <cmath>
@@ -57,9 +58,14 @@ void CellGridBuildAndReorder(benchmark::State& state) {
   state.counters["gridBytes/particle"] = double(grid.memoryBytes()) / double(cloud.size());
 }
 
-void NeighbourListBuild(benchmark::State& state) {
+void listBuild(benchmark::State& state, bool periodic) {
   auto cloud = latticeCloud(state.range(0));
-  sphcast::CellGrid grid(Real(state.range(1)));
+  sphcast::PeriodicBox box;
+  if (periodic) {  // the lattice's cells [x - 1/2, x + 1/2) tile the box
+    const Real side = std::round(std::cbrt(Real(cloud.size())));
+    for (int axis = 0; axis < 3; ++axis) box.setPeriodic(axis, Real(-0.5), side);
+  }
+  sphcast::CellGrid grid(Real(state.range(1)), box);
   grid.build(cloud.positions());
   cloud.reorder(grid.sortPermutation());
   grid.adoptCellOrder();
@@ -80,6 +86,9 @@ void NeighbourListBuild(benchmark::State& state) {
   state.counters["CSRBytes/particle"] = (double(list.offsets().size()) * 8 + pairs * 4) / particles;
 }
 
+void NeighbourListBuild(benchmark::State& state) { listBuild(state, false); }
+void NeighbourListBuildPeriodic(benchmark::State& state) { listBuild(state, true); }
+
 // Args: particles, h/dx
 void latticeSizes(benchmark::internal::Benchmark* benchmark) {
   for (const std::int64_t hOverDx : {2, 3}) {
@@ -92,5 +101,6 @@ void latticeSizes(benchmark::internal::Benchmark* benchmark) {
 
 BENCHMARK(CellGridBuildAndReorder)->Apply(latticeSizes);
 BENCHMARK(NeighbourListBuild)->Apply(latticeSizes);
+BENCHMARK(NeighbourListBuildPeriodic)->Apply(latticeSizes);
 
 }  // namespace
