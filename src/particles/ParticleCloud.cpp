@@ -9,11 +9,13 @@ namespace sphcast {
 
 namespace {
 
+// Permutes through a scratch array of the same kind and swaps: the scratch then holds the old
+// buffer, so a reorder every step allocates nothing after the first.
 template <class Field>
-void permute(Field& field, const std::vector<std::size_t>& newOrder) {
-  Field reordered(field.size());
-  for (std::size_t k = 0; k < newOrder.size(); ++k) reordered[k] = field[newOrder[k]];
-  field.swap(reordered);
+void permute(Field& field, const std::vector<std::size_t>& newOrder, Field& scratch) {
+  scratch.resize(field.size());
+  for (std::size_t k = 0; k < newOrder.size(); ++k) scratch[k] = field[newOrder[k]];
+  field.swap(scratch);
 }
 
 // Bit-for-bit, so that -0.0 != 0.0 and NaN payloads count: restart checks must be exact.
@@ -140,10 +142,10 @@ void ParticleCloud::reorder(const std::vector<std::size_t>& newOrder) {
     throw Error("cloud '" + name_ + "': reorder with " + std::to_string(newOrder.size()) +
                 " indices for " + std::to_string(size()) + " particles");
   }
-  permute(positions_, newOrder);
-  for (auto& entry : scalars_) permute(entry.second, newOrder);
-  for (auto& entry : vectors_) permute(entry.second, newOrder);
-  for (auto& entry : ids_) permute(entry.second, newOrder);
+  permute(positions_, newOrder, scratch_.vectors);
+  for (auto& entry : scalars_) permute(entry.second, newOrder, scratch_.scalars);
+  for (auto& entry : vectors_) permute(entry.second, newOrder, scratch_.vectors);
+  for (auto& entry : ids_) permute(entry.second, newOrder, scratch_.ids);
 }
 
 void ParticleCloud::append(const ParticleCloud& other) {

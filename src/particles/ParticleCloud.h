@@ -77,6 +77,19 @@ class ParticleCloud {
   std::map<std::string, VectorField> vectors_;
   std::map<std::string, IdField> ids_;
   std::map<std::string, double> attributes_;
+  // Buffers reorder() permutes through, kept so that a reorder every step allocates nothing.
+  // Not part of the cloud's state: copying a cloud does not copy them.
+  struct ReorderScratch {
+    ScalarField scalars;
+    VectorField vectors;
+    IdField ids;
+    ReorderScratch() = default;
+    ReorderScratch(const ReorderScratch&) {}
+    ReorderScratch(ReorderScratch&&) = default;
+    ReorderScratch& operator=(const ReorderScratch&) { return *this; }
+    ReorderScratch& operator=(ReorderScratch&&) = default;
+  };
+  ReorderScratch scratch_;
 };
 
 }  // namespace sphcast
