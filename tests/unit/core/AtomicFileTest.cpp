@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include "support/TemporaryFolder.h"
+
 #include <filesystem>
 #include <fstream>
 #include <random>
@@ -14,34 +16,13 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// A fresh folder per test, removed afterwards.
-class AtomicFileTest : public ::testing::Test {
- protected:
-  void SetUp() override {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    folder_ = fs::temp_directory_path() / ("sphCastAtomicFileTest_" + std::string(info->name()) +
-                                           "_" + std::to_string(std::random_device{}()));
-    fs::create_directories(folder_);
-  }
-  void TearDown() override { fs::remove_all(folder_); }
-
-  static std::string readWhole(const fs::path& file) {
-    // (not istreambuf_iterator: g++ 12 gives a false -Wnull-dereference for it)
-    std::ifstream in(file, std::ios::binary | std::ios::ate);
-    std::string content(static_cast<std::size_t>(in.tellg()), '\0');
-    in.seekg(0);
-    in.read(content.data(), static_cast<std::streamsize>(content.size()));
-    return content;
-  }
-
-  fs::path folder_;
-};
+using AtomicFileTest = testing::TemporaryFolderTest;
 
 TEST_F(AtomicFileTest, WritesContentAndLeavesNoTemporaryFile) {
   const fs::path file = folder_ / "controlDict";
   const std::string content("binary\0content\n", 15);
   writeFileAtomically(file, content);
-  EXPECT_EQ(readWhole(file), content);
+  EXPECT_EQ(testing::readWholeFile(file), content);
   EXPECT_FALSE(fs::exists(temporaryPathFor(file)));
 }
 
@@ -49,7 +30,7 @@ TEST_F(AtomicFileTest, ReplacesExistingFileWhole) {
   const fs::path file = folder_ / "case.pvd";
   writeFileAtomically(file, std::string(100000, 'a'));
   writeFileAtomically(file, "short");
-  EXPECT_EQ(readWhole(file), "short");
+  EXPECT_EQ(testing::readWholeFile(file), "short");
 }
 
 TEST_F(AtomicFileTest, WritesEmptyFile) {

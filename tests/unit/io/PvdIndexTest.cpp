@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include "support/TemporaryFolder.h"
+
 #include <filesystem>
 #include <fstream>
 #include <random>
@@ -19,24 +21,8 @@ PvdEntry entry(double time, const std::string& timeName, const std::string& part
   return {time, timeName, part, timeName + "/" + part + ".vtp"};
 }
 
-class PvdIndexTest : public ::testing::Test {
+class PvdIndexTest : public testing::TemporaryFolderTest {
  protected:
-  void SetUp() override {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    folder_ = fs::temp_directory_path() / ("sphCastPvdIndexTest_" + std::string(info->name()) +
-                                           "_" + std::to_string(std::random_device{}()));
-    fs::create_directories(folder_);
-  }
-  void TearDown() override { fs::remove_all(folder_); }
-
-  static std::string readWhole(const fs::path& file) {
-    std::ifstream in(file, std::ios::binary | std::ios::ate);
-    std::string content(static_cast<std::size_t>(in.tellg()), '\0');
-    in.seekg(0);
-    in.read(content.data(), static_cast<std::streamsize>(content.size()));
-    return content;
-  }
-
   // The DataSet lines of a written file, in order.
   static std::vector<std::string> dataSetLines(const fs::path& file) {
     std::ifstream in(file);
@@ -59,8 +45,6 @@ class PvdIndexTest : public ::testing::Test {
     EXPECT_NE(message.find(file.string()), std::string::npos) << "message: '" << message << "'";
     EXPECT_NE(message.find(because), std::string::npos) << message;
   }
-
-  fs::path folder_;
 };
 
 TEST_F(PvdIndexTest, WriteThenReadRoundTrips) {
@@ -74,7 +58,7 @@ TEST_F(PvdIndexTest, WriteThenReadRoundTrips) {
 TEST_F(PvdIndexTest, FileIsAParaViewCollection) {
   const fs::path pvd = folder_ / "case.pvd";
   writePvd(pvd, {entry(0.1, "0.1", "metal")});
-  EXPECT_EQ(readWhole(pvd),
+  EXPECT_EQ(testing::readWholeFile(pvd),
             "<?xml version=\"1.0\"?>\n"
             "<VTKFile type=\"Collection\" version=\"1.0\" byte_order=\"LittleEndian\" "
             "header_type=\"UInt64\">\n"
@@ -173,7 +157,7 @@ TEST_F(PvdIndexTest, MissingFileIsAnErrorNamingIt) {
 TEST_F(PvdIndexTest, MalformedXmlIsAnErrorNamingTheFile) {
   const fs::path pvd = folder_ / "case.pvd";
   writePvd(pvd, {entry(0, "0", "metal")});
-  const std::string content = readWhole(pvd);
+  const std::string content = testing::readWholeFile(pvd);
   std::ofstream(pvd, std::ios::binary | std::ios::trunc) << content.substr(0, content.size() / 2);
   expectReadErrorNamingFile(pvd, "");
 }

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include "support/TemporaryFolder.h"
+
 #include <bit>
 #include <cmath>
 #include <filesystem>
@@ -82,24 +84,8 @@ void expectAttributesBitwiseEqual(const ParticleCloud& expected, const ParticleC
   }
 }
 
-class VtpCloudTest : public ::testing::Test {
+class VtpCloudTest : public testing::TemporaryFolderTest {
  protected:
-  void SetUp() override {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    folder_ = fs::temp_directory_path() / ("sphCastVtpCloudTest_" + std::string(info->name()) +
-                                           "_" + std::to_string(std::random_device{}()));
-    fs::create_directories(folder_);
-  }
-  void TearDown() override { fs::remove_all(folder_); }
-
-  static std::string readWhole(const fs::path& file) {
-    // (not istreambuf_iterator: g++ 12 gives a false -Wnull-dereference for it)
-    std::ifstream in(file, std::ios::binary | std::ios::ate);
-    std::string content(static_cast<std::size_t>(in.tellg()), '\0');
-    in.seekg(0);
-    in.read(content.data(), static_cast<std::streamsize>(content.size()));
-    return content;
-  }
   static void writeWhole(const fs::path& file, const std::string& content) {
     std::ofstream(file, std::ios::binary) << content;
   }
@@ -120,8 +106,6 @@ class VtpCloudTest : public ::testing::Test {
     EXPECT_NE(message.find(because), std::string::npos) << message;
     EXPECT_EQ(printed, "") << "VTK printed while reading " << file;
   }
-
-  fs::path folder_;
 };
 
 TEST_F(VtpCloudTest, WriteThenReadIsBitExact) {
@@ -178,7 +162,7 @@ TEST_F(VtpCloudTest, CloudWithoutFieldsRoundTrips) {
 TEST_F(VtpCloudTest, FileIsAppendedRawZlibWithUInt64Headers) {
   const fs::path file = folder_ / "metal.vtp";
   writeCloudVtp(randomCloud(100, 2), file);
-  const std::string content = readWhole(file);
+  const std::string content = testing::readWholeFile(file);
   const std::string header = content.substr(0, content.find("<AppendedData"));
   EXPECT_NE(header.find("type=\"PolyData\""), std::string::npos);
   EXPECT_NE(header.find("header_type=\"UInt64\""), std::string::npos);
@@ -221,7 +205,7 @@ TEST_F(VtpCloudTest, WriteIntoMissingFolderIsAnErrorNamingTheFile) {
 TEST_F(VtpCloudTest, TruncatedFileIsAnErrorNamingTheFile) {
   const fs::path whole = folder_ / "whole.vtp";
   writeCloudVtp(randomCloud(2000, 6), whole);
-  const std::string content = readWhole(whole);
+  const std::string content = testing::readWholeFile(whole);
   const std::size_t appended = content.find("<AppendedData");
   for (std::size_t length : {std::size_t{0}, std::size_t{10}, appended / 2, appended + 20,
                              content.size() / 2, content.size() - 30, content.size() - 2}) {
@@ -248,7 +232,7 @@ TEST_F(VtpCloudTest, GarbageFileIsAnErrorNamingTheFile) {
 TEST_F(VtpCloudTest, CorruptCompressedDataIsAnErrorNamingTheFile) {
   const fs::path file = folder_ / "metal.vtp";
   writeCloudVtp(randomCloud(2000, 8), file);
-  std::string content = readWhole(file);
+  std::string content = testing::readWholeFile(file);
   const std::size_t data = content.find('_', content.find("<AppendedData")) + 1;
   for (std::size_t i = data + 64; i < content.size() - 100; i += 97) content[i] ^= 0x5a;
   writeWhole(file, content);
