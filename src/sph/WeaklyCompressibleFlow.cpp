@@ -68,7 +68,7 @@ WeaklyCompressibleFlow::WeaklyCompressibleFlow(FlowSettings settings, ParticleCl
 void WeaklyCompressibleFlow::findNeighbours() {
   fluidGrid_.build(fluid_.positions());
   // a cloud still in cell order (no particle changed cell) needs no reorder, which would copy
-  // every field through a fresh allocation
+  // every field
   if (!fluidGrid_.inCellOrder()) {
     fluid_.reorder(fluidGrid_.sortPermutation());
     fluidGrid_.adoptCellOrder();
