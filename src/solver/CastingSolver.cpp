@@ -44,10 +44,15 @@ CastingSolver::CastingSolver(const CaseFolder& caseFolder)
   info() << std::endl;
 }
 
-ParticleCloud& CastingSolver::cloudNamed(const std::string& name) {
+ParticleCloud* CastingSolver::findCloud(const std::string& name) {
   for (ParticleCloud& cloud : clouds_) {
-    if (cloud.name() == name) return cloud;
+    if (cloud.name() == name) return &cloud;
   }
+  return nullptr;
+}
+
+ParticleCloud& CastingSolver::cloudNamed(const std::string& name) {
+  if (ParticleCloud* cloud = findCloud(name)) return *cloud;
   std::string present;
   for (const ParticleCloud& cloud : clouds_) present += " " + cloud.name();
   throw Error("constant/physicsModels names the fluid cloud '" + name + "', but time " +
@@ -63,10 +68,8 @@ void CastingSolver::setUpFlow() {
   // fields), else from constant/particles, where particleizeMold wrote it.
   std::vector<const ParticleCloud*> walls;
   for (const std::string& wallName : flowSetup_.wallClouds) {
-    const auto inTime = std::find_if(clouds_.begin(), clouds_.end(),
-                                     [&](const ParticleCloud& c) { return c.name() == wallName; });
-    if (inTime != clouds_.end()) {
-      walls.push_back(&*inTime);
+    if (const ParticleCloud* inTime = findCloud(wallName)) {
+      walls.push_back(inTime);
       continue;
     }
     const auto file = caseFolder_.constant() / "particles" / (wallName + ".vtp");

@@ -33,7 +33,8 @@ class CastingSolver {
 
  private:
   void setUpFlow();
-  ParticleCloud& cloudNamed(const std::string& name);
+  ParticleCloud* findCloud(const std::string& name);    // nullptr when absent
+  ParticleCloud& cloudNamed(const std::string& name);   // throws, listing the clouds present
   double stableDeltaT(std::string& limiter) const;
   void evolve(double deltaT);
   void writeResults();
