@@ -35,6 +35,7 @@ struct ControlSettings {
   int logInterval = 1;  // sphCast's own: print the step block every N steps
 
   // Throws DictionaryError naming file, line and key for any unknown, missing or bad entry.
+  // The `functions` sub-dictionary is accepted here and read by the solver (FunctionObject.h).
   static ControlSettings read(const Dictionary& controlDict);
 };
 

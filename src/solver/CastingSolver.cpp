@@ -6,6 +6,7 @@
 #include <ostream>
 
 #include "core/Error.h"
+#include "core/dictionary/Dictionary.h"
 #include "io/VtpCloud.h"
 #include "solver/Gravity.h"
 
@@ -41,6 +42,7 @@ CastingSolver::CastingSolver(const CaseFolder& caseFolder)
       }
     }
   }
+  setUpFunctionObjects();
   info() << std::endl;
 }
 
@@ -98,6 +100,21 @@ void CastingSolver::setUpFlow() {
          << domain_.upper.transpose().format(plain)
          << "): a particle outside it, or not finite, stops the run\n";
   // Everything else stays where it is: only the fluid moves.
+}
+
+void CastingSolver::setUpFunctionObjects() {
+  FunctionObjectContext context;
+  context.caseRoot = caseFolder_.root();
+  context.startTimeName = time_.startTimeName();
+  context.startTime = time_.startValue();
+  context.supportRadius = flowSetup_.enabled ? flowSetup_.settings.supportRadius : Real(0);
+  context.gravity = gravity_;
+  for (const ParticleCloud& cloud : clouds_) context.clouds.push_back(&cloud);
+  functions_ = FunctionObjectList(Dictionary::read(caseFolder_.systemFile("controlDict")), context);
+  for (const auto& object : functions_.objects()) {
+    info() << "Function object " << object->name() << ": postProcessing/" << object->name() << '/'
+           << time_.startTimeName() << '\n';
+  }
 }
 
 double CastingSolver::stableDeltaT(std::string& limiter) const {
@@ -164,6 +181,7 @@ void CastingSolver::stopIfParticlesWentBad(const TimeState& before) {
 
 void CastingSolver::run() {
   info() << "Starting time loop\n\n";
+  functions_.execute(time_.state(), false);
   while (time_.run()) {
     logRereadMessage();
     std::string limiter;
@@ -178,6 +196,7 @@ void CastingSolver::run() {
     const bool printBlock = stepsTaken_ % time_.settings().logInterval == 0 || time_.writeTime();
     logStep(printBlock);
     if (time_.writeTime()) writeResults();
+    functions_.execute(time_.state(), time_.writeTime());
   }
   logRereadMessage();
   info() << "Stopping: " << time_.stopReason() << " at time " << time_.timeName() << '\n';

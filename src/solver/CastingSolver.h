@@ -8,6 +8,7 @@
 #include "core/Log.h"
 #include "core/TimeControl.h"
 #include "particles/ParticleCloud.h"
+#include "post/FunctionObject.h"
 #include "solver/BallisticMotion.h"
 #include "solver/CaseWriter.h"
 #include "solver/FlowSetup.h"
@@ -33,8 +34,9 @@ class CastingSolver {
 
  private:
   void setUpFlow();
-  ParticleCloud* findCloud(const std::string& name);    // nullptr when absent
-  ParticleCloud& cloudNamed(const std::string& name);   // throws, listing the clouds present
+  void setUpFunctionObjects();
+  ParticleCloud* findCloud(const std::string& name);   // nullptr when absent
+  ParticleCloud& cloudNamed(const std::string& name);  // throws, listing the clouds present
   double stableDeltaT(std::string& limiter) const;
   void evolve(double deltaT);
   void writeResults();
@@ -50,13 +52,14 @@ class CastingSolver {
   Vector gravity_;
   BallisticMotion motion_;
   FlowSetup flowSetup_;
-  std::vector<ParticleCloud> clouds_;         // of the time folders: read, stepped, written
-  std::vector<ParticleCloud> staticClouds_;   // of constant/particles: read only
+  std::vector<ParticleCloud> clouds_;        // of the time folders: read, stepped, written
+  std::vector<ParticleCloud> staticClouds_;  // of constant/particles: read only
   std::unique_ptr<WeaklyCompressibleFlow> flow_;
   ParticleCloud* fluid_ = nullptr;
   Domain domain_;
   std::unique_ptr<ParticleCloud> lastGoodFluid_;  // the fluid before the step being taken
   CaseWriter writer_;
+  FunctionObjectList functions_;  // of controlDict's `functions`, run after every step
   RunClock clock_;
   long stepsTaken_ = 0;
 };
