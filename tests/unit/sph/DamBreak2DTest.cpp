@@ -1,0 +1,155 @@
+// The 2D dam break against Martin & Moyce (1952): a water column of width a and height 2a
+// collapses onto a dry floor; the surge front Z = x / a against T = t sqrt(2 g / a)
+// (validation.md; data in tests/unit/data/damBreak with its citation). The dimensionless time
+// is the one of Martin & Moyce's Fig. 3 (and of the PySPH digitisation): with it the shallow
+// water front speed 2 sqrt(g 2a) is dZ/dT = 2, and the measured slope between T = 2 and 4 is
+// 1.7.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+
+#include "FlowTestCases.h"
+#include "post/FluidSampling.h"
+#include "sph/WeaklyCompressibleFlow.h"
+
+namespace sphcast {
+namespace {
+
+struct MeasuredFront {
+  std::vector<double> time;   // T
+  std::vector<double> front;  // Z
+};
+
+MeasuredFront martinMoyce() {
+  std::ifstream file(std::string(SPHCAST_TEST_DATA_DIR) +
+                     "/damBreak/martinMoyce1952_n2_a2.25in.dat");
+  MeasuredFront data;
+  std::string line;
+  while (std::getline(file, line)) {
+    if (line.empty() || line[0] == '#') continue;
+    std::istringstream numbers(line);
+    double T = 0;
+    double Z = 0;
+    numbers >> T >> Z;
+    data.time.push_back(T);
+    data.front.push_back(Z);
+  }
+  return data;
+}
+
+struct DamBreakResult {
+  std::vector<double> time;   // the measured T up to the end of the run
+  std::vector<double> front;  // the computed Z there
+  std::vector<double> measured;
+  double largestError = 0;  // max |Z - Z_measured|
+  std::size_t escaped = 0;
+  double particleSteps = 0;
+};
+
+// Column a = 0.1 m resolved by `columns` particles across; tank 5a long. Runs to T = endT.
+DamBreakResult runDamBreak(int columns, double endT) {
+  const Real a = 0.1;
+  const Real dx = a / Real(columns);
+  const int rows = 2 * columns;
+  const int tankColumns = 5 * columns;
+  const int wallRows = 3 * columns;
+  const Real g = 9.81;
+  const Real rho0 = 1000;
+  // c = 10 sqrt(g 2a), as PySPH's dam breaks: ten times the shallow-water front speed scale.
+  const Real c = 10 * std::sqrt(g * 2 * a);
+  auto fluid = testing::fluidBlock2D(columns, rows, dx, Vector::Zero(), rho0, 1e-3);
+  for (std::size_t i = 0; i < fluid.size(); ++i) {
+    const Real depth = 2 * a - fluid.positions()[i].y();
+    fluid.scalarField("rho")[i] = rho0 * (1 + g * depth / (c * c));  // hydrostatic start
+  }
+
+  auto wall = testing::emptyWall();
+  const int layers = 3;
+  auto outside = [=](int column, int row) {
+    const Real ox = column < 0 ? Real(column + 0.5)
+                               : (column >= tankColumns ? Real(column - tankColumns + 0.5) : 0);
+    const Real oy = row < 0 ? Real(row + 0.5) : 0;
+    return Vector(ox, oy, 0);
+  };
+  auto normal = [=](int column, int row) { return Vector(-outside(column, row)); };
+  auto depth = [=](int column, int row) { return outside(column, row).norm() * dx; };
+  testing::addWallCells(wall, -layers, tankColumns + layers, -layers, 0, dx, Vector::Zero(), normal,
+                        depth);
+  testing::addWallCells(wall, -layers, 0, 0, wallRows, dx, Vector::Zero(), normal, depth);
+  testing::addWallCells(wall, tankColumns, tankColumns + layers, 0, wallRows, dx, Vector::Zero(),
+                        normal, depth);
+
+  FlowSettings settings;
+  settings.dimension = 2;
+  settings.supportRadius = 3 * dx;
+  settings.soundSpeed = c;
+  settings.gravity = Vector(0, -g, 0);
+  WeaklyCompressibleFlow flow(settings, fluid, {&wall});
+
+  const MeasuredFront measured = martinMoyce();
+  const double timeScale = std::sqrt(a / (2 * g));  // t = T sqrt(a / 2g)
+  DamBreakResult result;
+  double t = 0;
+  std::string limiter;
+  for (std::size_t k = 0; k < measured.time.size() && measured.time[k] <= endT; ++k) {
+    const double sampleTime = measured.time[k] * timeScale;
+    while (t < sampleTime) {
+      const double dt = std::min(flow.stepLimits(0.25).smallest(limiter), sampleTime - t);
+      flow.step(dt);
+      t += dt;
+      result.particleSteps += double(fluid.size());
+    }
+    const double Z = fluidFront(fluid, Vector(1, 0, 0)) / a;
+    result.time.push_back(measured.time[k]);
+    result.front.push_back(Z);
+    result.measured.push_back(measured.front[k]);
+    result.largestError = std::max(result.largestError, std::abs(Z - measured.front[k]));
+  }
+  for (const Vector& x : fluid.positions()) {
+    if (x.x() < 0 || x.x() > 5 * a || x.y() < 0) ++result.escaped;
+  }
+  return result;
+}
+
+void print(int columns, const DamBreakResult& result) {
+  std::printf("dam break 2D, a/dx = %d:\n", columns);
+  for (std::size_t k = 0; k < result.time.size(); ++k) {
+    std::printf("    T %.3f  Z %.3f  measured %.3f\n", result.time[k], result.front[k],
+                result.measured[k]);
+  }
+  std::printf("    largest |Z - Z_measured| %.3f, %.3g particle-steps\n", result.largestError,
+              result.particleSteps);
+}
+
+TEST(DamBreak2D, SurgeFrontFollowsMartinMoyce) {
+  const int columns = 20;
+  const auto result = runDamBreak(columns, 3.4);
+  print(columns, result);
+  ASSERT_EQ(result.time.size(), 5u);  // T = 0.83 .. 3.35
+  EXPECT_EQ(result.escaped, 0u);
+  // Measured (a/dx = 10, 20, 40): largest |Z - Z_measured| 0.21, 0.18, 0.25. The computed front
+  // runs ahead of the measured one early on (by 0.12 a at T = 0.83 here), as inviscid
+  // computations of this experiment generally do: the usual explanation is the time the
+  // experiment's release of the column took, which is not modelled. A front that does not move
+  // misses by 3 a at T = 3.35, one at the ideal shallow-water speed dZ/dT = 2 by 3.5 a.
+  EXPECT_LT(result.largestError, 0.25);
+  // The surge speed between T = 2.0 and 3.35, where the release no longer matters: measured
+  // dZ/dT = 1.37; computed 1.14, 1.28, 1.36 at a/dx = 10, 20, 40.
+  const double measuredSpeed =
+      (result.measured[4] - result.measured[2]) / (result.time[4] - result.time[2]);
+  const double speed = (result.front[4] - result.front[2]) / (result.time[4] - result.time[2]);
+  std::printf("    surge speed dZ/dT %.3f (measured %.3f)\n", speed, measuredSpeed);
+  EXPECT_NEAR(speed / measuredSpeed, 1.0, 0.12);
+}
+
+// Three resolutions, for the issue note (minutes on one thread): run with
+// --gtest_also_run_disabled_tests --gtest_filter='*Resolutions*'.
+TEST(DamBreak2D, DISABLED_SurgeFrontAtThreeResolutions) {
+  for (const int columns : {10, 20, 40}) print(columns, runDamBreak(columns, 3.4));
+}
+
+}  // namespace
+}  // namespace sphcast
