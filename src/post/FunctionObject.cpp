@@ -192,8 +192,10 @@ std::vector<std::vector<double>> readFunctionObjectSeries(const fs::path& caseRo
   }
   std::vector<std::vector<double>> rows;
   for (std::size_t k = 0; k < files.size(); ++k) {
-    const double nextStart =
-        k + 1 < files.size() ? startTimes[k + 1] : std::numeric_limits<double>::infinity();
+    // Rows print 12 digits: a row within 1e-10 (relative) of the next start is that start.
+    const double nextStart = k + 1 < files.size()
+                                 ? startTimes[k + 1] - 1e-10 * std::abs(startTimes[k + 1])
+                                 : std::numeric_limits<double>::infinity();
     for (auto& row : files[k]) {
       if (row.front() < nextStart) rows.push_back(std::move(row));
     }

@@ -53,7 +53,7 @@ joined() {
             cut=$(awk '/^# startTime / { print $3; exit }' "$dir/postProcessing/$name/${starts[k + 1]}/$field")
         fi
         grep -v '^#' "$dir/postProcessing/$name/${starts[k]}/$field" |
-            awk -v cut="$cut" 'cut == "inf" || $1 + 0 < cut + 0'
+            awk -v cut="$cut" 'cut == "inf" || $1 + 0 < cut - 1e-10 * (cut < 0 ? -cut : cut)'
     done
 }
 

@@ -147,5 +147,27 @@ TEST_F(FunctionObjectTest, ARestartedRunContinuesWithoutDuplicatedRows) {
   EXPECT_EQ(readFunctionObjectSeries(folder_, "F", "front").size(), 4u);
 }
 
+TEST_F(FunctionObjectTest, ARestartFromATimeOfManyDigitsJoinsWithoutItsRowTwice) {
+  // Rows print 12 significant digits; the start time has 15.
+  const double restart = 0.0194031221304117;
+  const auto functions = Dictionary::parse(
+      "functions { F { type front; cloud fluid; direction (1 0 0); } }", "controlDict");
+  {
+    FunctionObjectList first(functions, context("0"));
+    first.execute({0, "", 0, 0}, false);
+    first.execute({restart, "", 1, restart}, false);
+    first.execute({2 * restart, "", 2, restart}, false);
+  }
+  {
+    auto restarted = context("0.0194031");
+    restarted.startTime = restart;
+    FunctionObjectList second(functions, restarted);
+    second.execute({restart, "", 1, restart}, false);
+  }
+  const auto rows = readFunctionObjectSeries(folder_, "F", "front");
+  ASSERT_EQ(rows.size(), 2u);
+  EXPECT_NEAR(rows[1][0], restart, 1e-12);
+}
+
 }  // namespace
 }  // namespace sphcast
