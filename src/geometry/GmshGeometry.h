@@ -51,6 +51,8 @@ class GmshGeometry {
   // Fallback for meshes without surface elements: the faces of the tetrahedra used once.
   TriangleMesh tetrahedraBoundary(const std::vector<int>& volumeTags) const;
   int vertexIndex(std::size_t nodeTag) const;
+  // For a mesh without topology (MSH 2.2): the volumes with a tetrahedron on the surface.
+  std::vector<int> volumesMeshedAgainst(int surface) const;
 
   std::filesystem::path file_;
   std::vector<PhysicalGroup> groups_;
