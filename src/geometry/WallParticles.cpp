@@ -62,6 +62,7 @@ struct ShellCandidate {
   double offLayer;  // how far the lattice point was moved to reach its layer
   int owner;
   int layer;
+  bool onFaceLattice;  // from a flat face's own lattice: its volume is dx^3
 };
 
 // Lattice cells of size `cellSize` that a triangle, grown by `reach`, touches: sorted, so the
@@ -96,18 +97,99 @@ std::vector<std::array<std::int64_t, 3>> cellsNearWall(const TriangleMesh& wall,
   return cells;
 }
 
+// The candidates of the flat faces' own lattices (see WallParticles.h), appended to `candidates`.
+void addFaceLatticeCandidates(const TriangleMesh& wall, const TriangleDistanceTree& tree,
+                              const std::vector<PlanarFace>& planarFaces,
+                              const std::vector<int>& planarOfTriangle, double spacing, int layers,
+                              std::vector<ShellCandidate>& candidates) {
+  const double reach = (layers + 0.5) * spacing;
+  for (std::size_t f = 0; f < planarFaces.size(); ++f) {
+    const PlanarFace& face = planarFaces[f];
+    const auto first = [&](double lower) {
+      return static_cast<std::int64_t>(std::floor(lower / spacing)) - layers - 1;
+    };
+    const auto last = [&](double upper) {
+      return static_cast<std::int64_t>(std::ceil(upper / spacing)) + layers;
+    };
+    for (int layer = 0; layer < layers; ++layer) {
+      for (std::int64_t j = first(face.lower.y()); j <= last(face.upper.y()); ++j) {
+        for (std::int64_t i = first(face.lower.x()); i <= last(face.upper.x()); ++i) {
+          const Eigen::Vector3d p = face.origin + face.axis1 * latticeCoordinate(i, spacing) +
+                                    face.axis2 * latticeCoordinate(j, spacing) -
+                                    face.normal * ((layer + 0.5) * spacing);
+          const ClosestPoint hit = tree.closest(p, reach);
+          if (hit.triangle < 0 || hit.distance < 1e-9 * spacing || tree.onFreeBorder(hit)) continue;
+          // The nearest wall point must lie on this face or its border: p is then behind the
+          // face, or past one of its convex edges, and in the mold material either way.
+          if (std::abs(face.normal.dot(hit.point - face.origin)) > 1e-6 * spacing) continue;
+          const auto hitTriangle = static_cast<std::size_t>(hit.triangle);
+          if (planarOfTriangle[hitTriangle] != static_cast<int>(f) &&
+              hit.feature == TriangleFeature::face) {
+            continue;  // inside another face of the same plane: its own lattice covers it
+          }
+          const Eigen::Vector3d outOfMaterial = (hit.point - p) / hit.distance;
+          const bool behindTheFace = outOfMaterial.dot(face.normal) > 1.0 - 1e-9;
+          const int bandLayer =
+              behindTheFace
+                  ? layer
+                  : std::clamp(static_cast<int>(std::lround(hit.distance / spacing - 0.5)), 0,
+                               layers - 1);
+          candidates.push_back({p, behindTheFace ? face.normal : outOfMaterial, hit.distance, 0.0,
+                                wall.owners[hitTriangle], bandLayer, true});
+        }
+      }
+    }
+  }
+}
+
 }  // namespace
 
 WallParticles generateShellParticles(const TriangleMesh& wall, const LatticeSolid& cavity,
-                                     double spacing, int layers, int patchCount) {
+                                     double spacing, int layers, int patchCount,
+                                     const std::vector<PlanarFace>& planarFaces) {
   const TriangleDistanceTree tree(wall);
   const double reach = (layers + 0.5) * spacing;
+  // Which flat face each triangle is on (-1: none).
+  std::vector<int> planarOfTriangle(wall.size(), -1);
+  if (wall.faces.size() == wall.size()) {
+    for (std::size_t t = 0; t < wall.size(); ++t) {
+      for (std::size_t f = 0; f < planarFaces.size(); ++f) {
+        if (planarFaces[f].face == wall.faces[t]) planarOfTriangle[t] = static_cast<int>(f);
+      }
+    }
+  }
+  // Whether a closest point lies on a flat face or its border, decided by the vertices of the
+  // feature it lies on, so that a tie between the triangles on both sides of an edge cannot
+  // change the answer.
+  std::vector<bool> vertexOnFlatFace(wall.vertices.size(), false);
+  for (std::size_t t = 0; t < wall.size(); ++t) {
+    if (planarOfTriangle[t] < 0) continue;
+    for (const int v : wall.triangles[t]) vertexOnFlatFace[static_cast<std::size_t>(v)] = true;
+  }
+  const auto nearestIsFlat = [&](const ClosestPoint& hit) {
+    const auto triangle = static_cast<std::size_t>(hit.triangle);
+    const auto& t = wall.triangles[triangle];
+    const auto on = [&](std::size_t corner) -> bool {
+      return vertexOnFlatFace[static_cast<std::size_t>(t[corner])];
+    };
+    switch (hit.feature) {
+      case TriangleFeature::face: return planarOfTriangle[triangle] >= 0;
+      case TriangleFeature::edge0: return on(0) && on(1);
+      case TriangleFeature::edge1: return on(1) && on(2);
+      case TriangleFeature::edge2: return on(2) && on(0);
+      case TriangleFeature::vertex0: return on(0);
+      case TriangleFeature::vertex1: return on(1);
+      case TriangleFeature::vertex2: return on(2);
+    }
+    return false;
+  };
+  std::vector<ShellCandidate> candidates;
+  addFaceLatticeCandidates(wall, tree, planarFaces, planarOfTriangle, spacing, layers, candidates);
   // Cells a whole number of lattice spacings wide, so each lattice point is in exactly one.
   const double cellSize = spacing * std::ceil(reach / spacing);
   const auto cells = cellsNearWall(wall, cellSize, reach);
   const auto latticePerCell = static_cast<std::int64_t>(std::llround(cellSize / spacing));
 
-  std::vector<ShellCandidate> candidates;
   // Lattice points per patch and band [k dx, (k+1) dx) behind the wall: the band volumes.
   std::vector<double> bandPoints(static_cast<std::size_t>(patchCount * layers), 0.0);
   for (const auto& cell : cells) {
@@ -121,6 +203,9 @@ WallParticles generateShellParticles(const TriangleMesh& wall, const LatticeSoli
           if (tree.onFreeBorder(hit) || cavity.contains(p)) continue;
           const int owner = wall.owners[static_cast<std::size_t>(hit.triangle)];
           const auto band = static_cast<int>(std::floor(hit.distance / spacing));
+          // Nearest to a flat face: the face's own lattice has its particles there already (and
+          // their volume is dx^3), straight behind it or past its edges.
+          if (nearestIsFlat(hit)) continue;
           if (band < layers) bandPoints[static_cast<std::size_t>(owner * layers + band)] += 1.0;
           const Eigen::Vector3d outOfMaterial = (hit.point - p) / hit.distance;
           // The one or two layers nearest to this point's distance.
@@ -131,7 +216,7 @@ WallParticles generateShellParticles(const TriangleMesh& wall, const LatticeSoli
             const double layerDistance = (layer + 0.5) * spacing;
             candidates.push_back({hit.point - outOfMaterial * layerDistance, outOfMaterial,
                                   layerDistance, std::abs(hit.distance - layerDistance), owner,
-                                  layer});
+                                  layer, false});
           }
         }
       }
@@ -162,6 +247,7 @@ WallParticles generateShellParticles(const TriangleMesh& wall, const LatticeSoli
 
   std::vector<double> layerCounts(bandPoints.size(), 0.0);
   for (const std::size_t c : kept) {
+    if (candidates[c].onFaceLattice) continue;
     layerCounts[static_cast<std::size_t>(candidates[c].owner * layers + candidates[c].layer)] += 1.0;
   }
   WallParticles shell;
@@ -172,8 +258,9 @@ WallParticles generateShellParticles(const TriangleMesh& wall, const LatticeSoli
     shell.positions.push_back(candidate.position);
     shell.normals.push_back(candidate.normal);
     shell.wallDistances.push_back(candidate.wallDistance);
-    shell.volumes.push_back(bandPoints[band] > 0.0 ? cellVolume * bandPoints[band] / layerCounts[band]
-                                                    : cellVolume);
+    const bool sharesItsBand = !candidate.onFaceLattice && bandPoints[band] > 0.0;
+    shell.volumes.push_back(sharesItsBand ? cellVolume * bandPoints[band] / layerCounts[band]
+                                          : cellVolume);
     shell.owners.push_back(candidate.owner);
   }
   return shell;

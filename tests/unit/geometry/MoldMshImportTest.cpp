@@ -34,7 +34,8 @@ enum class Solid { box, cylinder };
 std::string geoText(Solid solid) {
   return solid == Solid::box
              ? "SetFactory(\"OpenCASCADE\");\nBox(1) = {0, 0, 0, 0.04, 0.03, 0.03};\n"
-               "Physical Surface(\"walls\") = {1, 2, 3, 4, 5};\nPhysical Volume(\"cavity\") = {1};\n"
+               "Physical Surface(\"walls\") = {1, 2, 3, 4, 5};\nPhysical Volume(\"cavity\") = "
+               "{1};\n"
              : "SetFactory(\"OpenCASCADE\");\nCylinder(1) = {0, 0, 0, 0.03, 0, 0, 0.02};\n"
                "Physical Surface(\"walls\") = {1, 3};\nPhysical Volume(\"cavity\") = {1};\n";
 }
@@ -54,8 +55,8 @@ void writeMsh(Solid solid, const std::filesystem::path& file, double version,
     gmsh::model::occ::addCylinder(0, 0, 0, 0.03, 0, 0, 0.02, 1);
   }
   gmsh::model::occ::synchronize();
-  const std::vector<int> walls = solid == Solid::box ? std::vector<int>{1, 2, 3, 4, 5}
-                                                     : std::vector<int>{1, 3};
+  const std::vector<int> walls =
+      solid == Solid::box ? std::vector<int>{1, 2, 3, 4, 5} : std::vector<int>{1, 3};
   gmsh::model::setPhysicalName(2, gmsh::model::addPhysicalGroup(2, walls), "walls");
   gmsh::model::setPhysicalName(3, gmsh::model::addPhysicalGroup(3, {1}), "cavity");
   gmsh::option::setNumber("Mesh.MeshSizeMax", 0.5 * dx);
@@ -90,10 +91,10 @@ void expectSameParticles(const ParticleCloud& a, const ParticleCloud& b) {
     worstPosition = std::max(worstPosition, nearest);
     worstDistance = std::max(worstDistance, std::abs(a.scalarField("wallDistance")[i] -
                                                      b.scalarField("wallDistance")[match]));
-    worstNormal = std::max(worstNormal,
-                           (a.vectorField("normal")[i] - b.vectorField("normal")[match]).norm());
-    worstVolume = std::max(worstVolume, std::abs(a.scalarField("volume")[i] -
-                                                 b.scalarField("volume")[match]));
+    worstNormal =
+        std::max(worstNormal, (a.vectorField("normal")[i] - b.vectorField("normal")[match]).norm());
+    worstVolume = std::max(worstVolume,
+                           std::abs(a.scalarField("volume")[i] - b.scalarField("volume")[match]));
   }
   // Node coordinates go through the file in 16 significant digits: the same to round-off.
   EXPECT_LT(worstPosition, 1e-9 * dx);
@@ -117,8 +118,8 @@ TEST_P(MshImport, GivesTheSameParticlesAsTheGeo) {
     EXPECT_EQ(geometry.volumesBoundedBy(*geometry.findGroup("walls")), cavity);
     const TriangleMesh boundary = geometry.boundaryOfVolumes(cavity);
     EXPECT_EQ(boundary.freeEdgeCount(), 0u);
-    const double exactVolume = solid == Solid::box ? 0.04 * 0.03 * 0.03
-                                                   : std::numbers::pi * 0.02 * 0.02 * 0.03;
+    const double exactVolume =
+        solid == Solid::box ? 0.04 * 0.03 * 0.03 : std::numbers::pi * 0.02 * 0.02 * 0.03;
     // The inscribed polygon of a circle with chords <= dx/2 = R/16 misses 0.2% of the area.
     EXPECT_NEAR(boundary.enclosedVolume() / exactVolume, 1.0, solid == Solid::box ? 1e-12 : 3e-3);
   }
@@ -128,14 +129,13 @@ TEST_P(MshImport, GivesTheSameParticlesAsTheGeo) {
   expectSameParticles(fromGeo.clouds[0], fromMsh.clouds[0]);
 }
 
-INSTANTIATE_TEST_SUITE_P(BoxAndCylinderInMsh22And41, MshImport,
-                         ::testing::Combine(::testing::Values(Solid::box, Solid::cylinder),
-                                            ::testing::Values(2.2, 4.1)),
-                         [](const auto& instance) {
-                           return std::string(std::get<0>(instance.param) == Solid::box ? "box"
-                                                                                    : "cylinder") +
-                                  (std::get<1>(instance.param) < 3.0 ? "Msh22" : "Msh41");
-                         });
+INSTANTIATE_TEST_SUITE_P(
+    BoxAndCylinderInMsh22And41, MshImport,
+    ::testing::Combine(::testing::Values(Solid::box, Solid::cylinder), ::testing::Values(2.2, 4.1)),
+    [](const auto& instance) {
+      return std::string(std::get<0>(instance.param) == Solid::box ? "box" : "cylinder") +
+             (std::get<1>(instance.param) < 3.0 ? "Msh22" : "Msh41");
+    });
 
 class MshMissingGroup : public ::testing::TestWithParam<double> {};
 
