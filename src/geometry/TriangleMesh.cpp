@@ -74,9 +74,20 @@ Eigen::Vector3d TriangleMesh::upper() const {
 }
 
 std::size_t TriangleMesh::freeEdgeCount() const {
-  const auto uses = edgeUses(*this);
-  return static_cast<std::size_t>(
-      std::count_if(uses.begin(), uses.end(), [](const auto& use) { return use.second == 1; }));
+  // Sorted edges: a free edge is one that differs from both its neighbours in the order.
+  std::vector<Edge> edges;
+  edges.reserve(3 * triangles.size());
+  for (const auto& triangle : triangles) {
+    for (int edge = 0; edge < 3; ++edge) edges.push_back(edgeOf(triangle, edge));
+  }
+  std::sort(edges.begin(), edges.end());
+  std::size_t free = 0;
+  for (std::size_t e = 0; e < edges.size(); ++e) {
+    const bool sameAsPrevious = e > 0 && edges[e - 1] == edges[e];
+    const bool sameAsNext = e + 1 < edges.size() && edges[e + 1] == edges[e];
+    if (!sameAsPrevious && !sameAsNext) ++free;
+  }
+  return free;
 }
 
 void TriangleMesh::removeUnusedVertices() {

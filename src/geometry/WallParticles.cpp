@@ -272,7 +272,15 @@ WallParticles fillVolumeParticles(const TriangleMesh& boundary, double spacing, 
   WallParticles volume;
   volume.positions = solid.interiorPoints();
   const double cellVolume = spacing * spacing * spacing;
-  for (const Eigen::Vector3d& p : volume.positions) {
+  const auto count = static_cast<std::ptrdiff_t>(volume.size());
+  volume.normals.resize(volume.size());
+  volume.wallDistances.resize(volume.size());
+  volume.volumes.assign(volume.size(), cellVolume);
+  volume.owners.assign(volume.size(), patch);
+  // Each point's nearest wall on its own: the same result on any number of threads.
+#pragma omp parallel for schedule(dynamic, 4096)
+  for (std::ptrdiff_t i = 0; i < count; ++i) {
+    const Eigen::Vector3d& p = volume.positions[static_cast<std::size_t>(i)];
     const ClosestPoint hit = tree.closest(p, std::numeric_limits<double>::max());
     Eigen::Vector3d outward;
     if (hit.distance > 1e-9 * spacing) {
@@ -284,10 +292,8 @@ WallParticles fillVolumeParticles(const TriangleMesh& boundary, double spacing, 
                     .cross(boundary.vertices[static_cast<std::size_t>(t[2])] - a)
                     .normalized();
     }
-    volume.normals.push_back(outward);
-    volume.wallDistances.push_back(hit.distance);
-    volume.volumes.push_back(cellVolume);
-    volume.owners.push_back(patch);
+    volume.normals[static_cast<std::size_t>(i)] = outward;
+    volume.wallDistances[static_cast<std::size_t>(i)] = hit.distance;
   }
   return volume;
 }
@@ -321,7 +327,11 @@ std::vector<SpacingStatistics> nearestNeighbourStatistics(const WallParticles& p
   }
   std::vector<SpacingStatistics> statistics(static_cast<std::size_t>(ownerCount));
   for (auto& s : statistics) s.min = std::numeric_limits<double>::max();
-  for (std::size_t i = 0; i < particles.size(); ++i) {
+  std::vector<double> nearestOf(particles.size());
+  const auto count = static_cast<std::ptrdiff_t>(particles.size());
+#pragma omp parallel for schedule(dynamic, 4096)
+  for (std::ptrdiff_t n = 0; n < count; ++n) {
+    const auto i = static_cast<std::size_t>(n);
     double nearestSquared = searchRadius * searchRadius;
     grid.forEachNear(particles.positions[i], [&](int j) {
       if (static_cast<std::size_t>(j) == i) return;
@@ -329,7 +339,10 @@ std::vector<SpacingStatistics> nearestNeighbourStatistics(const WallParticles& p
           nearestSquared, (particles.positions[static_cast<std::size_t>(j)] - particles.positions[i])
                               .squaredNorm());
     });
-    const double nearest = std::sqrt(nearestSquared);
+    nearestOf[i] = std::sqrt(nearestSquared);
+  }
+  for (std::size_t i = 0; i < particles.size(); ++i) {
+    const double nearest = nearestOf[i];
     auto& s = statistics[static_cast<std::size_t>(particles.owners[i])];
     ++s.count;
     s.min = std::min(s.min, nearest);
