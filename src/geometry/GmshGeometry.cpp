@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <map>
+#include <set>
 #include <sstream>
 
 #include "core/Error.h"
@@ -60,6 +61,51 @@ std::vector<int> entitiesOf(const PhysicalGroup& group) {
 
 }  // namespace
 
+void meshSurfacesForParticles(double maxTriangleSize) {
+  // A plane is exact with triangles of any size, and so is a straight edge between planes: only
+  // what is curved, and the edges and corners that bound it, need triangles of maxTriangleSize.
+  std::set<int> coarseSurfaces, coarseCurves, coarsePoints;
+  gmsh::vectorpair entities;
+  gmsh::model::getEntities(entities, 2);
+  for (const auto& [dimension, tag] : entities) {
+    std::string type;
+    gmsh::model::getType(dimension, tag, type);
+    if (type == "Plane") coarseSurfaces.insert(tag);
+  }
+  // Whether every entity of `upward` is in `coarse`.
+  const auto allIn = [](const std::vector<int>& upward, const std::set<int>& coarse) {
+    return std::all_of(upward.begin(), upward.end(),
+                       [&](int tag) { return coarse.count(std::abs(tag)) > 0; });
+  };
+  gmsh::model::getEntities(entities, 1);
+  for (const auto& [dimension, tag] : entities) {
+    std::string type;
+    gmsh::model::getType(dimension, tag, type);
+    std::vector<int> upward, downward;
+    gmsh::model::getAdjacencies(dimension, tag, upward, downward);
+    if (type == "Line" && allIn(upward, coarseSurfaces)) coarseCurves.insert(tag);
+  }
+  gmsh::model::getEntities(entities, 0);
+  for (const auto& [dimension, tag] : entities) {
+    std::vector<int> upward, downward;
+    gmsh::model::getAdjacencies(dimension, tag, upward, downward);
+    if (allIn(upward, coarseCurves)) coarsePoints.insert(tag);
+  }
+  double x0 = 0, y0 = 0, z0 = 0, x1 = 0, y1 = 0, z1 = 0;
+  gmsh::model::getBoundingBox(-1, -1, x0, y0, z0, x1, y1, z1);
+  const double coarseSize = std::max({x1 - x0, y1 - y0, z1 - z0, maxTriangleSize});
+  gmsh::option::setNumber("Mesh.MeshSizeMax", coarseSize);
+  gmsh::model::mesh::setSizeCallback(
+      [=](int dimension, int tag, double, double, double) {
+        const bool coarse = (dimension == 2 && coarseSurfaces.count(tag) > 0) ||
+                            (dimension == 1 && coarseCurves.count(tag) > 0) ||
+                            (dimension == 0 && coarsePoints.count(tag) > 0);
+        return coarse ? coarseSize : maxTriangleSize;
+      });
+  gmsh::model::mesh::generate(2);
+  gmsh::model::mesh::removeSizeCallback();
+}
+
 GmshGeometry::GmshGeometry(const std::filesystem::path& file, double maxTriangleSize)
     : file_(file) {
   if (!std::filesystem::is_regular_file(file)) {
@@ -76,10 +122,7 @@ GmshGeometry::GmshGeometry(const std::filesystem::path& file, double maxTriangle
     gmsh::open(file.string());
     groups_ = listPhysicalGroups();
     if (maxTriangleSize > 0.0) {
-      if (extension == ".geo") {
-        gmsh::option::setNumber("Mesh.MeshSizeMax", maxTriangleSize);
-        gmsh::model::mesh::generate(2);
-      }
+      if (extension == ".geo") meshSurfacesForParticles(maxTriangleSize);
       std::vector<std::size_t> tags;
       std::vector<double> coordinates, parametric;
       gmsh::model::mesh::getNodes(tags, coordinates, parametric, -1, -1, false, false);
@@ -143,9 +186,11 @@ TriangleMesh GmshGeometry::surfaceTriangles(const std::vector<std::pair<int, int
                   c = vertexIndex(nodes[e + 2]);
         mesh.triangles.push_back({a, b, c});
         mesh.owners.push_back(owner);
+        mesh.faces.push_back(surface);
         if (type == 3 || type == 16 || type == 10) {
           mesh.triangles.push_back({a, c, vertexIndex(nodes[e + 3])});
           mesh.owners.push_back(owner);
+          mesh.faces.push_back(surface);
         }
       }
     }

@@ -41,8 +41,8 @@ std::string geoText(Solid solid) {
 }
 
 // Builds the same solid through the gmsh API, meshes its surfaces as particleizeMold meshes a
-// .geo (triangles of at most dx/2), and its volume too unless surfacesOnly, and writes it in
-// the given MSH version.
+// .geo (triangles of at most dx/2 where curved), and its volume too unless surfacesOnly, and
+// writes it in the given MSH version.
 void writeMsh(Solid solid, const std::filesystem::path& file, double version,
               bool surfacesOnly = false) {
   std::filesystem::create_directories(file.parent_path());
@@ -59,8 +59,8 @@ void writeMsh(Solid solid, const std::filesystem::path& file, double version,
       solid == Solid::box ? std::vector<int>{1, 2, 3, 4, 5} : std::vector<int>{1, 3};
   gmsh::model::setPhysicalName(2, gmsh::model::addPhysicalGroup(2, walls), "walls");
   gmsh::model::setPhysicalName(3, gmsh::model::addPhysicalGroup(3, {1}), "cavity");
-  gmsh::option::setNumber("Mesh.MeshSizeMax", 0.5 * dx);
-  gmsh::model::mesh::generate(surfacesOnly ? 2 : 3);
+  meshSurfacesForParticles(0.5 * dx);
+  if (!surfacesOnly) gmsh::model::mesh::generate(3);
   gmsh::option::setNumber("Mesh.MshFileVersion", version);
   gmsh::write(file.string());
   gmsh::finalize();
