@@ -97,14 +97,27 @@ std::vector<std::array<std::int64_t, 3>> cellsNearWall(const TriangleMesh& wall,
   return cells;
 }
 
+// The triangles of one face of `wall`, as a mesh of their own.
+TriangleMesh trianglesOfFace(const TriangleMesh& wall, int face) {
+  TriangleMesh mesh;
+  mesh.vertices = wall.vertices;
+  for (std::size_t t = 0; t < wall.size(); ++t) {
+    if (wall.faces[t] != face) continue;
+    mesh.triangles.push_back(wall.triangles[t]);
+    mesh.owners.push_back(wall.owners[t]);
+  }
+  mesh.removeUnusedVertices();
+  return mesh;
+}
+
 // The candidates of the flat faces' own lattices (see WallParticles.h), appended to `candidates`.
 void addFaceLatticeCandidates(const TriangleMesh& wall, const TriangleDistanceTree& tree,
-                              const std::vector<PlanarFace>& planarFaces,
-                              const std::vector<int>& planarOfTriangle, double spacing, int layers,
-                              std::vector<ShellCandidate>& candidates) {
+                              const std::vector<PlanarFace>& planarFaces, double spacing,
+                              int layers, std::vector<ShellCandidate>& candidates) {
   const double reach = (layers + 0.5) * spacing;
-  for (std::size_t f = 0; f < planarFaces.size(); ++f) {
-    const PlanarFace& face = planarFaces[f];
+  for (const PlanarFace& face : planarFaces) {
+    const TriangleMesh faceMesh = trianglesOfFace(wall, face.face);
+    const TriangleDistanceTree faceTree(faceMesh);
     const auto first = [&](double lower) {
       return static_cast<std::int64_t>(std::floor(lower / spacing)) - layers - 1;
     };
@@ -119,23 +132,23 @@ void addFaceLatticeCandidates(const TriangleMesh& wall, const TriangleDistanceTr
                                     face.normal * ((layer + 0.5) * spacing);
           const ClosestPoint hit = tree.closest(p, reach);
           if (hit.triangle < 0 || hit.distance < 1e-9 * spacing || tree.onFreeBorder(hit)) continue;
-          // The nearest wall point must lie on this face or its border: p is then behind the
-          // face, or past one of its convex edges, and in the mold material either way.
-          if (std::abs(face.normal.dot(hit.point - face.origin)) > 1e-6 * spacing) continue;
-          const auto hitTriangle = static_cast<std::size_t>(hit.triangle);
-          if (planarOfTriangle[hitTriangle] != static_cast<int>(f) &&
-              hit.feature == TriangleFeature::face) {
-            continue;  // inside another face of the same plane: its own lattice covers it
-          }
-          const Eigen::Vector3d outOfMaterial = (hit.point - p) / hit.distance;
+          // This face (or its border) must be the nearest wall, or tie with it: p is then behind
+          // the face, or past one of its convex edges, and in the mold material either way. A
+          // tie (p as far from two faces meeting at a ridge of the material) is decided by
+          // distances, not by which triangle the search met first, so that the point is kept
+          // however round-off orders the two.
+          const ClosestPoint onFace = faceTree.closest(p, reach);
+          if (onFace.triangle < 0 || onFace.distance > hit.distance + 1e-9 * spacing) continue;
+          const Eigen::Vector3d outOfMaterial = (onFace.point - p) / onFace.distance;
           const bool behindTheFace = outOfMaterial.dot(face.normal) > 1.0 - 1e-9;
           const int bandLayer =
               behindTheFace
                   ? layer
-                  : std::clamp(static_cast<int>(std::lround(hit.distance / spacing - 0.5)), 0,
+                  : std::clamp(static_cast<int>(std::lround(onFace.distance / spacing - 0.5)), 0,
                                layers - 1);
-          candidates.push_back({p, behindTheFace ? face.normal : outOfMaterial, hit.distance, 0.0,
-                                wall.owners[hitTriangle], bandLayer, true});
+          candidates.push_back({p, behindTheFace ? face.normal : outOfMaterial, onFace.distance,
+                                0.0, faceMesh.owners[static_cast<std::size_t>(onFace.triangle)],
+                                bandLayer, true});
         }
       }
     }
@@ -184,7 +197,7 @@ WallParticles generateShellParticles(const TriangleMesh& wall, const LatticeSoli
     return false;
   };
   std::vector<ShellCandidate> candidates;
-  addFaceLatticeCandidates(wall, tree, planarFaces, planarOfTriangle, spacing, layers, candidates);
+  addFaceLatticeCandidates(wall, tree, planarFaces, spacing, layers, candidates);
   // Cells a whole number of lattice spacings wide, so each lattice point is in exactly one.
   const double cellSize = spacing * std::ceil(reach / spacing);
   const auto cells = cellsNearWall(wall, cellSize, reach);

@@ -158,6 +158,62 @@ INSTANTIATE_TEST_SUITE_P(ThirtyDegrees, RotatedBox,
                                                           : std::string("aboutOneTwoThree");
                          });
 
+// A pocket with a cross-shaped ditch in its floor (the press mold's cavity in small: 16 x 16 x 4
+// spacings, arms 4 wide and 3 deep), shelled on all its walls but the top, with 3 layers: its
+// ridges (the ditch's rims, where the material's corner is convex) and its T-shaped side faces
+// are where the faces' lattices meet at ties.
+std::string crossDitchCavityGeo(bool rotated) {
+  std::ostringstream geo;
+  geo << "SetFactory(\"OpenCASCADE\");\n"
+      << "Box(1) = {-0.008, -0.008, 0, 0.016, 0.016, 0.004};\n"
+      << "Box(2) = {-0.008, -0.002, -0.003, 0.016, 0.004, 0.003};\n"
+      << "Box(3) = {-0.002, -0.008, -0.003, 0.004, 0.016, 0.003};\n"
+      << "BooleanUnion(4) = { Volume{1}; Delete; }{ Volume{2, 3}; Delete; };\n"
+      << "top() = Surface In BoundingBox{-1, -1, 0.004 - 1e-6, 1, 1, 0.004 + 1e-6};\n"
+      << (rotated ? "Rotate {{1, 2, 3}, {0, 0, 0}, Pi / 6} { Volume{4}; }\n" : "")
+      << "all() = Boundary{ Volume{4}; };\nPhysical Surface(\"walls\") = {all()};\n"
+      << "Physical Surface(\"walls\") -= {top()};\nPhysical Volume(\"cavity\") = {4};\n";
+  return geo.str();
+}
+
+TEST(RotatedMold, RotatingAMoldWithRidgesRotatesItsParticles) {
+  const double spacing = 0.001;
+  const auto particleizeCavity = [&](bool rotated) {
+    TemporaryCase mold;
+    mold.write("constant/geometry/mold.geo", crossDitchCavityGeo(rotated));
+    std::ostringstream dict;
+    dict
+        << "FoamFile { version 2.0; format ascii; class dictionary; object particleizeMoldDict; }\n"
+        << "geometry (\"mold.geo\");\nspacing " << spacing << ";\nwallLayers 3;\n"
+        << "patches\n{\n    walls { cloud mold; type fixedWall; }\n}\n";
+    mold.write("system/particleizeMoldDict", dict.str());
+    return particleizeMold(CaseFolder(mold.root()));
+  };
+  const auto aligned = particleizeCavity(false);
+  const auto rotated = particleizeCavity(true);
+  const Eigen::Matrix3d rotation =
+      Eigen::AngleAxisd(std::numbers::pi / 6, Eigen::Vector3d(1, 2, 3).normalized())
+          .toRotationMatrix();
+  const auto alignedPositions = positionsOf(aligned.clouds.at(0));
+  auto rotatedBack = positionsOf(rotated.clouds.at(0));
+  for (auto& p : rotatedBack) p = rotation.transpose() * p;
+  ASSERT_GT(alignedPositions.size(), 1000u);
+  EXPECT_EQ(rotatedBack.size(), alignedPositions.size());
+  // Every particle of the rotated mold, turned back, is one of the aligned mold's.
+  double worst = 0.0;
+  for (const auto& p : rotatedBack) {
+    double nearest = 1e300;
+    for (const auto& q : alignedPositions) nearest = std::min(nearest, (p - q).norm());
+    worst = std::max(worst, nearest);
+  }
+  EXPECT_LT(worst, 1e-6 * spacing);
+  for (const auto* mold : {&aligned, &rotated}) {
+    const auto& statistics = mold->patches.at(0).spacing;
+    EXPECT_NEAR(statistics.min / spacing, 1.0, 1e-9);
+    EXPECT_NEAR(statistics.max / spacing, 1.0, 1e-9);
+  }
+}
+
 TEST(TiltedCylinder, FlatBottomIsASquareLatticeOfItsOwn) {
   // Axis tilted 30 degrees from z: radius 0.05, length 0.06; walls: side and the bottom disc.
   const double radius = 0.05, length = 0.06, tilt = std::numbers::pi / 6;
