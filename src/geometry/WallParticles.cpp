@@ -2,6 +2,7 @@
 
 #include <Eigen/Geometry>
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -97,26 +98,38 @@ std::vector<std::array<std::int64_t, 3>> cellsNearWall(const TriangleMesh& wall,
   return cells;
 }
 
-// The triangles of one face of `wall`, as a mesh of their own.
-TriangleMesh trianglesOfFace(const TriangleMesh& wall, int face) {
+// The given triangles of `wall`, as a mesh of their own.
+TriangleMesh subMesh(const TriangleMesh& wall, const std::vector<int>& triangles) {
   TriangleMesh mesh;
-  mesh.vertices = wall.vertices;
-  for (std::size_t t = 0; t < wall.size(); ++t) {
-    if (wall.faces[t] != face) continue;
-    mesh.triangles.push_back(wall.triangles[t]);
-    mesh.owners.push_back(wall.owners[t]);
+  std::unordered_map<int, int> newIndex;
+  for (const int t : triangles) {
+    std::array<int, 3> triangle{};
+    for (std::size_t corner = 0; corner < 3; ++corner) {
+      const int v = wall.triangles[static_cast<std::size_t>(t)][corner];
+      const auto [entry, added] = newIndex.try_emplace(v, static_cast<int>(mesh.vertices.size()));
+      if (added) mesh.vertices.push_back(wall.vertices[static_cast<std::size_t>(v)]);
+      triangle[corner] = entry->second;
+    }
+    mesh.triangles.push_back(triangle);
+    mesh.owners.push_back(wall.owners[static_cast<std::size_t>(t)]);
   }
-  mesh.removeUnusedVertices();
   return mesh;
 }
 
 // The candidates of the flat faces' own lattices (see WallParticles.h), appended to `candidates`.
 void addFaceLatticeCandidates(const TriangleMesh& wall, const TriangleDistanceTree& tree,
-                              const std::vector<PlanarFace>& planarFaces, double spacing,
-                              int layers, std::vector<ShellCandidate>& candidates) {
+                              const std::vector<PlanarFace>& planarFaces,
+                              const std::vector<int>& planarOfTriangle, double spacing, int layers,
+                              std::vector<ShellCandidate>& candidates) {
   const double reach = (layers + 0.5) * spacing;
-  for (const PlanarFace& face : planarFaces) {
-    const TriangleMesh faceMesh = trianglesOfFace(wall, face.face);
+  std::vector<std::vector<int>> trianglesOfFace(planarFaces.size());
+  for (std::size_t t = 0; t < planarOfTriangle.size(); ++t) {
+    if (planarOfTriangle[t] < 0) continue;
+    trianglesOfFace[static_cast<std::size_t>(planarOfTriangle[t])].push_back(static_cast<int>(t));
+  }
+  for (std::size_t f = 0; f < planarFaces.size(); ++f) {
+    const PlanarFace& face = planarFaces[f];
+    const TriangleMesh faceMesh = subMesh(wall, trianglesOfFace[f]);
     const TriangleDistanceTree faceTree(faceMesh);
     const auto first = [&](double lower) {
       return static_cast<std::int64_t>(std::floor(lower / spacing)) - layers - 1;
@@ -165,10 +178,13 @@ WallParticles generateShellParticles(const TriangleMesh& wall, const LatticeSoli
   // Which flat face each triangle is on (-1: none).
   std::vector<int> planarOfTriangle(wall.size(), -1);
   if (wall.faces.size() == wall.size()) {
+    std::unordered_map<int, int> planarOfFace;
+    for (std::size_t f = 0; f < planarFaces.size(); ++f) {
+      planarOfFace[planarFaces[f].face] = static_cast<int>(f);
+    }
     for (std::size_t t = 0; t < wall.size(); ++t) {
-      for (std::size_t f = 0; f < planarFaces.size(); ++f) {
-        if (planarFaces[f].face == wall.faces[t]) planarOfTriangle[t] = static_cast<int>(f);
-      }
+      const auto found = planarOfFace.find(wall.faces[t]);
+      if (found != planarOfFace.end()) planarOfTriangle[t] = found->second;
     }
   }
   // Whether a closest point lies on a flat face or its border, decided by the vertices of the
@@ -197,7 +213,7 @@ WallParticles generateShellParticles(const TriangleMesh& wall, const LatticeSoli
     return false;
   };
   std::vector<ShellCandidate> candidates;
-  addFaceLatticeCandidates(wall, tree, planarFaces, spacing, layers, candidates);
+  addFaceLatticeCandidates(wall, tree, planarFaces, planarOfTriangle, spacing, layers, candidates);
   // Cells a whole number of lattice spacings wide, so each lattice point is in exactly one.
   const double cellSize = spacing * std::ceil(reach / spacing);
   const auto cells = cellsNearWall(wall, cellSize, reach);

@@ -45,8 +45,9 @@ struct WallParticles {
 // the right total on a curved wall.
 //
 // Flat faces (`planarFaces`, PlanarFaces.h) come first and exactly: every point of a face's own
-// lattice (its layers, and in-plane rows continued past its edges) whose nearest wall point
-// lies on that face or its border is a candidate, before any projected one. Behind the face
+// lattice (its layers, and in-plane rows continued past its edges) for which that face (or its
+// border) is among the nearest walls is a candidate, before any projected one; a tie between
+// two faces is decided by distance, so that round-off cannot drop a point on a ridge's diagonal. Behind the face
 // they are the face's square lattice at the exact layer distances, tilted or not; past a convex
 // edge of the cavity they fill the corner (where two faces at a right angle meet, the two
 // lattices continue into the same points, as on an axis-aligned box). The projected lattice
