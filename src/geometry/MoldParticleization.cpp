@@ -255,8 +255,8 @@ ParticleizedMold particleizeMold(const CaseFolder& caseFolder) {
     const auto planarFaces = findPlanarFaces(shell.wall, shell.cavityBoundary, spacing);
     const auto tilted = std::count_if(planarFaces.begin(), planarFaces.end(),
                                       [](const PlanarFace& face) { return !face.globalLattice; });
-    info() << "Shell walls: " << planarFaces.size() << " flat faces on their own lattice (" << tilted
-           << " of them tilted to the axes), the rest follow the curved wall\n";
+    info() << "Shell walls: flat faces on their own lattice " << planarFaces.size()
+           << " (tilted to the axes " << tilted << "); other faces follow their curvature\n";
     appendParticles(generateShellParticles(shell.wall, cavity, spacing, mold.wallLayers, patchCount,
                                            planarFaces));
   }
