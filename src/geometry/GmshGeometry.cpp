@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <map>
+#include <set>
 #include <sstream>
 
 #include "core/Error.h"
@@ -37,7 +38,11 @@ std::vector<PhysicalGroup> listPhysicalGroups() {
     box = {1e300, 1e300, 1e300, -1e300, -1e300, -1e300};
     for (const int entity : entities) {
       std::array<double, 6> b{};
-      gmsh::model::getBoundingBox(dimension, entity, b[0], b[1], b[2], b[3], b[4], b[5]);
+      try {
+        gmsh::model::getBoundingBox(dimension, entity, b[0], b[1], b[2], b[3], b[4], b[5]);
+      } catch (...) {
+        continue;  // a discrete entity of a .msh without elements has no box
+      }
       for (std::size_t axis = 0; axis < 3; ++axis) {
         box[axis] = std::min(box[axis], b[axis]);
         box[axis + 3] = std::max(box[axis + 3], b[axis + 3]);
@@ -56,6 +61,51 @@ std::vector<int> entitiesOf(const PhysicalGroup& group) {
 
 }  // namespace
 
+void meshSurfacesForParticles(double maxTriangleSize) {
+  // A plane is exact with triangles of any size, and so is a straight edge between planes: only
+  // what is curved, and the edges and corners that bound it, need triangles of maxTriangleSize.
+  std::set<int> coarseSurfaces, coarseCurves, coarsePoints;
+  gmsh::vectorpair entities;
+  gmsh::model::getEntities(entities, 2);
+  for (const auto& [dimension, tag] : entities) {
+    std::string type;
+    gmsh::model::getType(dimension, tag, type);
+    if (type == "Plane") coarseSurfaces.insert(tag);
+  }
+  // Whether every entity of `upward` is in `coarse`.
+  const auto allIn = [](const std::vector<int>& upward, const std::set<int>& coarse) {
+    return std::all_of(upward.begin(), upward.end(),
+                       [&](int tag) { return coarse.count(std::abs(tag)) > 0; });
+  };
+  gmsh::model::getEntities(entities, 1);
+  for (const auto& [dimension, tag] : entities) {
+    std::string type;
+    gmsh::model::getType(dimension, tag, type);
+    std::vector<int> upward, downward;
+    gmsh::model::getAdjacencies(dimension, tag, upward, downward);
+    if (type == "Line" && allIn(upward, coarseSurfaces)) coarseCurves.insert(tag);
+  }
+  gmsh::model::getEntities(entities, 0);
+  for (const auto& [dimension, tag] : entities) {
+    std::vector<int> upward, downward;
+    gmsh::model::getAdjacencies(dimension, tag, upward, downward);
+    if (allIn(upward, coarseCurves)) coarsePoints.insert(tag);
+  }
+  double x0 = 0, y0 = 0, z0 = 0, x1 = 0, y1 = 0, z1 = 0;
+  gmsh::model::getBoundingBox(-1, -1, x0, y0, z0, x1, y1, z1);
+  const double coarseSize = std::max({x1 - x0, y1 - y0, z1 - z0, maxTriangleSize});
+  gmsh::option::setNumber("Mesh.MeshSizeMax", coarseSize);
+  gmsh::model::mesh::setSizeCallback(
+      [=](int dimension, int tag, double, double, double) {
+        const bool coarse = (dimension == 2 && coarseSurfaces.count(tag) > 0) ||
+                            (dimension == 1 && coarseCurves.count(tag) > 0) ||
+                            (dimension == 0 && coarsePoints.count(tag) > 0);
+        return coarse ? coarseSize : maxTriangleSize;
+      });
+  gmsh::model::mesh::generate(2);
+  gmsh::model::mesh::removeSizeCallback();
+}
+
 GmshGeometry::GmshGeometry(const std::filesystem::path& file, double maxTriangleSize)
     : file_(file) {
   if (!std::filesystem::is_regular_file(file)) {
@@ -72,10 +122,7 @@ GmshGeometry::GmshGeometry(const std::filesystem::path& file, double maxTriangle
     gmsh::open(file.string());
     groups_ = listPhysicalGroups();
     if (maxTriangleSize > 0.0) {
-      if (extension == ".geo") {
-        gmsh::option::setNumber("Mesh.MeshSizeMax", maxTriangleSize);
-        gmsh::model::mesh::generate(2);
-      }
+      if (extension == ".geo") meshSurfacesForParticles(maxTriangleSize);
       std::vector<std::size_t> tags;
       std::vector<double> coordinates, parametric;
       gmsh::model::mesh::getNodes(tags, coordinates, parametric, -1, -1, false, false);
@@ -139,9 +186,11 @@ TriangleMesh GmshGeometry::surfaceTriangles(const std::vector<std::pair<int, int
                   c = vertexIndex(nodes[e + 2]);
         mesh.triangles.push_back({a, b, c});
         mesh.owners.push_back(owner);
+        mesh.faces.push_back(surface);
         if (type == 3 || type == 16 || type == 10) {
           mesh.triangles.push_back({a, c, vertexIndex(nodes[e + 3])});
           mesh.owners.push_back(owner);
+          mesh.faces.push_back(surface);
         }
       }
     }
@@ -193,7 +242,13 @@ TriangleMesh GmshGeometry::boundaryOfVolumes(const std::vector<int>& volumeTags)
     if (dimension == 2) surfaces.emplace_back(std::abs(tag), 0);
   }
   TriangleMesh mesh = surfaceTriangles(surfaces);
-  if (mesh.size() == 0) mesh = tetrahedraBoundary(volumeTags);
+  // A .msh may lack the boundary's surface elements (MSH 2.2 keeps no topology; gmsh saves only
+  // the elements of physical groups, so an unnamed lid is missing): the faces of the tetrahedra
+  // then give the closed boundary.
+  if (mesh.size() == 0 || mesh.freeEdgeCount() > 0) {
+    TriangleMesh fromTetrahedra = tetrahedraBoundary(volumeTags);
+    if (fromTetrahedra.size() > 0) mesh = std::move(fromTetrahedra);
+  }
   return mesh;
 }
 
@@ -235,17 +290,49 @@ std::vector<int> GmshGeometry::volumesOf(const PhysicalGroup& volumeGroup) const
   return entitiesOf(volumeGroup);
 }
 
+std::vector<int> GmshGeometry::volumesMeshedAgainst(int surface) const {
+  // The surface's first triangle, as sorted vertex indices.
+  std::vector<std::size_t> triangleTags, triangleNodes;
+  gmsh::model::mesh::getElementsByType(2, triangleTags, triangleNodes, surface);
+  if (triangleNodes.size() < 3) return {};
+  std::array<int, 3> probe = {vertexIndex(triangleNodes[0]), vertexIndex(triangleNodes[1]),
+                              vertexIndex(triangleNodes[2])};
+  std::sort(probe.begin(), probe.end());
+  std::vector<int> volumes;
+  gmsh::vectorpair entities;
+  gmsh::model::getEntities(entities, 3);
+  for (const auto& [dimension, volume] : entities) {
+    std::vector<std::size_t> elementTags, nodeTags;
+    gmsh::model::mesh::getElementsByType(4, elementTags, nodeTags, volume);
+    for (std::size_t e = 0; e + 4 <= nodeTags.size(); e += 4) {
+      std::array<int, 4> v = {vertexIndex(nodeTags[e]), vertexIndex(nodeTags[e + 1]),
+                              vertexIndex(nodeTags[e + 2]), vertexIndex(nodeTags[e + 3])};
+      std::sort(v.begin(), v.end());
+      // The probe is a face of this tetrahedron when its three vertices are among the four.
+      if (std::includes(v.begin(), v.end(), probe.begin(), probe.end())) {
+        volumes.push_back(volume);
+        break;
+      }
+    }
+  }
+  return volumes;
+}
+
 std::vector<int> GmshGeometry::volumesBoundedBy(const PhysicalGroup& surfaceGroup) const {
   std::vector<int> volumes;
   for (const int surface : entitiesOf(surfaceGroup)) {
     std::vector<int> upward, downward;
     gmsh::model::getAdjacencies(2, surface, upward, downward);
+    if (upward.empty()) upward = volumesMeshedAgainst(surface);
     if (upward.size() != 1) {
       std::ostringstream message;
       message << "cannot tell which side of physical group '" << surfaceGroup.name
               << "' is the cavity: its surface " << surface << " in '" << file_.string()
               << "' bounds " << upward.size()
-              << " volumes; the shell goes outside the one volume (the cavity) its surfaces bound";
+              << " volumes; the shell goes outside the one volume (the cavity) its surfaces bound"
+              << (upward.empty() && file_.extension() == ".msh"
+                      ? " (a .msh must hold that volume's tetrahedra: mesh it in 3D, or give the .geo)"
+                      : "");
       throw Error(message.str());
     }
     volumes.push_back(upward.front());

@@ -9,9 +9,15 @@
 
 namespace sphcast {
 
-// One gmsh file opened for particle generation: a .geo is meshed on the fly (surfaces only,
-// triangles no larger than maxTriangleSize; not at all when maxTriangleSize is 0, for a look at
-// the physical groups alone); a .msh (2.2 or 4.1) is used as it is.
+// Meshes the surfaces of gmsh's current model for particle generation: triangles no larger
+// than maxTriangleSize on curved surfaces and on the curves and points that bound them; planes
+// and straight edges between planes, exact with triangles of any size, as coarse as gmsh likes
+// (the model's size). A .msh written after this call meshes as particleizeMold meshes a .geo.
+void meshSurfacesForParticles(double maxTriangleSize);
+
+// One gmsh file opened for particle generation: a .geo is meshed on the fly
+// (meshSurfacesForParticles; not at all when maxTriangleSize is 0, for a look at the physical
+// groups alone); a .msh (2.2 or 4.1) is used as it is.
 // gmsh keeps a single global model, so only one GmshGeometry may exist at a time; it
 // finalises gmsh when destroyed. gmsh's errors become an Error naming the file.
 class GmshGeometry {
@@ -51,6 +57,8 @@ class GmshGeometry {
   // Fallback for meshes without surface elements: the faces of the tetrahedra used once.
   TriangleMesh tetrahedraBoundary(const std::vector<int>& volumeTags) const;
   int vertexIndex(std::size_t nodeTag) const;
+  // For a mesh without topology (MSH 2.2): the volumes with a tetrahedron on the surface.
+  std::vector<int> volumesMeshedAgainst(int surface) const;
 
   std::filesystem::path file_;
   std::vector<PhysicalGroup> groups_;

@@ -252,7 +252,13 @@ ParticleizedMold particleizeMold(const CaseFolder& caseFolder) {
   };
   for (const auto& shell : shells) {
     const LatticeSolid cavity(shell.cavityBoundary, spacing);
-    appendParticles(generateShellParticles(shell.wall, cavity, spacing, mold.wallLayers, patchCount));
+    const auto planarFaces = findPlanarFaces(shell.wall, shell.cavityBoundary, spacing);
+    const auto tilted = std::count_if(planarFaces.begin(), planarFaces.end(),
+                                      [](const PlanarFace& face) { return !face.globalLattice; });
+    info() << "Shell walls: flat faces on their own lattice " << planarFaces.size()
+           << " (tilted to the axes " << tilted << "); other faces follow their curvature\n";
+    appendParticles(generateShellParticles(shell.wall, cavity, spacing, mold.wallLayers, patchCount,
+                                           planarFaces));
   }
   for (const auto& volume : volumes) {
     WallParticles filled = fillVolumeParticles(volume.boundary, spacing, volume.patch);

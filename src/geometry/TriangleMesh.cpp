@@ -74,9 +74,20 @@ Eigen::Vector3d TriangleMesh::upper() const {
 }
 
 std::size_t TriangleMesh::freeEdgeCount() const {
-  const auto uses = edgeUses(*this);
-  return static_cast<std::size_t>(
-      std::count_if(uses.begin(), uses.end(), [](const auto& use) { return use.second == 1; }));
+  // Sorted edges: a free edge is one that differs from both its neighbours in the order.
+  std::vector<Edge> edges;
+  edges.reserve(3 * triangles.size());
+  for (const auto& triangle : triangles) {
+    for (int edge = 0; edge < 3; ++edge) edges.push_back(edgeOf(triangle, edge));
+  }
+  std::sort(edges.begin(), edges.end());
+  std::size_t free = 0;
+  for (std::size_t e = 0; e < edges.size(); ++e) {
+    const bool sameAsPrevious = e > 0 && edges[e - 1] == edges[e];
+    const bool sameAsNext = e + 1 < edges.size() && edges[e + 1] == edges[e];
+    if (!sameAsPrevious && !sameAsNext) ++free;
+  }
+  return free;
 }
 
 void TriangleMesh::removeUnusedVertices() {
@@ -102,6 +113,55 @@ void TriangleMesh::append(const TriangleMesh& other) {
     triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
   }
   owners.insert(owners.end(), other.owners.begin(), other.owners.end());
+  if (!faces.empty() || !other.faces.empty()) {
+    faces.resize(triangles.size() - other.size(), -1);
+    if (other.faces.empty()) {
+      faces.resize(triangles.size(), -1);
+    } else {
+      faces.insert(faces.end(), other.faces.begin(), other.faces.end());
+    }
+  }
+}
+
+bool TriangleMesh::encloses(const Eigen::Vector3d& p) const {
+  // Directions with no simple ratio between their components, so that no axis-aligned or
+  // diagonal edge of a drawn mold is parallel to them.
+  const std::array<Eigen::Vector3d, 4> directions = {
+      Eigen::Vector3d(0.5773502691896258, 0.3141592653589793, 0.7548776662466927).normalized(),
+      Eigen::Vector3d(-0.2718281828459045, 0.8660254037844386, 0.4142135623730951).normalized(),
+      Eigen::Vector3d(0.6180339887498949, -0.5772156649015329, -0.3819660112501051).normalized(),
+      Eigen::Vector3d(-0.7071067811865476, -0.1234567890123457, 0.6931471805599453).normalized()};
+  // Barycentric margin below which a crossing is too close to an edge to count reliably.
+  constexpr double grazing = 1e-9;
+  bool inside = false;
+  for (const Eigen::Vector3d& direction : directions) {
+    int crossings = 0;
+    bool ambiguous = false;
+    for (const auto& t : triangles) {
+      const Eigen::Vector3d& a = vertices[static_cast<std::size_t>(t[0])];
+      const Eigen::Vector3d ab = vertices[static_cast<std::size_t>(t[1])] - a;
+      const Eigen::Vector3d ac = vertices[static_cast<std::size_t>(t[2])] - a;
+      const Eigen::Vector3d normalOfRay = direction.cross(ac);
+      const double determinant = ab.dot(normalOfRay);
+      if (std::abs(determinant) < 1e-300) continue;  // parallel to the triangle
+      const Eigen::Vector3d ap = p - a;
+      const double u = ap.dot(normalOfRay) / determinant;
+      if (u < -grazing || u > 1.0 + grazing) continue;
+      const Eigen::Vector3d apCrossAb = ap.cross(ab);
+      const double v = direction.dot(apCrossAb) / determinant;
+      if (v < -grazing || u + v > 1.0 + grazing) continue;
+      const double along = ac.dot(apCrossAb) / determinant;
+      if (along <= 0.0) continue;
+      if (u < grazing || v < grazing || u + v > 1.0 - grazing) {
+        ambiguous = true;
+        break;
+      }
+      ++crossings;
+    }
+    inside = crossings % 2 == 1;
+    if (!ambiguous) break;
+  }
+  return inside;
 }
 
 ClosestPoint closestPointOnTriangle(const Eigen::Vector3d& p, const Eigen::Vector3d& a,

@@ -13,6 +13,8 @@ struct TriangleMesh {
   std::vector<Eigen::Vector3d> vertices;
   std::vector<std::array<int, 3>> triangles;
   std::vector<int> owners;  // one per triangle
+  // The CAD face (gmsh surface entity) of each triangle, where known; empty when not.
+  std::vector<int> faces;
 
   std::size_t size() const { return triangles.size(); }
   double area() const;
@@ -27,6 +29,10 @@ struct TriangleMesh {
   void removeUnusedVertices();
   // Appends another mesh (vertices are not merged across meshes).
   void append(const TriangleMesh& other);
+  // Whether p lies inside the closed surface, by the parity of the surface's crossings of a ray
+  // from p (Moller & Trumbore, "Fast, minimum storage ray-triangle intersection", 1997); a ray
+  // that grazes an edge or a vertex is cast again in another direction. O(triangles) per call.
+  bool encloses(const Eigen::Vector3d& p) const;
 };
 
 // Which part of a triangle a closest point lies on: its inside, an edge (0: v0v1, 1: v1v2,

@@ -2,6 +2,7 @@
 
 #include <Eigen/Geometry>
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -62,6 +63,7 @@ struct ShellCandidate {
   double offLayer;  // how far the lattice point was moved to reach its layer
   int owner;
   int layer;
+  bool onFaceLattice;  // from a flat face's own lattice: its volume is dx^3
 };
 
 // Lattice cells of size `cellSize` that a triangle, grown by `reach`, touches: sorted, so the
@@ -96,18 +98,127 @@ std::vector<std::array<std::int64_t, 3>> cellsNearWall(const TriangleMesh& wall,
   return cells;
 }
 
+// The given triangles of `wall`, as a mesh of their own.
+TriangleMesh subMesh(const TriangleMesh& wall, const std::vector<int>& triangles) {
+  TriangleMesh mesh;
+  std::unordered_map<int, int> newIndex;
+  for (const int t : triangles) {
+    std::array<int, 3> triangle{};
+    for (std::size_t corner = 0; corner < 3; ++corner) {
+      const int v = wall.triangles[static_cast<std::size_t>(t)][corner];
+      const auto [entry, added] = newIndex.try_emplace(v, static_cast<int>(mesh.vertices.size()));
+      if (added) mesh.vertices.push_back(wall.vertices[static_cast<std::size_t>(v)]);
+      triangle[corner] = entry->second;
+    }
+    mesh.triangles.push_back(triangle);
+    mesh.owners.push_back(wall.owners[static_cast<std::size_t>(t)]);
+  }
+  return mesh;
+}
+
+// The candidates of the flat faces' own lattices (see WallParticles.h), appended to `candidates`.
+void addFaceLatticeCandidates(const TriangleMesh& wall, const TriangleDistanceTree& tree,
+                              const std::vector<PlanarFace>& planarFaces,
+                              const std::vector<int>& planarOfTriangle, double spacing, int layers,
+                              std::vector<ShellCandidate>& candidates) {
+  const double reach = (layers + 0.5) * spacing;
+  std::vector<std::vector<int>> trianglesOfFace(planarFaces.size());
+  for (std::size_t t = 0; t < planarOfTriangle.size(); ++t) {
+    if (planarOfTriangle[t] < 0) continue;
+    trianglesOfFace[static_cast<std::size_t>(planarOfTriangle[t])].push_back(static_cast<int>(t));
+  }
+  for (std::size_t f = 0; f < planarFaces.size(); ++f) {
+    const PlanarFace& face = planarFaces[f];
+    const TriangleMesh faceMesh = subMesh(wall, trianglesOfFace[f]);
+    const TriangleDistanceTree faceTree(faceMesh);
+    const auto first = [&](double lower) {
+      return static_cast<std::int64_t>(std::floor(lower / spacing)) - layers - 1;
+    };
+    const auto last = [&](double upper) {
+      return static_cast<std::int64_t>(std::ceil(upper / spacing)) + layers;
+    };
+    for (int layer = 0; layer < layers; ++layer) {
+      for (std::int64_t j = first(face.lower.y()); j <= last(face.upper.y()); ++j) {
+        for (std::int64_t i = first(face.lower.x()); i <= last(face.upper.x()); ++i) {
+          const Eigen::Vector3d p = face.origin + face.axis1 * latticeCoordinate(i, spacing) +
+                                    face.axis2 * latticeCoordinate(j, spacing) -
+                                    face.normal * ((layer + 0.5) * spacing);
+          const ClosestPoint hit = tree.closest(p, reach);
+          if (hit.triangle < 0 || hit.distance < 1e-9 * spacing || tree.onFreeBorder(hit)) continue;
+          // This face (or its border) must be the nearest wall, or tie with it: p is then behind
+          // the face, or past one of its convex edges, and in the mold material either way. A
+          // tie (p as far from two faces meeting at a ridge of the material) is decided by
+          // distances, not by which triangle the search met first, so that the point is kept
+          // however round-off orders the two.
+          const ClosestPoint onFace = faceTree.closest(p, reach);
+          if (onFace.triangle < 0 || onFace.distance > hit.distance + 1e-9 * spacing) continue;
+          const Eigen::Vector3d outOfMaterial = (onFace.point - p) / onFace.distance;
+          const bool behindTheFace = outOfMaterial.dot(face.normal) > 1.0 - 1e-9;
+          const int bandLayer =
+              behindTheFace
+                  ? layer
+                  : std::clamp(static_cast<int>(std::lround(onFace.distance / spacing - 0.5)), 0,
+                               layers - 1);
+          candidates.push_back({p, behindTheFace ? face.normal : outOfMaterial, onFace.distance,
+                                0.0, faceMesh.owners[static_cast<std::size_t>(onFace.triangle)],
+                                bandLayer, true});
+        }
+      }
+    }
+  }
+}
+
 }  // namespace
 
 WallParticles generateShellParticles(const TriangleMesh& wall, const LatticeSolid& cavity,
-                                     double spacing, int layers, int patchCount) {
+                                     double spacing, int layers, int patchCount,
+                                     const std::vector<PlanarFace>& planarFaces) {
   const TriangleDistanceTree tree(wall);
   const double reach = (layers + 0.5) * spacing;
+  // Which flat face each triangle is on (-1: none).
+  std::vector<int> planarOfTriangle(wall.size(), -1);
+  if (wall.faces.size() == wall.size()) {
+    std::unordered_map<int, int> planarOfFace;
+    for (std::size_t f = 0; f < planarFaces.size(); ++f) {
+      planarOfFace[planarFaces[f].face] = static_cast<int>(f);
+    }
+    for (std::size_t t = 0; t < wall.size(); ++t) {
+      const auto found = planarOfFace.find(wall.faces[t]);
+      if (found != planarOfFace.end()) planarOfTriangle[t] = found->second;
+    }
+  }
+  // Whether a closest point lies on a flat face or its border, decided by the vertices of the
+  // feature it lies on, so that a tie between the triangles on both sides of an edge cannot
+  // change the answer.
+  std::vector<bool> vertexOnFlatFace(wall.vertices.size(), false);
+  for (std::size_t t = 0; t < wall.size(); ++t) {
+    if (planarOfTriangle[t] < 0) continue;
+    for (const int v : wall.triangles[t]) vertexOnFlatFace[static_cast<std::size_t>(v)] = true;
+  }
+  const auto nearestIsFlat = [&](const ClosestPoint& hit) {
+    const auto triangle = static_cast<std::size_t>(hit.triangle);
+    const auto& t = wall.triangles[triangle];
+    const auto on = [&](std::size_t corner) -> bool {
+      return vertexOnFlatFace[static_cast<std::size_t>(t[corner])];
+    };
+    switch (hit.feature) {
+      case TriangleFeature::face: return planarOfTriangle[triangle] >= 0;
+      case TriangleFeature::edge0: return on(0) && on(1);
+      case TriangleFeature::edge1: return on(1) && on(2);
+      case TriangleFeature::edge2: return on(2) && on(0);
+      case TriangleFeature::vertex0: return on(0);
+      case TriangleFeature::vertex1: return on(1);
+      case TriangleFeature::vertex2: return on(2);
+    }
+    return false;
+  };
+  std::vector<ShellCandidate> candidates;
+  addFaceLatticeCandidates(wall, tree, planarFaces, planarOfTriangle, spacing, layers, candidates);
   // Cells a whole number of lattice spacings wide, so each lattice point is in exactly one.
   const double cellSize = spacing * std::ceil(reach / spacing);
   const auto cells = cellsNearWall(wall, cellSize, reach);
   const auto latticePerCell = static_cast<std::int64_t>(std::llround(cellSize / spacing));
 
-  std::vector<ShellCandidate> candidates;
   // Lattice points per patch and band [k dx, (k+1) dx) behind the wall: the band volumes.
   std::vector<double> bandPoints(static_cast<std::size_t>(patchCount * layers), 0.0);
   for (const auto& cell : cells) {
@@ -121,6 +232,9 @@ WallParticles generateShellParticles(const TriangleMesh& wall, const LatticeSoli
           if (tree.onFreeBorder(hit) || cavity.contains(p)) continue;
           const int owner = wall.owners[static_cast<std::size_t>(hit.triangle)];
           const auto band = static_cast<int>(std::floor(hit.distance / spacing));
+          // Nearest to a flat face: the face's own lattice has its particles there already (and
+          // their volume is dx^3), straight behind it or past its edges.
+          if (nearestIsFlat(hit)) continue;
           if (band < layers) bandPoints[static_cast<std::size_t>(owner * layers + band)] += 1.0;
           const Eigen::Vector3d outOfMaterial = (hit.point - p) / hit.distance;
           // The one or two layers nearest to this point's distance.
@@ -131,7 +245,7 @@ WallParticles generateShellParticles(const TriangleMesh& wall, const LatticeSoli
             const double layerDistance = (layer + 0.5) * spacing;
             candidates.push_back({hit.point - outOfMaterial * layerDistance, outOfMaterial,
                                   layerDistance, std::abs(hit.distance - layerDistance), owner,
-                                  layer});
+                                  layer, false});
           }
         }
       }
@@ -162,6 +276,7 @@ WallParticles generateShellParticles(const TriangleMesh& wall, const LatticeSoli
 
   std::vector<double> layerCounts(bandPoints.size(), 0.0);
   for (const std::size_t c : kept) {
+    if (candidates[c].onFaceLattice) continue;
     layerCounts[static_cast<std::size_t>(candidates[c].owner * layers + candidates[c].layer)] += 1.0;
   }
   WallParticles shell;
@@ -172,8 +287,9 @@ WallParticles generateShellParticles(const TriangleMesh& wall, const LatticeSoli
     shell.positions.push_back(candidate.position);
     shell.normals.push_back(candidate.normal);
     shell.wallDistances.push_back(candidate.wallDistance);
-    shell.volumes.push_back(bandPoints[band] > 0.0 ? cellVolume * bandPoints[band] / layerCounts[band]
-                                                    : cellVolume);
+    const bool sharesItsBand = !candidate.onFaceLattice && bandPoints[band] > 0.0;
+    shell.volumes.push_back(sharesItsBand ? cellVolume * bandPoints[band] / layerCounts[band]
+                                          : cellVolume);
     shell.owners.push_back(candidate.owner);
   }
   return shell;
@@ -185,7 +301,15 @@ WallParticles fillVolumeParticles(const TriangleMesh& boundary, double spacing, 
   WallParticles volume;
   volume.positions = solid.interiorPoints();
   const double cellVolume = spacing * spacing * spacing;
-  for (const Eigen::Vector3d& p : volume.positions) {
+  const auto count = static_cast<std::ptrdiff_t>(volume.size());
+  volume.normals.resize(volume.size());
+  volume.wallDistances.resize(volume.size());
+  volume.volumes.assign(volume.size(), cellVolume);
+  volume.owners.assign(volume.size(), patch);
+  // Each point's nearest wall on its own: the same result on any number of threads.
+#pragma omp parallel for schedule(dynamic, 4096)
+  for (std::ptrdiff_t i = 0; i < count; ++i) {
+    const Eigen::Vector3d& p = volume.positions[static_cast<std::size_t>(i)];
     const ClosestPoint hit = tree.closest(p, std::numeric_limits<double>::max());
     Eigen::Vector3d outward;
     if (hit.distance > 1e-9 * spacing) {
@@ -197,10 +321,8 @@ WallParticles fillVolumeParticles(const TriangleMesh& boundary, double spacing, 
                     .cross(boundary.vertices[static_cast<std::size_t>(t[2])] - a)
                     .normalized();
     }
-    volume.normals.push_back(outward);
-    volume.wallDistances.push_back(hit.distance);
-    volume.volumes.push_back(cellVolume);
-    volume.owners.push_back(patch);
+    volume.normals[static_cast<std::size_t>(i)] = outward;
+    volume.wallDistances[static_cast<std::size_t>(i)] = hit.distance;
   }
   return volume;
 }
@@ -234,7 +356,11 @@ std::vector<SpacingStatistics> nearestNeighbourStatistics(const WallParticles& p
   }
   std::vector<SpacingStatistics> statistics(static_cast<std::size_t>(ownerCount));
   for (auto& s : statistics) s.min = std::numeric_limits<double>::max();
-  for (std::size_t i = 0; i < particles.size(); ++i) {
+  std::vector<double> nearestOf(particles.size());
+  const auto count = static_cast<std::ptrdiff_t>(particles.size());
+#pragma omp parallel for schedule(dynamic, 4096)
+  for (std::ptrdiff_t n = 0; n < count; ++n) {
+    const auto i = static_cast<std::size_t>(n);
     double nearestSquared = searchRadius * searchRadius;
     grid.forEachNear(particles.positions[i], [&](int j) {
       if (static_cast<std::size_t>(j) == i) return;
@@ -242,7 +368,10 @@ std::vector<SpacingStatistics> nearestNeighbourStatistics(const WallParticles& p
           nearestSquared, (particles.positions[static_cast<std::size_t>(j)] - particles.positions[i])
                               .squaredNorm());
     });
-    const double nearest = std::sqrt(nearestSquared);
+    nearestOf[i] = std::sqrt(nearestSquared);
+  }
+  for (std::size_t i = 0; i < particles.size(); ++i) {
+    const double nearest = nearestOf[i];
     auto& s = statistics[static_cast<std::size_t>(particles.owners[i])];
     ++s.count;
     s.min = std::min(s.min, nearest);

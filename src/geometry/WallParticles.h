@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "geometry/LatticeSolid.h"
+#include "geometry/PlanarFaces.h"
 #include "geometry/TriangleMesh.h"
 
 namespace sphcast {
@@ -38,11 +39,22 @@ struct WallParticles {
 // Wall points whose nearest wall point is on the free border of the wall (an edge used by one
 // triangle: the rim of an open mold) are left out, so the shell ends flush with the rim instead
 // of curling around it.
-// A particle's volume is the volume of its layer band [k dx, (k+1) dx) behind its patch (counted
-// on the lattice) shared among the particles of that layer and patch: exactly dx^3 on a flat
-// wall, and the right total on a curved one.
+// A particle of a flat face's lattice (below) has the volume dx^3 of its lattice cell. Any
+// other particle's volume is the volume of its layer band [k dx, (k+1) dx) behind the curved
+// walls of its patch (counted on the lattice) shared among that layer's projected particles:
+// the right total on a curved wall.
+//
+// Flat faces (`planarFaces`, PlanarFaces.h) come first and exactly: every point of a face's own
+// lattice (its layers, and in-plane rows continued past its edges) for which that face (or its
+// border) is among the nearest walls is a candidate, before any projected one; a tie between
+// two faces is decided by distance, so that round-off cannot drop a point on a ridge's diagonal. Behind the face
+// they are the face's square lattice at the exact layer distances, tilted or not; past a convex
+// edge of the cavity they fill the corner (where two faces at a right angle meet, the two
+// lattices continue into the same points, as on an axis-aligned box). The projected lattice
+// points then only fill what remains: curved walls and what lies between unlike lattices.
 WallParticles generateShellParticles(const TriangleMesh& wall, const LatticeSolid& cavity,
-                                     double spacing, int layers, int patchCount);
+                                     double spacing, int layers, int patchCount,
+                                     const std::vector<PlanarFace>& planarFaces = {});
 
 // Every lattice point inside the closed surface `boundary`, with volume dx^3; normal and wall
 // distance refer to the nearest point of `boundary`; owner is `patch`.

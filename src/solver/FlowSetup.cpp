@@ -23,6 +23,29 @@ Value positive(const Dictionary& dict, const std::string& key, const Dimensions&
   return value;
 }
 
+// periodic { x (0 0.2); z (-0.01 0.01); }: each axis named with its interval [lower, upper).
+void readPeriodicAxes(const Dictionary& periodic, FlowSettings& settings) {
+  const std::vector<std::string> axes{"x", "y", "z"};
+  periodic.checkKeys(axes);
+  for (int axis = 0; axis < 3; ++axis) {
+    const std::string& key = axes[static_cast<std::size_t>(axis)];
+    if (!periodic.found(key)) continue;
+    const auto interval = periodic.get<Eigen::Vector2d>(key, length);
+    const double period = interval[1] - interval[0];
+    // the minimum image is unique only for pairs closer than half a period
+    if (!(period > 2 * static_cast<double>(settings.supportRadius))) {
+      throw DictionaryError(periodic.location(key),
+                            "periodic interval of " + key + " must be longer than twice the " +
+                                "supportRadius (" + std::to_string(settings.supportRadius) +
+                                " m) in " + periodic.name());
+    }
+    if (settings.dimension == 2 && axis == 2) {
+      throw DictionaryError(periodic.location(key), "a 2D case has no periodic z axis");
+    }
+    settings.periodic.setPeriodic(axis, static_cast<Real>(interval[0]), static_cast<Real>(period));
+  }
+}
+
 }  // namespace
 
 FlowSetup readFlowSetup(const CaseFolder& caseFolder, const Vector& gravity) {
@@ -30,7 +53,7 @@ FlowSetup readFlowSetup(const CaseFolder& caseFolder, const Vector& gravity) {
   const auto modelsFile = caseFolder.constantFile("physicsModels");
   if (!std::filesystem::exists(modelsFile)) return setup;
   const Dictionary models = Dictionary::read(modelsFile);
-  models.checkKeys({"flow"});
+  models.checkKeys({"dimension", "periodic", "flow"});
   if (!models.found("flow")) return setup;
   const Dictionary& flow = models.subDict("flow");
   flow.checkKeys({"model", "fluid", "walls"});
@@ -40,13 +63,38 @@ FlowSetup readFlowSetup(const CaseFolder& caseFolder, const Vector& gravity) {
   setup.wallClouds = flow.getOrDefault<std::vector<std::string>>("walls", {});
 
   const Dictionary schemes = Dictionary::read(caseFolder.systemFile("sphSchemes"));
-  schemes.checkKeys({"densityScheme", "viscousForm", "supportRadius", "soundSpeed"});
-  setup.settings.densityScheme = schemes.getChoice("densityScheme", {"riemann", "standard"});
-  setup.settings.viscousForm = schemes.getChoice("viscousForm", {"Morris", "Cleary"});
-  setup.settings.supportRadius = positive<Real>(schemes, "supportRadius", length);
-  setup.settings.soundSpeed = positive<Real>(schemes, "soundSpeed", speed);
-  setup.settings.gravity = gravity;
-  setup.settings.dimension = 3;
+  schemes.checkKeys({"densityScheme", "kernelCorrection", "viscousForm", "supportRadius",
+                     "soundSpeed", "deltaSPHCoeffs"});
+  FlowSettings& settings = setup.settings;
+  settings.densityScheme = schemes.getChoice("densityScheme", {"riemann", "standard", "deltaSPH"});
+  settings.kernelCorrection =
+      schemes.getChoiceOrDefault("kernelCorrection", {"on", "off"}, "off") == "on";
+  settings.viscousForm = schemes.getChoice("viscousForm", {"Morris", "Cleary"});
+  settings.supportRadius = positive<Real>(schemes, "supportRadius", length);
+  settings.soundSpeed = positive<Real>(schemes, "soundSpeed", speed);
+  if (schemes.found("deltaSPHCoeffs")) {
+    const Dictionary& coeffs = schemes.subDict("deltaSPHCoeffs");
+    coeffs.checkKeys({"delta", "alpha"});
+    settings.deltaSPHDiffusion = coeffs.getOrDefault<Real>("delta", settings.deltaSPHDiffusion);
+    settings.deltaSPHViscosity = coeffs.getOrDefault<Real>("alpha", settings.deltaSPHViscosity);
+    for (const char* key : {"delta", "alpha"}) {
+      if (coeffs.found(key) && !(coeffs.get<Real>(key) >= 0)) {
+        throw DictionaryError(coeffs.location(key),
+                              std::string("'") + key + "' must not be negative in " + coeffs.name());
+      }
+    }
+  }
+  settings.gravity = gravity;
+  settings.dimension = models.getOrDefault<int>("dimension", 3);
+  if (settings.dimension != 2 && settings.dimension != 3) {
+    throw DictionaryError(models.location("dimension"),
+                          "'dimension' must be 2 or 3 in " + models.name());
+  }
+  if (settings.dimension == 2 && gravity[2] != 0) {
+    throw DictionaryError(models.location("dimension"),
+                          "a 2D case lies in the x-y plane, but constant/g has a z component");
+  }
+  if (models.found("periodic")) readPeriodicAxes(models.subDict("periodic"), settings);
 
   const Dictionary properties = Dictionary::read(caseFolder.constantFile("physicalProperties"));
   properties.checkKeys({setup.fluidCloud});

@@ -13,7 +13,13 @@ namespace sphcast {
 //
 //   constant/physicsModels:  flow { model weaklyCompressible; fluid metal; walls (mold); }
 //                            (model none, or no flow entry: clouds move ballistically)
-//   system/sphSchemes:       densityScheme riemann;      // riemann | standard
+//                            dimension 2;                // optional, 3 by default; 2D cases
+//                                                        // lie in the x-y plane at one z
+//                            periodic { x (0 0.2); }     // optional: periodic axes and their
+//                                                        // intervals, longer than 2 h
+//   system/sphSchemes:       densityScheme riemann;      // riemann | standard | deltaSPH
+//                            kernelCorrection on;        // optional, off by default
+//                            deltaSPHCoeffs { delta 0.1; alpha 0; }  // optional (deltaSPH)
 //                            viscousForm   Morris;       // Morris | Cleary
 //                            supportRadius 0.0045;       // h, m
 //                            soundSpeed    50;           // c of eq. (3), m/s

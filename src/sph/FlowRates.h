@@ -106,6 +106,30 @@ struct FluidPair {
   }
 };
 
+// The extra terms of deltaSPH (Antuono, Colagrossi, Marrone & Molteni 2010, Comput. Phys.
+// Commun. 181:532), added to the plain-mean pair of fluid particles i and j. Continuity gains the
+// density diffusion
+//   delta h c sum_j psi_ij . grad_i W_ij V_j,
+//   psi_ij = 2 (rho_j - rho_i) x_ji / |x_ji|^2 - (<grad rho>_i^L + <grad rho>_j^L),
+// whose renormalised-gradient term (KernelCorrection.h) cancels it on a hydrostatic density
+// profile, and momentum the artificial viscosity
+//   alpha h c rho_0 / rho_i sum_j pi_ij grad_i W_ij V_j,  pi_ij = v_ij . x_ij / |x_ij|^2.
+// `diffusion` is delta h c, `viscousScale` alpha h c rho_0 / rho_i; |x_ij|^2 carries the eta^2
+// of the viscous term.
+struct DeltaSPHPair {
+  static void accumulate(Real densityI, Real densityJ, const Vector& densityGradientI,
+                         const Vector& densityGradientJ, Real volumeJ, const Vector& vij,
+                         const Vector& xij, Real r, const Vector& gradW, Real diffusion,
+                         Real viscousScale, const FlowConstants& constants, Real& densityRate,
+                         Vector& acceleration) {
+    const Real inverseSquare = Real(1) / (r * r + constants.viscosityRegularisation);
+    const Vector psi = (Real(-2) * (densityJ - densityI) * inverseSquare) * xij -
+                       (densityGradientI + densityGradientJ);
+    densityRate += diffusion * volumeJ * psi.dot(gradW);
+    acceleration += (viscousScale * volumeJ * vij.dot(xij) * inverseSquare) * gradW;
+  }
+};
+
 // A wall particle k seen from fluid particle i: a mirror state (Adami, Hu & Adams 2012, J.
 // Comput. Phys. 231:7057; with the Riemann solver as Zhang, Hu & Adams 2017). Its pressure p_k
 // is extrapolated from the fluid around it (wallPressure), and its velocity mirrors the fluid's,

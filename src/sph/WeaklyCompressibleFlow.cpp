@@ -33,9 +33,10 @@ WeaklyCompressibleFlow::WeaklyCompressibleFlow(FlowSettings settings, ParticleCl
   if (settings_.dimension != 2 && settings_.dimension != 3) {
     throw Error("flow: dimension must be 2 or 3, not " + std::to_string(settings_.dimension));
   }
-  if (settings_.densityScheme != "riemann" && settings_.densityScheme != "standard") {
+  if (settings_.densityScheme != "riemann" && settings_.densityScheme != "standard" &&
+      settings_.densityScheme != "deltaSPH") {
     throw Error("unknown densityScheme '" + settings_.densityScheme +
-                "'; valid densityScheme are: (riemann standard)");
+                "'; valid densityScheme are: (riemann standard deltaSPH)");
   }
   if (settings_.viscousForm != "Morris" && settings_.viscousForm != "Cleary") {
     throw Error("unknown viscousForm '" + settings_.viscousForm +
@@ -51,6 +52,7 @@ WeaklyCompressibleFlow::WeaklyCompressibleFlow(FlowSettings settings, ParticleCl
     wallGrids_.emplace_back(settings_.supportRadius, settings_.periodic);
     wallGrids_.back().build(wall->positions());
   }
+  if (settings_.dimension == 2) requirePlane();
   wallNeighbours_.resize(walls_.size());
   fluidAroundWall_.resize(walls_.size());
   for (const ParticleCloud* wall : walls_) wallPressure_.emplace_back(wall->size(), Real(0));
@@ -63,6 +65,25 @@ WeaklyCompressibleFlow::WeaklyCompressibleFlow(FlowSettings settings, ParticleCl
     updatePressure();
     computeRates();
   }
+}
+
+// A 2D case keeps every particle, fluid and wall, at the z of the first fluid particle: the 2D
+// kernel counts no z distance, and a particle off the plane would interact as if it were on it.
+void WeaklyCompressibleFlow::requirePlane() const {
+  if (fluid_.size() == 0) return;
+  const Real plane = fluid_.positions()[0][2];
+  auto check = [plane](const ParticleCloud& cloud) {
+    const auto& x = cloud.positions();
+    for (std::size_t i = 0; i < x.size(); ++i) {
+      if (x[i][2] != plane) {
+        throw Error("flow: the case is 2D (dimension 2), but particle " + std::to_string(i) +
+                    " of cloud '" + cloud.name() + "' lies at z = " + std::to_string(x[i][2]) +
+                    ", off the plane z = " + std::to_string(plane) + " of the fluid");
+      }
+    }
+  };
+  check(fluid_);
+  for (const ParticleCloud* wall : walls_) check(*wall);
 }
 
 void WeaklyCompressibleFlow::findNeighbours() {
@@ -124,9 +145,56 @@ void WeaklyCompressibleFlow::extrapolateWallPressure() {
   }
 }
 
+// L_i of every fluid particle from its fluid and wall neighbours (walls complete the kernel
+// there, so a particle on a wall is corrected as an interior one) and, for deltaSPH, the
+// renormalised density gradient L_i sum_j V_j (rho_j - rho_i) grad_i W_ij of Antuono et al.
+// (2010), wall particles taking the density of their extrapolated pressure.
+template <int Dim>
+void WeaklyCompressibleFlow::computeCorrection() {
+  const WendlandC2Kernel<Dim> kernel(settings_.supportRadius);
+  const LinearEquationOfState eos{settings_.soundSpeed};
+  const PeriodicBox periodic = settings_.periodic;
+  const bool densityGradient = settings_.densityScheme == "deltaSPH";
+  const auto& x = fluid_.positions();
+  const auto& rho = fluid_.scalarField("rho");
+  const auto& mass = fluid_.scalarField("mass");
+  const auto& restDensity = fluid_.scalarField("restDensity");
+  correction_.resize(x.size());
+  densityGradient_.resize(densityGradient ? x.size() : 0);
+  auto separation = [periodic](const Vector& a, const Vector& b) {
+    return periodic.separation(a, b);
+  };
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    CorrectionMoment moment;
+    Vector gradientSum = Vector::Zero();
+    for (const std::uint32_t j : fluidNeighbours_.of(i)) {
+      const Vector xij = separation(x[i], x[j]);
+      const Real factor = kernel.derivativeOverDistance(xij.norm());
+      const Real volumeJ = mass[j] / rho[j];
+      moment.add(volumeJ, factor, xij);
+      gradientSum += (volumeJ * (rho[j] - rho[i]) * factor) * xij;
+    }
+    for (std::size_t w = 0; w < walls_.size(); ++w) {
+      const auto& wallX = walls_[w]->positions();
+      const auto& volume = walls_[w]->scalarField("volume");
+      for (const std::uint32_t k : wallNeighbours_[w].of(i)) {
+        const Vector xik = separation(x[i], wallX[k]);
+        const Real factor = kernel.derivativeOverDistance(xik.norm());
+        moment.add(volume[k], factor, xik);
+        const Real wallDensity = eos.density(wallPressure_[w][k], restDensity[i]);
+        gradientSum += (volume[k] * (wallDensity - rho[i]) * factor) * xik;
+      }
+    }
+    correction_[i] = correctionMatrix(moment.sum, Dim);
+    if (densityGradient) densityGradient_[i] = correction_[i] * gradientSum;
+  }
+}
+
 template <int Dim, class Interface, class Viscosity>
 void WeaklyCompressibleFlow::computeRatesFor() {
   extrapolateWallPressure<Dim>();
+  if (needsCorrectionMatrix()) computeCorrection<Dim>();
   const LinearEquationOfState eos{settings_.soundSpeed};
   const WendlandC2Kernel<Dim> kernel(settings_.supportRadius);
   const Real spacing = static_cast<Real>(fluid_.attributes().at("spacing"));
@@ -159,6 +227,16 @@ void WeaklyCompressibleFlow::computeRatesFor() {
   }
   const Real halfSpacing = Real(0.5) * spacing;
   const Vector gravity = settings_.gravity;
+  const bool corrected = settings_.kernelCorrection;
+  const Matrix* correction = correction_.data();
+  // deltaSPH: diffusion delta h c and artificial viscosity alpha h c, with h the smoothing
+  // length, half the Wendland support radius (Antuono et al. 2010 write W with support 2h)
+  const bool diffusive = settings_.densityScheme == "deltaSPH";
+  const Real smoothingLength = Real(0.5) * settings_.supportRadius;
+  const Real diffusion = settings_.deltaSPHDiffusion * smoothingLength * settings_.soundSpeed;
+  const Real artificialViscosity =
+      diffusive ? settings_.deltaSPHViscosity * smoothingLength * settings_.soundSpeed : Real(0);
+  const Vector* densityGradient = densityGradient_.data();
   const std::uint64_t* fluidOffsets = fluidNeighbours_.offsets().data();
   const std::uint32_t* fluidNeighbours = fluidNeighbours_.neighbours().data();
 
@@ -195,6 +273,9 @@ void WeaklyCompressibleFlow::computeRatesFor() {
       Vector accel = gravity;
       const bool interior = inBox && (xi.array() >= interiorLower.array()).all() &&
                             (xi.array() <= interiorUpper.array()).all();
+      const Matrix correctionI = corrected ? correction[i] : Matrix::Identity();
+      const Vector densityGradientI = diffusive ? densityGradient[i] : Vector::Zero();
+      const Real viscousScale = artificialViscosity * restDensity[i] / rho[i];
       Real xijX[chunk], xijY[chunk], xijZ[chunk], distance[chunk], gradientFactor[chunk];
       for (std::uint64_t first = fluidOffsets[i]; first < fluidOffsets[i + 1]; first += chunk) {
         const std::size_t pairs = std::min<std::uint64_t>(chunk, fluidOffsets[i + 1] - first);
@@ -216,9 +297,19 @@ void WeaklyCompressibleFlow::computeRatesFor() {
         for (std::size_t n = 0; n < pairs; ++n) {
           const std::uint32_t j = neighbourJ[n];
           const Vector xij(xijX[n], xijY[n], xijZ[n]);
+          const Vector gradW = gradientFactor[n] * xij;
+          // 0.5 (L_i + L_j) grad_i W_ij stays antisymmetric: momentum is conserved exactly
+          const Vector pairGradW =
+              corrected ? Vector(Real(0.5) * (correctionI * gradW + correction[j] * gradW))
+                        : gradW;
           FluidPair<Dim, Interface, Viscosity>::accumulate(
               self, {rho[j], p[j], v[j]}, mass[j], muI, mu[j], vi - v[j], xij, distance[n],
-              Vector(gradientFactor[n] * xij), constants, rate, accel);
+              pairGradW, constants, rate, accel);
+          if (diffusive) {
+            DeltaSPHPair::accumulate(rho[i], rho[j], densityGradientI, densityGradient[j],
+                                     mass[j] / rho[j], vi - v[j], xij, distance[n], gradW,
+                                     diffusion, viscousScale, constants, rate, accel);
+          }
         }
       }
       for (const WallArrays& wall : walls) {
@@ -228,9 +319,10 @@ void WeaklyCompressibleFlow::computeRatesFor() {
           const WallParticle particle{
               Vector::Zero(), wall.normal[k],   wall.volume[k],
               wall.depth[k],  wall.pressure[k], eos.density(wall.pressure[k], restDensity[i])};
-          accumulateWallPair<Dim, Interface, Viscosity>(self, muI, particle, halfSpacing, xik, r,
-                                                        kernel.gradient(xik, r), constants, rate,
-                                                        accel);
+          const Vector gradW = kernel.gradient(xik, r);
+          accumulateWallPair<Dim, Interface, Viscosity>(
+              self, muI, particle, halfSpacing, xik, r,
+              corrected ? Vector(correctionI * gradW) : gradW, constants, rate, accel);
         }
       }
       densityRate[i] = rate;
@@ -258,7 +350,7 @@ template <int Dim>
 void WeaklyCompressibleFlow::computeRatesInDimension() {
   if (settings_.densityScheme == "riemann") {
     computeRatesWithInterface<Dim, AcousticRiemannInterface>();
-  } else {
+  } else {  // standard, and deltaSPH whose extra terms are added in the same pass
     computeRatesWithInterface<Dim, ArithmeticMeanInterface>();
   }
 }

@@ -6,6 +6,7 @@
 #include "particles/CellGrid.h"
 #include "particles/NeighbourList.h"
 #include "particles/ParticleCloud.h"
+#include "sph/KernelCorrection.h"
 
 namespace sphcast {
 
@@ -16,7 +17,13 @@ struct FlowSettings {
   Real supportRadius = 0;      // h of the kernel, m
   Real soundSpeed = 0;         // c of eq. (3), m/s
   Vector gravity = Vector::Zero();
-  std::string densityScheme = "riemann";  // riemann | standard
+  std::string densityScheme = "riemann";  // riemann | standard | deltaSPH
+  // Kernel-gradient normalisation (KernelCorrection.h) of the pair gradients.
+  bool kernelCorrection = false;
+  // deltaSPH (Antuono et al. 2010): density diffusion delta and artificial viscosity alpha,
+  // both scaled by the smoothing length h/2 and c.
+  Real deltaSPHDiffusion = Real(0.1);
+  Real deltaSPHViscosity = Real(0);
   std::string viscousForm = "Morris";     // Morris | Cleary (FlowRates.h says why Morris)
   PeriodicBox periodic;
 };
@@ -31,8 +38,10 @@ struct FlowStepLimits {
 
 // Weakly compressible SPH for one fluid cloud among static wall clouds (paper eqs. (1)-(4),
 // DESIGN.md §4): continuity and momentum with the interface pressure and velocity of a Riemann
-// solver (or plain means: densityScheme standard), the viscous term with dynamic viscosity, and
-// gravity; integrated kick-drift-kick. The cloud is reordered along the cell grid every step.
+// solver (or plain means: densityScheme standard; plain means with the density diffusion and
+// artificial viscosity of Antuono et al. 2010: deltaSPH), optionally with the normalised kernel
+// gradient (KernelCorrection.h), the viscous term with dynamic viscosity, and gravity;
+// integrated kick-drift-kick. The cloud is reordered along the cell grid every step.
 //
 // Fluid fields read: U, rho, mass, viscosity (mu, Pa s), restDensity (rho_s); written: p,
 // acceleration, densityRate (kept in the cloud, so a restart continues bit for bit). Cloud
@@ -55,10 +64,16 @@ class WeaklyCompressibleFlow {
   std::size_t fluidPairCount() const { return fluidNeighbours_.pairCount(); }
 
  private:
+  void requirePlane() const;
   void findNeighbours();
   void updatePressure();
   template <int Dim>
   void extrapolateWallPressure();
+  template <int Dim>
+  void computeCorrection();
+  bool needsCorrectionMatrix() const {
+    return settings_.kernelCorrection || settings_.densityScheme == "deltaSPH";
+  }
   void computeRates();
   template <int Dim>
   void computeRatesInDimension();
@@ -76,6 +91,8 @@ class WeaklyCompressibleFlow {
   std::vector<NeighbourList> wallNeighbours_;       // fluid particles' wall neighbours
   std::vector<NeighbourList> fluidAroundWall_;      // wall particles' fluid neighbours
   std::vector<std::vector<Real>> wallPressure_;     // per wall cloud, per particle
+  std::vector<Matrix> correction_;                  // L_i, with kernelCorrection or deltaSPH
+  std::vector<Vector> densityGradient_;             // renormalised grad rho (deltaSPH)
 };
 
 }  // namespace sphcast
