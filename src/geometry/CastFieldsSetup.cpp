@@ -15,8 +15,8 @@
 #include "geometry/InitialDensity.h"
 #include "geometry/LatticeFill.h"
 #include "geometry/LatticeSolid.h"
+#include "geometry/MoldObstacles.h"
 #include "geometry/PackingRelaxation.h"
-#include "geometry/WallParticles.h"
 #include "particles/CellGrid.h"
 #include "particles/NeighbourList.h"
 
@@ -271,99 +271,28 @@ void setMaterialDensity(const Dictionary& cloudDict, ParticleCloud& cloud, doubl
   info() << log.str() << "\n";
 }
 
-// Every particle of the mold clouds, with the side of the wall it marks when particleizeMold
-// wrote it (normal into the cavity, distance behind the wall surface).
-struct MoldParticles {
-  FixedNeighbours particles;
-  std::vector<Vector> normals;      // empty when some cloud has none
-  std::vector<Real> wallDistances;  // likewise
-};
-
-MoldParticles moldParticles(const std::vector<ParticleCloud>& moldClouds, double spacing) {
-  MoldParticles mold;
-  bool sided = true;
-  for (const ParticleCloud& cloud : moldClouds) {
-    sided = sided && cloud.hasVectorField("normal") && cloud.hasScalarField("wallDistance");
-  }
-  for (const ParticleCloud& cloud : moldClouds) {
-    auto& fixed = mold.particles;
-    fixed.positions.insert(fixed.positions.end(), cloud.positions().begin(),
-                           cloud.positions().end());
-    if (cloud.hasScalarField("volume")) {
-      const auto& volume = cloud.scalarField("volume");
-      fixed.volumes.insert(fixed.volumes.end(), volume.begin(), volume.end());
-    } else {
-      fixed.volumes.insert(fixed.volumes.end(), cloud.size(),
-                           static_cast<Real>(spacing * spacing * spacing));
-    }
-    if (sided) {
-      const auto& normal = cloud.vectorField("normal");
-      const auto& distance = cloud.scalarField("wallDistance");
-      mold.normals.insert(mold.normals.end(), normal.begin(), normal.end());
-      mold.wallDistances.insert(mold.wallDistances.end(), distance.begin(), distance.end());
-    }
-  }
-  return mold;
-}
-
-// For each point, whether it lies behind the wall, in the mold material: a mold particle w puts
-// the wall surface at w + d_w n_w, so the point's depth behind that surface is
-// d_w - (x - w) . n_w. Behind when that is positive for some mold particle within `radius`
-// (1.5 dx: the particles of every face near a rim, where the nearest one may belong to the
-// other face). False where the mold has no sides (normal, wallDistance).
-std::vector<bool> behindWall(const std::vector<Vector>& points, const MoldParticles& mold,
-                             double radius) {
-  std::vector<bool> behind(points.size(), false);
-  if (mold.normals.empty() || points.empty()) return behind;
-  const auto& walls = mold.particles.positions;
-  CellGrid grid(static_cast<Real>(radius));
-  grid.build(walls);
-  NeighbourList list;
-  list.buildBetween(points, walls, grid);
-  for (std::size_t i = 0; i < points.size(); ++i) {
-    for (const std::uint32_t j : list.of(i)) {
-      if (mold.wallDistances[j] - (points[i] - walls[j]).dot(mold.normals[j]) > Real(0)) {
-        behind[i] = true;
-        break;
-      }
-    }
-  }
-  return behind;
-}
-
-// For each point, whether no mold particle is closer than the clearance (cell-grid search).
-class ClearanceCheck {
- public:
-  ClearanceCheck(const std::vector<Vector>& mold, double clearance)
-      : mold_(mold), grid_(static_cast<Real>(clearance)) {
-    if (!mold_.empty()) grid_.build(mold_);
-  }
-  std::vector<bool> clear(const std::vector<Vector>& points) {
-    std::vector<bool> result(points.size(), true);
-    if (mold_.empty() || points.empty()) return result;
-    list_.buildBetween(points, mold_, grid_);
-    for (std::size_t i = 0; i < points.size(); ++i) result[i] = list_.of(i).empty();
-    return result;
-  }
-
- private:
-  const std::vector<Vector>& mold_;
-  CellGrid grid_;
-  NeighbourList list_;
-};
-
 bool insideAnyRegion(const CloudPlan& plan, const Vector& x) {
   const Eigen::Vector3d p = x.cast<double>();
   return std::any_of(plan.regions.begin(), plan.regions.end(),
                      [&](const RegionFill& fill) { return fill.region->contains(p); });
 }
 
-// The lattice of the regions continued `margin` cells beyond them, outside every region, clear
-// of the mold and not behind its walls (where the shell has gaps between its particles): the
-// fixed image of the metal beyond its free surface.
+// The points of `points` for which keep[i] is true.
+std::vector<Vector> keptPoints(const std::vector<Vector>& points, const std::vector<bool>& keep) {
+  std::vector<Vector> kept;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    if (keep[i]) kept.push_back(points[i]);
+  }
+  return kept;
+}
+
+// The lattice of the regions continued `margin` cells beyond them: points outside every region,
+// clear of the mold, not behind its walls (where the shell has gaps between its particles) and
+// within `reach` of a metal particle: the fixed image of the metal beyond its free surface.
 std::vector<Vector> latticeBeyondFreeSurface(const CloudPlan& plan, double spacing,
-                                             std::int64_t margin, ClearanceCheck& clearance,
-                                             const MoldParticles& mold) {
+                                             std::int64_t margin, double reach,
+                                             const std::vector<Vector>& metal,
+                                             const MoldObstacles& mold) {
   std::vector<Vector> beyond;
   for (const RegionFill& fill : plan.regions) {
     for (const Vector& p : latticeOf(fill, spacing, margin)) {
@@ -375,13 +304,20 @@ std::vector<Vector> latticeBeyondFreeSurface(const CloudPlan& plan, double spaci
   };
   std::sort(beyond.begin(), beyond.end(), lexical);
   beyond.erase(std::unique(beyond.begin(), beyond.end()), beyond.end());
-  const auto clear = clearance.clear(beyond);
-  const auto behind = behindWall(beyond, mold, 1.5 * spacing);
-  std::vector<Vector> kept;
-  for (std::size_t i = 0; i < beyond.size(); ++i) {
-    if (clear[i] && !behind[i]) kept.push_back(beyond[i]);
-  }
-  return kept;
+
+  CellGrid metalGrid(static_cast<Real>(reach));
+  metalGrid.build(metal);
+  NeighbourList nearMetal;
+  nearMetal.buildBetween(beyond, metal, metalGrid);
+  std::vector<bool> keep(beyond.size());
+  for (std::size_t i = 0; i < beyond.size(); ++i) keep[i] = !nearMetal.of(i).empty();
+  beyond = keptPoints(beyond, keep);
+
+  const auto clear = mold.clear(beyond);
+  const auto behind = mold.behindWall(beyond, 1.5 * spacing);
+  keep.assign(beyond.size(), false);
+  for (std::size_t i = 0; i < beyond.size(); ++i) keep[i] = clear[i] && !behind[i];
+  return keptPoints(beyond, keep);
 }
 
 void logPacking(const std::string& cloudName, const char* when, const PackingStatistics& s,
@@ -393,62 +329,72 @@ void logPacking(const std::string& cloudName, const char* when, const PackingSta
          << " dx\n";
 }
 
-ParticleCloud fillCloud(const CloudPlan& plan, double spacing, const MoldParticles& moldSides,
-                        double clearance, CaseSettings& settings) {
-  const FixedNeighbours& mold = moldSides.particles;
+// Lattice points of the cloud's regions, each point once (a point of a region that an earlier
+// region of the cloud holds already is left out), and the regions' volume.
+std::vector<Vector> fillRegions(const CloudPlan& plan, double spacing, double& regionVolume,
+                                bool& volumeExact) {
   std::vector<Vector> centres;
-  double regionVolume = 0.0;
-  for (const auto& fill : plan.regions) {
-    const auto more = latticeOf(fill, spacing, 0);
-    centres.insert(centres.end(), more.begin(), more.end());
-    regionVolume += fill.region->volumeBound();
-  }
-  ClearanceCheck clearanceCheck(mold.positions, clearance);
-  std::size_t removed = 0;
-  if (!mold.positions.empty()) {
-    const auto clear = clearanceCheck.clear(centres);
-    std::vector<Vector> kept;
-    for (std::size_t i = 0; i < centres.size(); ++i) {
-      if (clear[i]) kept.push_back(centres[i]);
+  regionVolume = 0.0;
+  volumeExact = true;
+  for (std::size_t k = 0; k < plan.regions.size(); ++k) {
+    const RegionFill& fill = plan.regions[k];
+    std::size_t overlapping = 0;
+    for (const Vector& p : latticeOf(fill, spacing, 0)) {
+      const Eigen::Vector3d x = p.cast<double>();
+      const bool held =
+          std::any_of(plan.regions.begin(), plan.regions.begin() + static_cast<std::ptrdiff_t>(k),
+                      [&](const RegionFill& earlier) { return earlier.region->contains(x); });
+      if (held) {
+        ++overlapping;
+      } else {
+        centres.push_back(p);
+      }
     }
-    removed = centres.size() - kept.size();
-    centres = std::move(kept);
-    info() << "Cloud " << plan.name << ": left out " << removed
-           << " particles closer than wallClearance " << clearance << " m to a mold particle\n";
+    regionVolume += fill.region->volumeBound();
+    volumeExact = volumeExact && fill.region->volumeIsExact() && overlapping == 0;
+  }
+  return centres;
+}
+
+ParticleCloud fillCloud(const CloudPlan& plan, double spacing, const MoldObstacles& mold,
+                        CaseSettings& settings) {
+  double regionVolume = 0.0;
+  bool volumeExact = true;
+  std::vector<Vector> centres = fillRegions(plan, spacing, regionVolume, volumeExact);
+  if (!mold.empty()) {
+    const std::size_t before = centres.size();
+    centres = keptPoints(centres, mold.clear(centres));
+    info() << "Cloud " << plan.name << ": left out " << before - centres.size()
+           << " particles closer than wallClearance " << mold.clearance()
+           << " m to a mold particle\n";
   }
 
   const double dx3 = spacing * spacing * spacing;
   const double filledVolume = static_cast<double>(centres.size()) * dx3;
-  info() << "Cloud " << plan.name << ": filled " << filledVolume << " m^3 (" << centres.size()
-         << " x dx^3) of regions of " << regionVolume << " m^3 (exact for shapes and gmsh "
-         << "volumes, an upper bound for booleans): " << 100.0 * filledVolume / regionVolume
-         << " %\n";
+  info() << "Cloud " << plan.name << ": " << centres.size() << " particles, " << filledVolume
+         << " m^3 (count x dx^3), " << 100.0 * filledVolume / regionVolume << " % of the regions' "
+         << (volumeExact ? "volume " : "volume bound (overlaps or booleans) ") << regionVolume
+         << " m^3\n";
+  if (centres.empty()) return ParticleCloud(plan.name);
 
-  if (plan.relaxationIterations > 0 && !centres.empty()) {
+  Vector lower = centres.front(), upper = centres.front();
+  for (const Vector& c : centres) {
+    lower = lower.cwiseMin(c);
+    upper = upper.cwiseMax(c);
+  }
+  if (plan.relaxationIterations > 0) {
     const double h = settings.supportRadius(spacing);
     const auto margin = static_cast<std::int64_t>(std::ceil(h / spacing));
-    const auto beyond = latticeBeyondFreeSurface(plan, spacing, margin, clearanceCheck, moldSides);
-    FixedNeighbours fixed{beyond, {}};
-    fixed.volumes.assign(beyond.size(), static_cast<Real>(dx3));
-    // Mold particles near the cloud only.
-    Vector lower = centres.front(), upper = centres.front();
-    for (const Vector& c : centres) {
-      lower = lower.cwiseMin(c);
-      upper = upper.cwiseMax(c);
-    }
+    const auto beyond = latticeBeyondFreeSurface(plan, spacing, margin, h, centres, mold);
     const Vector reach = Vector::Constant(static_cast<Real>(h));
-    for (std::size_t j = 0; j < mold.positions.size(); ++j) {
-      const Vector& p = mold.positions[j];
-      if ((p.array() >= (lower - reach).array()).all() &&
-          (p.array() <= (upper + reach).array()).all()) {
-        fixed.positions.push_back(p);
-        fixed.volumes.push_back(mold.volumes[j]);
-      }
-    }
+    FixedNeighbours fixed = mold.within(lower - reach, upper + reach);
+    fixed.positions.insert(fixed.positions.end(), beyond.begin(), beyond.end());
+    fixed.volumes.insert(fixed.volumes.end(), beyond.size(), static_cast<Real>(dx3));
     auto allowed = [&](const std::vector<Vector>& trial) {
-      std::vector<bool> ok = clearanceCheck.clear(trial);
-      for (std::size_t i = 0; i < trial.size(); ++i)
+      std::vector<bool> ok = mold.clear(trial);
+      for (std::size_t i = 0; i < trial.size(); ++i) {
         ok[i] = ok[i] && insideAnyRegion(plan, trial[i]);
+      }
       return ok;
     };
     const RelaxationSettings relaxation{plan.relaxationIterations, spacing, h};
@@ -458,6 +404,14 @@ ParticleCloud fillCloud(const CloudPlan& plan, double spacing, const MoldParticl
     const auto statistics = relaxPacking(centres, fixed, allowed, relaxation);
     logPacking(plan.name, "before relaxation", statistics[0], spacing);
     logPacking(plan.name, "after relaxation", statistics[1], spacing);
+  } else {
+    // Spacing only: the nearest particle, metal or mold, within 2 dx.
+    const Vector reach = Vector::Constant(static_cast<Real>(2.0 * spacing));
+    const auto s = packingStatistics(centres, mold.within(lower - reach, upper + reach), spacing,
+                                     2.0 * spacing);
+    info() << "Cloud " << plan.name << ": nearest neighbour (metal or mold) min "
+           << s.nearestMin / spacing << " dx, mean " << s.nearestMean / spacing << " dx, max "
+           << s.nearestMax / spacing << " dx\n";
   }
 
   ParticleCloud cloud(plan.name);
@@ -531,10 +485,10 @@ std::vector<ParticleCloud> buildCastClouds(const CaseFolder& caseFolder,
   }
 
   CaseSettings settings(caseFolder);
-  const MoldParticles mold = moldParticles(moldClouds, spacing);
+  const MoldObstacles mold(moldClouds, spacing, clearance);
   std::vector<ParticleCloud> clouds;
   for (const CloudPlan& plan : plans) {
-    ParticleCloud cloud = fillCloud(plan, spacing, mold, clearance, settings);
+    ParticleCloud cloud = fillCloud(plan, spacing, mold, settings);
     const Dictionary& cloudDict = cloudsDict.subDict(plan.name);
     if (cloudDict.found("fields")) setFieldValues(cloudDict.subDict("fields"), cloud, {}, true);
     setMaterialDensity(cloudDict, cloud, spacing, settings);

@@ -36,7 +36,8 @@ namespace sphcast {
 // (core/TemperatureTable.h); with a table, T must be given and lie inside it. Without `rho`
 // none is written (the solver then starts at its rest density).
 //
-// Regions of a cloud are filled one after the other. A box at the top level keeps its own
+// Regions of a cloud are filled one after the other; a lattice point that an earlier region of
+// the cloud holds is not filled again (no doubled particles where regions overlap). A box at the top level keeps its own
 // lattice, centred in the box (so the filled volume is exact when its sides are multiples of
 // the spacing); every other region is filled on the shared lattice ((i + 1/2) dx, LatticeSolid.h)
 // that particleizeMold also uses.
@@ -56,7 +57,8 @@ namespace sphcast {
 // own surface tension and the run will decide.
 //
 // Every filled particle gets `volume` dx^3 and `id`. The log reports for each new cloud the
-// count, the filled volume against the regions' volume and the nearest-neighbour spacing.
+// count, the filled volume (count dx^3) against the regions' volume (exact for shapes and gmsh
+// volumes that do not overlap, else the bound) and the nearest-neighbour spacing.
 // moldClouds are the clouds of constant/particles (setCastFields reads them): obstacles for the
 // fill, fixed neighbours for the relaxation, and the clouds `setFields` works on.
 // Returns the new clouds followed by the clouds whose fields were set, all for 0/.

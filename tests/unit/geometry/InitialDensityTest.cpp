@@ -175,7 +175,8 @@ TEST(InitialDensity, StandardAndHydrostaticUseRhoSAtTheInitialTemperature) {
     EXPECT_NEAR(hydrostatic.scalarField("rho")[i], 2375.0 * (1.0 + 9.81 * depth / 400.0), 1e-9);
   }
   // A number keeps working and is written as given.
-  for (const Real r : ColumnCase("2500").metal().scalarField("rho")) EXPECT_EQ(r, 2500.0);
+  const ParticleCloud given = ColumnCase("2500").metal();
+  for (const Real r : given.scalarField("rho")) EXPECT_EQ(r, 2500.0);
 }
 
 TEST(InitialDensity, MistakesNameTheFileLineAndKey) {
