@@ -390,14 +390,22 @@ ParticleCloud fillCloud(const CloudPlan& plan, double spacing, const MoldObstacl
     FixedNeighbours fixed = mold.within(lower - reach, upper + reach);
     fixed.positions.insert(fixed.positions.end(), beyond.begin(), beyond.end());
     fixed.volumes.insert(fixed.volumes.end(), beyond.size(), static_cast<Real>(dx3));
+    // The lattice beyond the free surface is kept at the clearance too: without it, metal next
+    // to the rim rose to the region's top, dx/2 under a fixed point (measured: nearest
+    // neighbour 0.52 dx on the open cone at 90,685 particles).
+    CellGrid beyondGrid(static_cast<Real>(mold.clearance()));
+    if (!beyond.empty()) beyondGrid.build(beyond);
+    NeighbourList nearBeyond;
     auto allowed = [&](const std::vector<Vector>& trial) {
       std::vector<bool> ok = mold.clear(trial);
+      if (!beyond.empty()) nearBeyond.buildBetween(trial, beyond, beyondGrid);
       for (std::size_t i = 0; i < trial.size(); ++i) {
-        ok[i] = ok[i] && insideAnyRegion(plan, trial[i]);
+        ok[i] = ok[i] && (beyond.empty() || nearBeyond.of(i).empty()) &&
+                insideAnyRegion(plan, trial[i]);
       }
       return ok;
     };
-    const RelaxationSettings relaxation{plan.relaxationIterations, spacing, h};
+    const RelaxationSettings relaxation{plan.relaxationIterations, spacing, h, mold.clearance()};
     info() << "Cloud " << plan.name << ": relaxing the packing, " << plan.relaxationIterations
            << " iterations, h = " << h << " m, " << beyond.size()
            << " fixed lattice points beyond the free surface\n";

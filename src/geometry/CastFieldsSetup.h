@@ -51,7 +51,7 @@ namespace sphcast {
 // along it; `iterations` steps of background-pressure relaxation even them out, with the mold
 // particles as fixed neighbours (kernel support h: supportRadius of system/sphSchemes, else
 // 3 dx). A particle may not leave its regions nor come closer than wallClearance to a mold
-// particle (such a move is not made). Where the metal has a free surface (no wall), the fill
+// particle or to the fixed lattice beyond the free surface (such a move is not made). Where the metal has a free surface (no wall), the fill
 // lattice continued beyond the regions is held fixed as neighbours: the surface stays where
 // the fill put it instead of swelling into the empty kernel half, which is what the metal's
 // own surface tension and the run will decide.

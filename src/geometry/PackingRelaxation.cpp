@@ -85,6 +85,33 @@ PackingStatistics measure(const RelaxationPairs& pairs, std::size_t movingCount,
   return statistics;
 }
 
+// Moves back (to old[i]) every moved particle that ended closer than `limit` to another one,
+// until none does; each pass only moves particles back, so it ends, at worst where it began.
+void keepApart(std::vector<Vector>& positions, const std::vector<Vector>& old,
+               std::vector<bool>& moved, Real limit, CellGrid& grid) {
+  NeighbourList list;
+  for (bool changed = true; changed;) {
+    changed = false;
+    grid.build(positions);
+    list.buildWithin(positions, grid);
+    std::vector<std::size_t> back;
+    for (std::size_t i = 0; i < positions.size(); ++i) {
+      if (!moved[i]) continue;
+      for (const std::uint32_t j : list.of(i)) {
+        if ((positions[i] - positions[j]).norm() < limit) {
+          back.push_back(i);
+          break;
+        }
+      }
+    }
+    for (const std::size_t i : back) {
+      positions[i] = old[i];
+      moved[i] = false;
+      changed = true;
+    }
+  }
+}
+
 }  // namespace
 
 PackingStatistics packingStatistics(const std::vector<Vector>& positions,
@@ -111,6 +138,8 @@ std::array<PackingStatistics, 2> relaxPacking(
   const Real gamma = static_cast<Real>(stepFraction / stiffness);
   const Real longestStep = static_cast<Real>(maxStep * dx);
   std::vector<Vector> trial(positions.size());
+  CellGrid approach(
+      static_cast<Real>(settings.closestApproach > 0.0 ? settings.closestApproach : h));
   for (int iteration = 0; iteration < settings.iterations; ++iteration) {
     if (iteration > 0) pairs.build(positions);
     const auto& x = pairs.all();
@@ -128,8 +157,13 @@ std::array<PackingStatistics, 2> relaxPacking(
       trial[i] = positions[i] + step;
     }
     const std::vector<bool> ok = allowed(trial);
+    std::vector<bool> moved(positions.size());
     for (std::size_t i = 0; i < positions.size(); ++i) {
-      if (ok[i]) positions[i] = trial[i];
+      moved[i] = ok[i];
+      if (ok[i]) trial[i].swap(positions[i]);  // trial keeps the old place
+    }
+    if (settings.closestApproach > 0.0) {
+      keepApart(positions, trial, moved, static_cast<Real>(settings.closestApproach), approach);
     }
   }
   pairs.build(positions);

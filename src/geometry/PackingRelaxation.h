@@ -30,6 +30,9 @@ struct RelaxationSettings {
   int iterations = 0;
   double spacing = 0.0;        // dx; every moving particle has volume dx^3
   double supportRadius = 0.0;  // h of the Wendland C2 kernel
+  // No move brings two moving particles closer than this (0: no limit); setCastFields uses its
+  // wallClearance, so that metal keeps from metal what it keeps from walls.
+  double closestApproach = 0.0;
 };
 
 // Packing relaxation under a uniform background pressure (Colagrossi et al., "Particle packing
@@ -45,7 +48,10 @@ struct RelaxationSettings {
 // over a full kernel vanishes, but for the particle's own term), keeps the step stable for the
 // collective modes too; a step is also capped at dx / 10.
 // A move to a place where `allowed` is false (outside the fill region, closer than the
-// clearance to a wall particle) is not made: the particle stays for that iteration. Neighbours
+// clearance to a wall particle) is not made: the particle stays for that iteration; so is a
+// move that ends closer than closestApproach to another moving particle (where the fill has a
+// corner no kernel sees filled, e.g. a mold's open rim, the push would otherwise pile particles
+// up there: 0.53 dx apart on the open cone). Neighbours
 // from the cell grid of the particles (CellGrid, NeighbourList), rebuilt each iteration.
 // Returns the statistics before [0] and after [1] the iterations.
 std::array<PackingStatistics, 2> relaxPacking(

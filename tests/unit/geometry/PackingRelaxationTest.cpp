@@ -104,7 +104,8 @@ TEST(PackingRelaxation, EvensOutTheLatticeCutByTheConeWithoutLeavingIt) {
   const auto after = packingStatistics(relaxed.positions(), mold.walls(), dx, h);
   print("cone lattice", before);
   print("cone relaxed", after);
-  EXPECT_LT(after.densityDeviation, before.densityDeviation / 3.0);
+  EXPECT_LT(after.densityDeviation, before.densityDeviation / 3.0);  // measured 0.0288 -> 0.0048
+  EXPECT_GE(after.nearestMin, 0.75 * dx * (1.0 - 1e-9));             // no closer than wallClearance
   EXPECT_GT(after.densityMin, before.densityMin);
   EXPECT_LT(after.densityMax, before.densityMax);
   for (const Vector& x : relaxed.positions()) EXPECT_TRUE(insideCone(x, height)) << x.transpose();
@@ -152,7 +153,8 @@ TEST(PackingRelaxation, KeepsTheFreeSurfaceWhereTheFillPutIt) {
       meanBefore, meanAfter, highestAfter, risenAfter, count);
   // Where the surface meets the slanted wall, the lattice left gaps that the relaxation fills:
   // a few particles there rise, by dx/2 at most (the region's top); the surface as a whole
-  // stays (measured: mean +0.024 dx; 18 of the 216 surface particles rose).
+  // stays (measured: mean +0.016 dx; 18 of the 216 surface particles rose, the highest by
+  // 0.28 dx).
   EXPECT_EQ(risenBefore, 0);
   EXPECT_NEAR(meanAfter, meanBefore, 0.05 * dx);
   EXPECT_LT(risenAfter, 40);
@@ -177,7 +179,8 @@ TEST(PackingRelaxation, KeepsTheFreeSurfaceWhereTheFillPutIt) {
   }
   const auto after = packingStatistics(deep(relaxed), withMetalAbove, dx, h);
   print("open cone, below the surface, relaxed", after);
-  EXPECT_LT(after.densityDeviation, 0.02);
+  EXPECT_LT(after.densityDeviation, 0.01);  // measured 0.0039 (whole lattice fill: 0.028)
+  EXPECT_GE(after.nearestMin, 0.75 * dx * (1.0 - 1e-9));  // no closer than wallClearance
 }
 
 }  // namespace
