@@ -70,6 +70,7 @@ struct CloudPlan {
   std::string name;
   std::vector<RegionFill> regions;
   int relaxationIterations = 0;
+  SourceLocation relaxationAt;  // where relaxation was asked for
 };
 
 // What the whole case knows about the physics a fill may need, read when first asked for.
@@ -372,15 +373,25 @@ ParticleCloud fillCloud(const CloudPlan& plan, double spacing, const MoldObstacl
   const double dx3 = spacing * spacing * spacing;
   const double filledVolume = static_cast<double>(centres.size()) * dx3;
   info() << "Cloud " << plan.name << ": " << centres.size() << " particles, " << filledVolume
-         << " m^3 (count x dx^3), " << 100.0 * filledVolume / regionVolume << " % of the regions' "
-         << (volumeExact ? "volume " : "volume bound (overlaps or booleans) ") << regionVolume
-         << " m^3\n";
+         << " m^3 (count x dx^3)";
+  if (regionVolume > 0.0) {  // a flat (2D) region has none
+    info() << ", " << 100.0 * filledVolume / regionVolume << " % of the regions' "
+           << (volumeExact ? "volume " : "volume bound (overlaps or booleans) ") << regionVolume
+           << " m^3";
+  }
+  info() << "\n";
   if (centres.empty()) return ParticleCloud(plan.name);
 
   Vector lower = centres.front(), upper = centres.front();
   for (const Vector& c : centres) {
     lower = lower.cwiseMin(c);
     upper = upper.cwiseMax(c);
+  }
+  if (plan.relaxationIterations > 0 && (upper - lower).minCoeff() <= Real(0)) {
+    throw DictionaryError(plan.relaxationAt,
+                          "cloud '" + plan.name +
+                              "' is one particle thick along an axis (a 2D case): the relaxation "
+                              "uses the 3D kernel; remove 'relaxation' for this cloud");
   }
   if (plan.relaxationIterations > 0) {
     const double h = settings.supportRadius(spacing);
@@ -472,7 +483,12 @@ std::vector<ParticleCloud> buildCastClouds(const CaseFolder& caseFolder,
     const Dictionary& cloudDict = cloudsDict.subDict(cloudName);
     cloudDict.checkKeys({"material", "regions", "fields", "relaxation"});
     const Dictionary& regions = cloudDict.subDict("regions");
-    CloudPlan plan{cloudName, {}, readRelaxation(cloudDict, globalRelaxation)};
+    CloudPlan plan{cloudName,
+                   {},
+                   readRelaxation(cloudDict, globalRelaxation),
+                   cloudDict.found("relaxation") ? cloudDict.location("relaxation")
+                   : dict.found("relaxation")    ? dict.location("relaxation")
+                                                 : dict.location()};
     for (const std::string& regionName : regions.keys()) {
       const Dictionary& regionDict = regions.subDict(regionName);
       RegionFill fill{readFillRegion(regionDict, spacing, geometryFolder),

@@ -81,5 +81,23 @@ TEST(CastFieldsSetup, SetFieldsWorksOnTheCloudsItIsGivenAndNamesTheMissingOnes) 
   }
 }
 
+TEST(CastFieldsSetup, RelaxationOfAFlatCloudIsAnErrorAtTheRelaxationKey) {
+  // A box of zero height is one layer (a 2D case); the relaxation's kernel is 3D.
+  TemporaryCase folder;
+  folder.write("system/setCastFieldsDict",
+               header +
+                   "spacing 0.01;\nclouds\n{\n    metal\n    {\n        regions { r { type box; "
+                   "min (0 0 0); max (0.1 0.1 0); } }\n        relaxation { iterations 10; }\n"
+                   "    }\n}\n");
+  try {
+    buildCastClouds(CaseFolder(folder.root()), {});
+    FAIL() << "relaxation of a flat cloud accepted";
+  } catch (const DictionaryError& error) {
+    const std::string message = error.what();
+    EXPECT_NE(message.find("setCastFieldsDict:8:"), std::string::npos) << message;
+    EXPECT_NE(message.find("one particle thick"), std::string::npos) << message;
+  }
+}
+
 }  // namespace
 }  // namespace sphcast
