@@ -66,11 +66,21 @@ struct RegionFill {
   bool ownLattice;  // a top-level box: today's lattice centred in the box
 };
 
+// How a new cloud's rho is computed from its material, read and checked before the fill.
+struct DensityStart {
+  std::string model;         // standard | hydrostatic
+  double restDensity = 0.0;  // rho_s at the initial T
+  std::string origin;        // for the log: the table, and T where it matters
+  Vector gravity = Vector::Zero();
+  double soundSpeed = 0.0;
+};
+
 struct CloudPlan {
   std::string name;
   std::vector<RegionFill> regions;
   int relaxationIterations = 0;
   SourceLocation relaxationAt;  // where relaxation was asked for
+  std::optional<DensityStart> density;
 };
 
 // What the whole case knows about the physics a fill may need, read when first asked for.
@@ -211,29 +221,26 @@ void setFieldValues(const Dictionary& fields, ParticleCloud& cloud,
   }
 }
 
-// rho standard | hydrostatic of a new cloud from its material's rho_s(T) (CastFieldsSetup.h).
-void setMaterialDensity(const Dictionary& cloudDict, ParticleCloud& cloud, double spacing,
-                        CaseSettings& settings) {
-  if (!cloudDict.found("fields")) return;
+// rho standard | hydrostatic of a new cloud from its material's rho_s(T) (CastFieldsSetup.h);
+// nothing when rho is absent or a number.
+std::optional<DensityStart> readDensityStart(const Dictionary& cloudDict,
+                                             const std::string& cloudName, CaseSettings& settings) {
+  if (!cloudDict.found("fields")) return std::nullopt;
   const Dictionary& fields = cloudDict.subDict("fields");
-  if (!fields.found("rho")) return;
+  if (!fields.found("rho")) return std::nullopt;
   const auto choice = fields.get<DensityChoice>("rho", densityDimensions);
-  if (choice.value) return;
+  if (choice.value) return std::nullopt;
 
   const Dictionary& properties = settings.physicalProperties();
-  const std::string materialName = cloudDict.getOrDefault<std::string>("material", cloud.name());
+  const std::string materialName = cloudDict.getOrDefault<std::string>("material", cloudName);
   if (!properties.isDict(materialName)) {
     const SourceLocation where =
         cloudDict.found("material") ? cloudDict.location("material") : fields.location("rho");
-    throw DictionaryError(
-        where, "rho " + choice.model + " needs the material '" + materialName + "' in " +
-                   properties.location().file + ", which has (" +
-                   [&] {
-                     std::string keys;
-                     for (const auto& key : properties.keys()) keys += " " + key;
-                     return keys;
-                   }() +
-                   " )");
+    std::string present;
+    for (const auto& key : properties.keys()) present += " " + key;
+    throw DictionaryError(where, "rho " + choice.model + " needs the material '" + materialName +
+                                     "' in " + properties.location().file + ", which has (" +
+                                     present + " )");
   }
   const TemperatureTable restDensity =
       TemperatureTable::read(properties.subDict(materialName), "density", densityDimensions);
@@ -247,20 +254,31 @@ void setMaterialDensity(const Dictionary& cloudDict, ParticleCloud& cloud, doubl
     temperature = fields.get<double>("T", temperatureDimensions);
     restDensity.checkCovers(temperature, fields.location("T"));
   }
-  const double rhoS = restDensity(temperature);
+  DensityStart start;
+  start.model = choice.model;
+  start.restDensity = restDensity(temperature);
+  std::ostringstream origin;
+  if (!restDensity.isConstant()) origin << "at T = " << temperature << " K ";
+  origin << "(" << restDensity.description() << ")";
+  start.origin = origin.str();
+  if (start.model == "hydrostatic") {
+    start.gravity = settings.gravity();
+    start.soundSpeed = settings.soundSpeed();
+  }
+  return start;
+}
+
+void setMaterialDensity(const DensityStart& start, ParticleCloud& cloud, double spacing) {
   auto& rho = cloud.addScalarField("rho");
+  const double rhoS = start.restDensity;
   std::ostringstream log;
-  log << "Cloud " << cloud.name() << ": rho " << choice.model << " from rho_s = " << rhoS
-      << " kg/m^3";
-  if (!restDensity.isConstant()) log << " at T = " << temperature << " K";
-  log << " (" << restDensity.description() << ")";
-  if (choice.model == "standard") {
+  log << "Cloud " << cloud.name() << ": rho " << start.model << " from rho_s = " << rhoS
+      << " kg/m^3 " << start.origin;
+  if (start.model == "standard") {
     for (Real& r : rho) r = static_cast<Real>(rhoS);
   } else {
-    const Vector gravity = settings.gravity();
-    const double c = settings.soundSpeed();
-    const double g = gravity.cast<double>().norm();
-    const auto depths = depthsBelowFreeSurface(cloud.positions(), gravity, spacing);
+    const double g = start.gravity.cast<double>().norm(), c = start.soundSpeed;
+    const auto depths = depthsBelowFreeSurface(cloud.positions(), start.gravity, spacing);
     double deepest = 0.0;
     for (std::size_t i = 0; i < rho.size(); ++i) {
       rho[i] = static_cast<Real>(hydrostaticDensity(rhoS, g, depths[i], c));
@@ -475,6 +493,7 @@ std::vector<ParticleCloud> buildCastClouds(const CaseFolder& caseFolder,
   const Dictionary noClouds;
   const Dictionary& cloudsDict = dict.found("clouds") ? dict.subDict("clouds") : noClouds;
 
+  CaseSettings settings(caseFolder);
   // Read every region and count first: a spacing that makes 10^9 particles is refused before
   // any memory is taken.
   double total = 0.0;
@@ -488,7 +507,12 @@ std::vector<ParticleCloud> buildCastClouds(const CaseFolder& caseFolder,
                    readRelaxation(cloudDict, globalRelaxation),
                    cloudDict.found("relaxation") ? cloudDict.location("relaxation")
                    : dict.found("relaxation")    ? dict.location("relaxation")
-                                                 : dict.location()};
+                                                 : dict.location(),
+                   readDensityStart(cloudDict, cloudName, settings)};
+    if (cloudDict.found("fields")) {
+      ParticleCloud none(cloudName);  // every key and value checked, nothing set
+      setFieldValues(cloudDict.subDict("fields"), none, {}, true);
+    }
     for (const std::string& regionName : regions.keys()) {
       const Dictionary& regionDict = regions.subDict(regionName);
       RegionFill fill{readFillRegion(regionDict, spacing, geometryFolder),
@@ -508,18 +532,9 @@ std::vector<ParticleCloud> buildCastClouds(const CaseFolder& caseFolder,
     throw DictionaryError(dict.location("spacing"), message.str());
   }
 
-  CaseSettings settings(caseFolder);
-  const MoldObstacles mold(moldClouds, spacing, clearance);
-  std::vector<ParticleCloud> clouds;
-  for (const CloudPlan& plan : plans) {
-    ParticleCloud cloud = fillCloud(plan, spacing, mold, settings);
-    const Dictionary& cloudDict = cloudsDict.subDict(plan.name);
-    if (cloudDict.found("fields")) setFieldValues(cloudDict.subDict("fields"), cloud, {}, true);
-    setMaterialDensity(cloudDict, cloud, spacing, settings);
-    clouds.push_back(std::move(cloud));
-  }
-
   // Fields on existing clouds, as OpenFOAM's setFields: all particles, or those in regions.
+  // Done before the fill (which may relax for minutes), so that a mistake here stops at once.
+  std::vector<ParticleCloud> setClouds;
   if (dict.found("setFields")) {
     const Dictionary& setFields = dict.subDict("setFields");
     for (const std::string& cloudName : setFields.keys()) {
@@ -550,9 +565,20 @@ std::vector<ParticleCloud> buildCastClouds(const CaseFolder& caseFolder,
         }
       }
       setFieldValues(entry.subDict("fields"), cloud, selected, false);
-      clouds.push_back(std::move(cloud));
+      setClouds.push_back(std::move(cloud));
     }
   }
+
+  const MoldObstacles mold(moldClouds, spacing, clearance);
+  std::vector<ParticleCloud> clouds;
+  for (const CloudPlan& plan : plans) {
+    ParticleCloud cloud = fillCloud(plan, spacing, mold, settings);
+    const Dictionary& cloudDict = cloudsDict.subDict(plan.name);
+    if (cloudDict.found("fields")) setFieldValues(cloudDict.subDict("fields"), cloud, {}, true);
+    if (plan.density) setMaterialDensity(*plan.density, cloud, spacing);
+    clouds.push_back(std::move(cloud));
+  }
+  for (ParticleCloud& cloud : setClouds) clouds.push_back(std::move(cloud));
   return clouds;
 }
 
