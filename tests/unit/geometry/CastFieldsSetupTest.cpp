@@ -68,6 +68,19 @@ TEST(CastFieldsSetup, SetFieldsWorksOnTheCloudsItIsGivenAndNamesTheMissingOnes) 
   EXPECT_EQ(temperature[2], 300.0);
   EXPECT_FALSE(mold.hasScalarField("T"));  // the cloud handed in is left as it was
 
+  // A density model is for new clouds; an existing one takes a number.
+  folder.write(
+      "system/setCastFieldsDict",
+      header + "spacing 0.1;\nsetFields\n{\n    mold { fields { rho hydrostatic; } }\n}\n");
+  try {
+    buildCastClouds(CaseFolder(folder.root()), {mold});
+    FAIL() << "rho hydrostatic accepted on an existing cloud";
+  } catch (const DictionaryError& error) {
+    const std::string message = error.what();
+    EXPECT_NE(message.find("setCastFieldsDict:5:"), std::string::npos) << message;
+    EXPECT_NE(message.find("rho hydrostatic is for the new clouds"), std::string::npos) << message;
+  }
+
   folder.write("system/setCastFieldsDict",
                header + "spacing 0.1;\nsetFields\n{\n    lid { fields { T 300; } }\n}\n");
   try {
