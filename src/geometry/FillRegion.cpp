@@ -222,6 +222,7 @@ class BooleanRegion final : public FillRegion {
     }
     return operation_ == Operation::unite ? sum : smallest;
   }
+  bool volumeIsExact() const override { return false; }
 
  private:
   Operation operation_;

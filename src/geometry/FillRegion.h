@@ -28,6 +28,8 @@ class FillRegion {
   virtual Eigen::Vector3d upper() const = 0;
   // The region's volume, or an upper bound of it (to refuse too fine a spacing beforehand).
   virtual double volumeBound() const = 0;
+  // Whether volumeBound() is the region's volume (true but for booleans).
+  virtual bool volumeIsExact() const { return true; }
 };
 
 // Reads a region; gmsh volumes are meshed and classified on the lattice of `spacing`. Every

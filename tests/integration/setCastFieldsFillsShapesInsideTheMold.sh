@@ -83,3 +83,56 @@ grep -qF "(box cylinder cone sphere gmshVolume union intersection difference)" l
     fail "valid types not listed: $(cat log.setCastFields)"
 [ -e 0 ] && fail "0/ written after an error"
 pass "unknown region type lists the valid ones; nothing written"
+
+# The pot's metal at the hydrostatic density of an aluminium table at 953 K, relaxed against the
+# pot's wall particles.
+cat > constant/physicalProperties <<'DICT'
+FoamFile { version 2.0; format ascii; class dictionary; object physicalProperties; }
+metal
+{
+    density   [1 -3 0 0 0 0 0] table ((300 2700) (853 2550) (903 2380) (1000 2350));
+    viscosity [1 -1 -1 0 0 0 0] 1.28e-3;
+}
+DICT
+cat > constant/g <<'DICT'
+FoamFile { version 2.0; format ascii; class dictionary; object g; }
+dimensions [0 1 -2 0 0 0 0];
+value      (0 0 -9.81);
+DICT
+cat > system/sphSchemes <<'DICT'
+FoamFile { version 2.0; format ascii; class dictionary; object sphSchemes; }
+densityScheme riemann;
+viscousForm   Morris;
+supportRadius 0.004;
+soundSpeed    [0 1 -1 0 0 0 0] 10;
+DICT
+cat > system/setCastFieldsDict <<DICT
+$header
+spacing 0.002;
+relaxation { iterations 50; }
+clouds
+{
+    metal
+    {
+        regions { melt { type gmshVolume; file "pot.geo"; group cavity; } }
+        fields { T 953; rho hydrostatic; }
+    }
+}
+DICT
+setCastFields > log.setCastFields 2>&1 || fail "setCastFields failed: $(cat log.setCastFields)"
+# rho_s(953 K) = 2380 + (2350 - 2380) 50 / 97 = 2364.54; deepest particle ~0.04 m: +0.0392 %
+grep -q "Cloud metal: rho hydrostatic from rho_s = 2364.5.* kg/m^3 at T = 953 K" log.setCastFields ||
+    fail "no hydrostatic line: $(cat log.setCastFields)"
+grep -q "Cloud metal: after relaxation: number density" log.setCastFields ||
+    fail "no relaxation statistics: $(cat log.setCastFields)"
+[ -s 0/metal.vtp ] || fail "0/metal.vtp not written"
+pass "hydrostatic density from the rho_s(T) table, packing relaxed: $(grep 'after relaxation' log.setCastFields)"
+
+# A table whose temperatures go back names its row; nothing is written.
+rm -rf 0
+sed -i 's/(903 2380)/(803 2380)/' constant/physicalProperties
+if setCastFields > log.setCastFields 2>&1; then fail "decreasing table accepted"; fi
+grep -q "physicalProperties:4:.*row 3 has T = 803 K after 853 K" log.setCastFields ||
+    fail "wrong message: $(cat log.setCastFields)"
+[ -e 0 ] && fail "0/ written after an error"
+pass "a table whose temperatures go back is refused at its row; nothing written"

@@ -1,13 +1,33 @@
 // setCastFields: fills the regions of system/setCastFieldsDict with particles on a lattice,
 // sets their initial fields and writes them as time 0.
+#include <algorithm>
+#include <filesystem>
+
 #include "core/CaseFolder.h"
 #include "core/CommandLine.h"
 #include "core/Log.h"
 #include "core/TimeControl.h"
 #include "geometry/CastFieldsSetup.h"
+#include "io/VtpCloud.h"
 #include "solver/CaseWriter.h"
 
 namespace {
+
+// The mold clouds particleizeMold wrote to constant/particles (none when there are none).
+std::vector<sphcast::ParticleCloud> readMoldClouds(const sphcast::CaseFolder& caseFolder) {
+  std::vector<std::filesystem::path> files;
+  const auto folder = caseFolder.constantFile("particles");
+  if (std::filesystem::is_directory(folder)) {
+    for (const auto& entry : std::filesystem::directory_iterator(folder)) {
+      if (entry.path().extension() == ".vtp") files.push_back(entry.path());
+    }
+  }
+  std::sort(files.begin(), files.end());
+  std::vector<sphcast::ParticleCloud> clouds;
+  for (const auto& file : files)
+    clouds.push_back(sphcast::readCloudVtp(file, file.stem().string()));
+  return clouds;
+}
 
 int setCastFields(int argc, const char* const argv[]) {
   sphcast::CommandLine args("setCastFields",
@@ -17,7 +37,7 @@ int setCastFields(int argc, const char* const argv[]) {
   const sphcast::CaseFolder caseFolder(args.casePath());
   sphcast::printBanner(args.application(), caseFolder.root().string());
 
-  const auto clouds = sphcast::buildCastClouds(caseFolder);
+  const auto clouds = sphcast::buildCastClouds(caseFolder, readMoldClouds(caseFolder));
   std::vector<const sphcast::ParticleCloud*> written;
   for (const auto& cloud : clouds) {
     sphcast::info() << "Cloud " << cloud.name() << ": " << cloud.size() << " particles\n";

@@ -1,0 +1,73 @@
+#include "geometry/MoldObstacles.h"
+
+namespace sphcast {
+
+MoldObstacles::MoldObstacles(const std::vector<ParticleCloud>& moldClouds, double spacing,
+                             double clearance)
+    : clearance_(clearance), clearanceGrid_(static_cast<Real>(clearance)) {
+  bool sided = true;
+  for (const ParticleCloud& cloud : moldClouds) {
+    sided = sided && cloud.hasVectorField("normal") && cloud.hasScalarField("wallDistance");
+  }
+  for (const ParticleCloud& cloud : moldClouds) {
+    particles_.positions.insert(particles_.positions.end(), cloud.positions().begin(),
+                                cloud.positions().end());
+    if (cloud.hasScalarField("volume")) {
+      const auto& volume = cloud.scalarField("volume");
+      particles_.volumes.insert(particles_.volumes.end(), volume.begin(), volume.end());
+    } else {
+      particles_.volumes.insert(particles_.volumes.end(), cloud.size(),
+                                static_cast<Real>(spacing * spacing * spacing));
+    }
+    if (sided) {
+      const auto& normal = cloud.vectorField("normal");
+      const auto& distance = cloud.scalarField("wallDistance");
+      normals_.insert(normals_.end(), normal.begin(), normal.end());
+      wallDistances_.insert(wallDistances_.end(), distance.begin(), distance.end());
+    }
+  }
+  if (!empty()) clearanceGrid_.build(particles_.positions);
+}
+
+std::vector<bool> MoldObstacles::clear(const std::vector<Vector>& points) const {
+  std::vector<bool> result(points.size(), true);
+  if (empty() || points.empty()) return result;
+  NeighbourList list;
+  list.buildBetween(points, particles_.positions, clearanceGrid_);
+  for (std::size_t i = 0; i < points.size(); ++i) result[i] = list.of(i).empty();
+  return result;
+}
+
+std::vector<bool> MoldObstacles::behindWall(const std::vector<Vector>& points,
+                                            double radius) const {
+  std::vector<bool> behind(points.size(), false);
+  if (normals_.empty() || points.empty()) return behind;
+  const auto& walls = particles_.positions;
+  CellGrid grid(static_cast<Real>(radius));
+  grid.build(walls);
+  NeighbourList list;
+  list.buildBetween(points, walls, grid);
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    for (const std::uint32_t j : list.of(i)) {
+      if (wallDistances_[j] - (points[i] - walls[j]).dot(normals_[j]) > Real(0)) {
+        behind[i] = true;
+        break;
+      }
+    }
+  }
+  return behind;
+}
+
+FixedNeighbours MoldObstacles::within(const Vector& lower, const Vector& upper) const {
+  FixedNeighbours near;
+  for (std::size_t j = 0; j < particles_.positions.size(); ++j) {
+    const Vector& p = particles_.positions[j];
+    if ((p.array() >= lower.array()).all() && (p.array() <= upper.array()).all()) {
+      near.positions.push_back(p);
+      near.volumes.push_back(particles_.volumes[j]);
+    }
+  }
+  return near;
+}
+
+}  // namespace sphcast
