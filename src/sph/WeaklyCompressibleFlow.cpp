@@ -323,6 +323,13 @@ void WeaklyCompressibleFlow::computeRatesFor() {
           accumulateWallPair<Dim, Interface, Viscosity>(
               self, muI, particle, halfSpacing, xik, r,
               corrected ? Vector(correctionI * gradW) : gradW, constants, rate, accel);
+          if (diffusive) {
+            // deltaSPH's artificial viscosity against the mirror velocity 2 v_wall - v_i (walls
+            // at rest): without it a means interface has no dissipation at an impact on a wall
+            const Real etaSquared = constants.viscosityRegularisation;
+            accel += (viscousScale * wall.volume[k] * Real(2) * vi.dot(xik) /
+                      (r * r + etaSquared)) * gradW;
+          }
         }
       }
       densityRate[i] = rate;
