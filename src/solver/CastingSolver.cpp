@@ -86,14 +86,20 @@ void CastingSolver::setUpFlow() {
   fluid_ = &fluid;
   lastGoodFluid_ = std::make_unique<ParticleCloud>(fluid);
   domain_ = walls.empty() ? defaultDomain({&fluid}) : defaultDomain(walls);
-  info() << "Flow: weakly compressible SPH, densityScheme " << flowSetup_.settings.densityScheme
-         << ", viscousForm " << flowSetup_.settings.viscousForm << ", h = "
-         << flowSetup_.settings.supportRadius << " m, c = " << flowSetup_.settings.soundSpeed
-         << " m/s\n"
+  const FlowSettings& settings = flowSetup_.settings;
+  info() << "Flow: weakly compressible SPH (" << settings.dimension << "D), densityScheme "
+         << settings.densityScheme << ", kernelCorrection "
+         << (settings.kernelCorrection ? "on" : "off") << ", viscousForm " << settings.viscousForm
+         << ", h = " << settings.supportRadius << " m, c = " << settings.soundSpeed << " m/s\n"
          << "    fluid " << fluid.name() << ": " << fluid.size() << " particles, "
          << flow_->fluidPairCount() << " pairs\n";
   for (const ParticleCloud* wall : walls) {
     info() << "    wall " << wall->name() << ": " << wall->size() << " particles\n";
+  }
+  for (int axis = 0; axis < 3; ++axis) {
+    if (!settings.periodic.isPeriodic(axis)) continue;
+    info() << "    periodic " << "xyz"[axis] << ": [" << settings.periodic.lower(axis) << ", "
+           << settings.periodic.lower(axis) + settings.periodic.period(axis) << ")\n";
   }
   const Eigen::IOFormat plain(Eigen::StreamPrecision, Eigen::DontAlignCols, " ", " ");
   info() << "    domain (" << domain_.lower.transpose().format(plain) << ") ("

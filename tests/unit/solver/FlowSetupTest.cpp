@@ -1,0 +1,93 @@
+// What the flow reads of a case: the numerics keys of system/sphSchemes and the dimension and
+// periodic axes of constant/physicsModels, and the errors a user gets for them.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "core/CaseFolder.h"
+#include "core/dictionary/SourceLocation.h"
+#include "solver/FlowSetup.h"
+#include "support/TemporaryCase.h"
+
+namespace sphcast {
+namespace {
+
+const char* header = "FoamFile { version 2.0; format ascii; class dictionary; }\n";
+
+struct FlowCase : testing::TemporaryCase {
+  FlowCase(const std::string& models, const std::string& schemes) {
+    write("constant/physicsModels",
+          header + models + "flow { model weaklyCompressible; fluid water; walls (tank); }\n");
+    write("system/sphSchemes", header + schemes +
+                                   "viscousForm Morris;\nsupportRadius 0.03;\nsoundSpeed 10;\n");
+    write("constant/physicalProperties", std::string(header) +
+                                             "water { density 1000; viscosity 1e-3; }\n");
+  }
+  FlowSetup read(const Vector& gravity = Vector(0, -9.81, 0)) const {
+    return readFlowSetup(CaseFolder(root()), gravity);
+  }
+};
+
+// The message of the DictionaryError that reading the case throws ("" if none).
+std::string errorOf(const FlowCase& flowCase, const Vector& gravity = Vector(0, -9.81, 0)) {
+  try {
+    flowCase.read(gravity);
+  } catch (const DictionaryError& error) {
+    return error.what();
+  }
+  return "";
+}
+
+TEST(FlowSetup, ReadsDimensionPeriodicAxesAndTheNumerics) {
+  const FlowCase flowCase("dimension 2;\nperiodic { x (-0.1 0.2); }\n",
+                          "densityScheme deltaSPH;\nkernelCorrection on;\n"
+                          "deltaSPHCoeffs { delta 0.12; alpha 0.03; }\n");
+  const FlowSetup setup = flowCase.read();
+  EXPECT_EQ(setup.settings.dimension, 2);
+  EXPECT_EQ(setup.settings.densityScheme, "deltaSPH");
+  EXPECT_TRUE(setup.settings.kernelCorrection);
+  EXPECT_DOUBLE_EQ(setup.settings.deltaSPHDiffusion, 0.12);
+  EXPECT_DOUBLE_EQ(setup.settings.deltaSPHViscosity, 0.03);
+  EXPECT_TRUE(setup.settings.periodic.isPeriodic(0));
+  EXPECT_FALSE(setup.settings.periodic.isPeriodic(1));
+  EXPECT_DOUBLE_EQ(setup.settings.periodic.lower(0), -0.1);
+  EXPECT_NEAR(setup.settings.periodic.period(0), 0.3, 1e-15);
+}
+
+TEST(FlowSetup, DefaultsAre3DWithoutCorrectionOrPeriodicAxes) {
+  const FlowSetup setup = FlowCase("", "densityScheme riemann;\n").read();
+  EXPECT_EQ(setup.settings.dimension, 3);
+  EXPECT_FALSE(setup.settings.kernelCorrection);
+  EXPECT_FALSE(setup.settings.periodic.anyPeriodic());
+}
+
+// Each error names the file and line (the header is line 1, the first entry line 2) and says
+// what is wrong.
+TEST(FlowSetup, BadKeysAreErrorsAtTheirLine) {
+  const std::string riemann = "densityScheme riemann;\n";
+  auto expectError = [](const std::string& message, const std::string& place,
+                        const std::string& what) {
+    EXPECT_NE(message.find(place), std::string::npos) << message;
+    EXPECT_NE(message.find(what), std::string::npos) << message;
+  };
+  expectError(errorOf(FlowCase("dimension 4;\n", riemann)), "physicsModels:2",
+              "'dimension' must be 2 or 3");
+  EXPECT_EQ(errorOf(FlowCase("dimension 3;\n", riemann), Vector(0, 0, -9.81)), "");
+  expectError(errorOf(FlowCase("dimension 2;\n", riemann), Vector(0, 0, -9.81)),
+              "physicsModels:2", "constant/g has a z component");
+  // the minimum image needs a period longer than 2 h = 0.06 m
+  expectError(errorOf(FlowCase("periodic { y (0 0.05); }\n", riemann)), "physicsModels:2",
+              "longer than twice the supportRadius");
+  expectError(errorOf(FlowCase("dimension 2;\nperiodic { z (0 1); }\n", riemann)),
+              "physicsModels:3", "a 2D case has no periodic z axis");
+  expectError(errorOf(FlowCase("periodic { w (0 1); }\n", riemann)), "physicsModels:2", "'w'");
+  expectError(errorOf(FlowCase("", "densityScheme delta;\n")), "sphSchemes:2",
+              "riemann standard deltaSPH");
+  expectError(errorOf(FlowCase("", riemann + "kernelCorrection yes;\n")), "sphSchemes:3",
+              "kernelCorrection");
+  expectError(errorOf(FlowCase("", "densityScheme deltaSPH;\ndeltaSPHCoeffs { delta -1; }\n")),
+              "sphSchemes:3", "'delta' must not be negative");
+}
+
+}  // namespace
+}  // namespace sphcast
