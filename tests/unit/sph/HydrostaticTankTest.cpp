@@ -17,7 +17,8 @@ struct TankResult {
   std::size_t escaped;    // particles outside the tank
 };
 
-TankResult runTank(const std::string& scheme, double dimensionlessTime) {
+TankResult runTank(const std::string& scheme, double dimensionlessTime,
+                   bool kernelCorrection = false) {
   const int columns = 20;
   const int rows = 20;
   const Real dx = 0.002;
@@ -57,6 +58,7 @@ TankResult runTank(const std::string& scheme, double dimensionlessTime) {
   settings.soundSpeed = c;
   settings.gravity = Vector(0, -g, 0);
   settings.densityScheme = scheme;
+  settings.kernelCorrection = kernelCorrection;
   WeaklyCompressibleFlow flow(settings, fluid, {&wall});
 
   const double endTime = dimensionlessTime / std::sqrt(g / height);
@@ -96,6 +98,36 @@ TEST(HydrostaticTank, RiemannSchemeKeepsTheColumnAtRestWithHydrostaticPressure) 
   EXPECT_LT(result.pressureError, 0.06);
   EXPECT_LT(result.largestSpeed, 0.015);
   EXPECT_LT(result.largestDrift, 3.0);
+}
+
+TEST(HydrostaticTank, KernelCorrectionLowersThePressureError) {
+  const auto result = runTank("riemann", 20, true);
+  std::printf("hydrostatic tank 2D, kernelCorrection on: pressure RMS error %.4f rho g H, "
+              "largest speed %.4f sqrt(gH), largest drift %.3f dx, %zu escaped\n",
+              result.pressureError, result.largestSpeed, result.largestDrift, result.escaped);
+  // Measured: RMS pressure error 0.0395 rho g H (0.047 without), but the particles move more:
+  // largest speed 0.044 sqrt(gH) (0.0076 without) and drift 3.7 dx (2.0). The fallback blends
+  // the correction out at the free surface only; one or two spacings below it the corrected
+  // pressure gradient of the symmetric pair form is not balanced by gravity as well as the
+  // plain one, so the upper layers circulate slowly.
+  EXPECT_EQ(result.escaped, 0u);
+  EXPECT_LT(result.pressureError, 0.042);
+  EXPECT_LT(result.largestSpeed, 0.06);
+  EXPECT_LT(result.largestDrift, 5.0);
+}
+
+// The long run, t sqrt(g/H) = 100 (about 2 minutes on one thread): run with
+// --gtest_also_run_disabled_tests --gtest_filter='*LongRun*'.
+TEST(HydrostaticTank, DISABLED_LongRun) {
+  for (const bool corrected : {false, true}) {
+    const auto result = runTank("riemann", 100, corrected);
+    std::printf("hydrostatic tank 2D, 20x20, t sqrt(g/H) = 100, kernelCorrection %s: pressure RMS "
+                "error %.4f rho g H, largest speed %.4f sqrt(gH), largest drift %.3f dx, %zu "
+                "escaped\n",
+                corrected ? "on" : "off", result.pressureError, result.largestSpeed,
+                result.largestDrift, result.escaped);
+    EXPECT_EQ(result.escaped, 0u);
+  }
 }
 
 }  // namespace
