@@ -40,7 +40,10 @@ sphcast::ParticleCloud periodicBlock(int perSide, Real dx) {
   return fluid;
 }
 
-void FlowStep(benchmark::State& state) {
+// One step of the scheme named by densityScheme, with or without the kernel correction (which
+// adds a pass over every pair for the correction matrices; deltaSPH adds that pass for its
+// renormalised density gradient and two terms per pair).
+void FlowStep(benchmark::State& state, const char* densityScheme, bool kernelCorrection) {
   const int perSide = static_cast<int>(std::lround(std::cbrt(double(state.range(0)))));
   const Real dx = Real(1.25e-3);
   auto fluid = periodicBlock(perSide, dx);
@@ -49,6 +52,8 @@ void FlowStep(benchmark::State& state) {
   settings.supportRadius = 3 * dx;
   settings.soundSpeed = 50;
   settings.gravity = Vector(0, 0, Real(-9.81));
+  settings.densityScheme = densityScheme;
+  settings.kernelCorrection = kernelCorrection;
   for (int axis = 0; axis < 3; ++axis) settings.periodic.setPeriodic(axis, 0, perSide * dx);
   sphcast::WeaklyCompressibleFlow flow(settings, fluid, {});
   std::string limiter;
@@ -59,7 +64,11 @@ void FlowStep(benchmark::State& state) {
       double(flow.fluidPairCount()) * double(state.iterations()), benchmark::Counter::kIsRate);
   state.counters["particles"] = double(fluid.size());
 }
-BENCHMARK(FlowStep)->Arg(10'000)->Arg(100'000)->Arg(1'000'000)->Unit(benchmark::kMillisecond)
-    ->UseRealTime();
+BENCHMARK_CAPTURE(FlowStep, riemann, "riemann", false)
+    ->Arg(10'000)->Arg(100'000)->Arg(1'000'000)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_CAPTURE(FlowStep, riemannCorrected, "riemann", true)
+    ->Arg(10'000)->Arg(100'000)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_CAPTURE(FlowStep, deltaSPH, "deltaSPH", false)
+    ->Arg(10'000)->Arg(100'000)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 }  // namespace
