@@ -100,7 +100,7 @@ FlowSetup readFlowSetup(const CaseFolder& caseFolder, const Vector& gravity) {
   properties.checkKeys({setup.fluidCloud});
   const Dictionary& material = properties.subDict(setup.fluidCloud);
   material.checkKeys({"density", "viscosity"});
-  setup.restDensity = positive<Real>(material, "density", density);
+  setup.restDensity = TemperatureTable::read(material, "density", density);
   setup.viscosity = positive<Real>(material, "viscosity", dynamicViscosity);
   return setup;
 }
@@ -112,9 +112,30 @@ std::vector<std::string> prepareFluidFields(const FlowSetup& setup, ParticleClou
     for (Real& x : fluid.addScalarField(name)) x = value;
     added.emplace_back(name);
   };
-  fill("restDensity", setup.restDensity);
+  const TemperatureTable& restDensity = *setup.restDensity;
+  if (!fluid.hasScalarField("restDensity")) {
+    auto& rest = fluid.addScalarField("restDensity");
+    if (restDensity.isConstant()) {
+      for (Real& value : rest) value = static_cast<Real>(restDensity(0));
+    } else {
+      if (!fluid.hasScalarField("T")) {
+        throw DictionaryError(restDensity.location(),
+                              restDensity.description() + " is a table in T, but cloud '" +
+                                  fluid.name() + "' has no T (set it with setCastFields)");
+      }
+      const auto& temperature = fluid.scalarField("T");
+      for (std::size_t i = 0; i < rest.size(); ++i) {
+        rest[i] = static_cast<Real>(restDensity(static_cast<double>(temperature[i])));
+      }
+    }
+    added.emplace_back("restDensity");
+  }
   fill("viscosity", setup.viscosity);
-  fill("rho", setup.restDensity);
+  if (!fluid.hasScalarField("rho")) {
+    const std::vector<Real> restValues = fluid.scalarField("restDensity");  // copied: adding
+    fluid.addScalarField("rho") = restValues;                              // a field may move it
+    added.emplace_back("rho");
+  }
   if (!fluid.hasScalarField("mass")) {
     if (!fluid.hasScalarField("volume")) {
       throw Error("cloud '" + fluid.name() +

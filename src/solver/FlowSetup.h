@@ -3,8 +3,11 @@
 #include <string>
 #include <vector>
 
+#include <optional>
+
 #include "core/CaseFolder.h"
 #include "core/Real.h"
+#include "core/TemperatureTable.h"
 #include "sph/WeaklyCompressibleFlow.h"
 
 namespace sphcast {
@@ -24,22 +27,24 @@ namespace sphcast {
 //                            supportRadius 0.0045;       // h, m
 //                            soundSpeed    50;           // c of eq. (3), m/s
 //   constant/physicalProperties:  metal { density 2400; viscosity 1.28e-3; }
-//                            (rho_s in kg/m^3 and dynamic viscosity in Pa s; temperature
-//                            tables replace them with the thermal models)
+//                            (rho_s in kg/m^3, or a table in T: density table ((T rho) ...);
+//                            dynamic viscosity in Pa s)
 struct FlowSetup {
   bool enabled = false;
   std::string fluidCloud;
   std::vector<std::string> wallClouds;
   FlowSettings settings;
-  Real restDensity = 0;
+  std::optional<TemperatureTable> restDensity;  // rho_s(T), or a constant
   Real viscosity = 0;
 };
 
 // Reads and checks the three dictionaries (errors name file, line and key).
 FlowSetup readFlowSetup(const CaseFolder& caseFolder, const Vector& gravity);
 
-// Gives the fluid cloud the fields the flow needs that the start time lacks: rho (rho_s),
-// mass (rho volume), viscosity, restDensity. Returns what it added, for the log.
+// Gives the fluid cloud the fields the flow needs that the start time lacks: restDensity
+// (rho_s, at each particle's T where rho_s is a table: the cloud must have T), rho (rho_s),
+// mass (rho volume), viscosity. Returns what it added, for the log. Until the thermal models
+// move T, rho_s stays what it was at the start.
 std::vector<std::string> prepareFluidFields(const FlowSetup& setup, ParticleCloud& fluid);
 
 }  // namespace sphcast

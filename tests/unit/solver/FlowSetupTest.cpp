@@ -15,13 +15,14 @@ namespace {
 const char* header = "FoamFile { version 2.0; format ascii; class dictionary; }\n";
 
 struct FlowCase : testing::TemporaryCase {
-  FlowCase(const std::string& models, const std::string& schemes) {
+  FlowCase(const std::string& models, const std::string& schemes,
+           const std::string& density = "1000") {
     write("constant/physicsModels",
           header + models + "flow { model weaklyCompressible; fluid water; walls (tank); }\n");
     write("system/sphSchemes", header + schemes +
                                    "viscousForm Morris;\nsupportRadius 0.03;\nsoundSpeed 10;\n");
     write("constant/physicalProperties", std::string(header) +
-                                             "water { density 1000; viscosity 1e-3; }\n");
+                                             "water { density " + density + "; viscosity 1e-3; }\n");
   }
   FlowSetup read(const Vector& gravity = Vector(0, -9.81, 0)) const {
     return readFlowSetup(CaseFolder(root()), gravity);
@@ -59,6 +60,38 @@ TEST(FlowSetup, DefaultsAre3DWithoutCorrectionOrPeriodicAxes) {
   EXPECT_EQ(setup.settings.dimension, 3);
   EXPECT_FALSE(setup.settings.kernelCorrection);
   EXPECT_FALSE(setup.settings.periodic.anyPeriodic());
+}
+
+// rho_s as a table in T (the material tables of DESIGN.md §4): each particle starts with
+// restDensity and rho at its own temperature; a cloud without T cannot use a table.
+TEST(FlowSetup, RestDensityFromATemperatureTable) {
+  const FlowCase flowCase("", "densityScheme riemann;\n",
+                          "table ((800 2500) (900 2400) (1000 2350))");
+  const FlowSetup setup = flowCase.read();
+  ParticleCloud water("water");
+  water.resize(3);
+  auto& temperature = water.addScalarField("T");
+  temperature = {850, 950, 1100};
+  water.addScalarField("volume") = {1e-9, 1e-9, 1e-9};
+  prepareFluidFields(setup, water);
+  const std::vector<Real> expected{2450, 2375, 2350};  // interpolated; clamped above 1000 K
+  for (std::size_t i = 0; i < 3; ++i) {
+    EXPECT_DOUBLE_EQ(water.scalarField("restDensity")[i], expected[i]);
+    EXPECT_DOUBLE_EQ(water.scalarField("rho")[i], expected[i]);
+    EXPECT_DOUBLE_EQ(water.scalarField("mass")[i], expected[i] * 1e-9);
+  }
+
+  ParticleCloud cold("water");
+  cold.resize(1);
+  cold.addScalarField("volume") = {1e-9};
+  try {
+    prepareFluidFields(setup, cold);
+    FAIL() << "a table without T was accepted";
+  } catch (const DictionaryError& error) {
+    const std::string message = error.what();
+    EXPECT_NE(message.find("physicalProperties:2"), std::string::npos) << message;
+    EXPECT_NE(message.find("has no T"), std::string::npos) << message;
+  }
 }
 
 // Each error names the file and line (the header is line 1, the first entry line 2) and says
