@@ -25,7 +25,8 @@ struct InterfaceState {
 struct ArithmeticMeanInterface {
   static constexpr const char* name = "standard";
   InterfaceState operator()(const InterfaceSide& left, const InterfaceSide& right,
-                            const Vector& /*towardsRight*/, Real /*soundSpeed*/) const {
+                            const Vector& /*towardsRight*/, Real /*soundSpeed*/,
+                            Real /*restingJump*/ = 0) const {
     return {Real(0.5) * (left.pressure + right.pressure),
             Real(0.5) * (left.velocity + right.velocity)};
   }
@@ -39,12 +40,17 @@ struct ArithmeticMeanInterface {
 // the tangential velocity is the plain mean. eta = 3 as in Zhang et al.
 // Evaluated with one division per pair: beta rho_mean c = rho_mean min(eta max(U_L - U_R, 0), c)
 // (c cancels), and v* = v_mean + (U* - U_mean) e = v_mean + (P_L - P_R) / (2 rho_mean c) e.
+// restingJump is the part of P_L - P_R that a fluid at rest has (hydrostatic, rho g . x_LR):
+// U* takes only the rest, so a column at rest has v* = 0 and keeps its density. Without it
+// the jump term diffuses the hydrostatic pressure wherever the support is not full, which
+// raised the density at the free surface and walls of a tank at rest steadily.
 struct AcousticRiemannInterface {
   static constexpr const char* name = "riemann";
   static constexpr Real limiterSlope = 3;
 
   InterfaceState operator()(const InterfaceSide& left, const InterfaceSide& right,
-                            const Vector& towardsRight, Real soundSpeed) const {
+                            const Vector& towardsRight, Real soundSpeed,
+                            Real restingJump = 0) const {
     const Real uLeft = left.velocity.dot(towardsRight);
     const Real uRight = right.velocity.dot(towardsRight);
     const Real meanDensity = Real(0.5) * (left.density + right.density);
@@ -56,7 +62,7 @@ struct AcousticRiemannInterface {
         Real(0.5) * (left.pressure + right.pressure) + Real(0.5) * limitedImpedance * compression;
     // U* - U_mean
     const Real normalVelocityJump =
-        Real(0.5) * (left.pressure - right.pressure) / (meanDensity * soundSpeed);
+        Real(0.5) * (left.pressure - right.pressure - restingJump) / (meanDensity * soundSpeed);
     const Vector meanVelocity = Real(0.5) * (left.velocity + right.velocity);
     return {pressure, meanVelocity + normalVelocityJump * towardsRight};
   }

@@ -12,6 +12,7 @@ namespace {
 
 struct TankResult {
   double pressureError;   // RMS of p - rho0 g (H - y), over rho0 g H
+  double pressureOffset;  // mean of p - rho0 g (H - y), over rho0 g H
   double largestSpeed;    // over sqrt(g H)
   double largestDrift;    // largest displacement, over dx
   std::size_t escaped;    // particles outside the tank
@@ -71,10 +72,12 @@ TankResult runTank(const std::string& scheme, double dimensionlessTime,
 
   TankResult result{};
   double squares = 0;
+  double sum = 0;
   for (std::size_t i = 0; i < fluid.size(); ++i) {
     const Vector& x = fluid.positions()[i];
     const double exact = rho0 * g * (height - x.y());
     squares += std::pow(fluid.scalarField("p")[i] - exact, 2);
+    sum += fluid.scalarField("p")[i] - exact;
     result.largestSpeed =
         std::max(result.largestSpeed, double(fluid.vectorField("U")[i].norm()) / std::sqrt(g * height));
     const auto original = static_cast<std::size_t>(fluid.idField("id")[i]);
@@ -82,6 +85,7 @@ TankResult runTank(const std::string& scheme, double dimensionlessTime,
     if (x.x() < 0 || x.x() > width || x.y() < 0) ++result.escaped;
   }
   result.pressureError = std::sqrt(squares / double(fluid.size())) / (rho0 * g * height);
+  result.pressureOffset = sum / double(fluid.size()) / (rho0 * g * height);
   return result;
 }
 
@@ -90,42 +94,45 @@ TEST(HydrostaticTank, RiemannSchemeKeepsTheColumnAtRestWithHydrostaticPressure) 
   std::printf("hydrostatic tank 2D, 20x20, t sqrt(g/H) = 20: pressure RMS error %.4f rho g H, "
               "largest speed %.4f sqrt(gH), largest drift %.3f dx, %zu escaped\n",
               result.pressureError, result.largestSpeed, result.largestDrift, result.escaped);
-  // Measured at this coarse resolution without kernel-gradient correction (not built yet): RMS
-  // pressure error 0.047 rho g H, largest speed 0.0076 sqrt(gH), largest drift 2.0 dx. With the
-  // wall pressure mirrored per pair instead of Adami's extrapolation the same run gave 0.077,
-  // 0.062 and 18 dx: the bounds below separate the two.
+  // Measured at this coarse resolution: RMS pressure error 0.0052 rho g H, largest speed
+  // 0.0085 sqrt(gH), largest drift 0.82 dx. Before the Riemann interface left out the
+  // hydrostatic part of the pressure jump (RiemannSolver.h, restingJump) the same run gave
+  // 0.047, 0.0076 and 2.0 dx; with the wall pressure mirrored per pair instead of Adami's
+  // extrapolation 0.077, 0.062 and 18 dx: the bounds below separate all three.
   EXPECT_EQ(result.escaped, 0u);
-  EXPECT_LT(result.pressureError, 0.06);
+  EXPECT_LT(result.pressureError, 0.01);
   EXPECT_LT(result.largestSpeed, 0.015);
-  EXPECT_LT(result.largestDrift, 3.0);
+  EXPECT_LT(result.largestDrift, 1.5);
 }
 
-TEST(HydrostaticTank, KernelCorrectionLowersThePressureError) {
+TEST(HydrostaticTank, KernelCorrectionKeepsTheColumnInTheTank) {
   const auto result = runTank("riemann", 20, true);
   std::printf("hydrostatic tank 2D, kernelCorrection on: pressure RMS error %.4f rho g H, "
               "largest speed %.4f sqrt(gH), largest drift %.3f dx, %zu escaped\n",
               result.pressureError, result.largestSpeed, result.largestDrift, result.escaped);
-  // Measured: RMS pressure error 0.0395 rho g H (0.047 without), but the particles move more:
-  // largest speed 0.044 sqrt(gH) (0.0076 without) and drift 3.7 dx (2.0). The fallback blends
-  // the correction out at the free surface only; one or two spacings below it the corrected
+  // Measured: RMS pressure error 0.0167 rho g H, largest speed 0.061 sqrt(gH), drift 5.2 dx,
+  // each worse than without the correction (0.0052, 0.0085, 0.82). The fallback blends the
+  // correction out at the free surface only; one or two spacings below it the corrected
   // pressure gradient of the symmetric pair form is not balanced by gravity as well as the
-  // plain one, so the upper layers circulate slowly.
+  // plain one, so the upper layers circulate slowly. Bounds: stable and in the tank, not good.
   EXPECT_EQ(result.escaped, 0u);
-  EXPECT_LT(result.pressureError, 0.042);
-  EXPECT_LT(result.largestSpeed, 0.06);
-  EXPECT_LT(result.largestDrift, 5.0);
+  EXPECT_LT(result.pressureError, 0.025);
+  EXPECT_LT(result.largestSpeed, 0.08);
+  EXPECT_LT(result.largestDrift, 7.0);
 }
 
 // The issue's long run, t sqrt(g/H) = 100 (about 2 minutes on one thread): run with
-// --gtest_also_run_disabled_tests --gtest_filter='*LongRun*'.
+// --gtest_also_run_disabled_tests --gtest_filter='*LongRun*'. Not passed yet: measured RMS
+// pressure error 0.39 rho g H without and 0.33 with kernelCorrection, drift 9.0 and 12.2 dx (no
+// particle left the tank); the criterion of issue #3 is not met at this length of run.
 TEST(HydrostaticTank, DISABLED_LongRun) {
   for (const bool corrected : {false, true}) {
     const auto result = runTank("riemann", 100, corrected);
     std::printf("hydrostatic tank 2D, 20x20, t sqrt(g/H) = 100, kernelCorrection %s: pressure RMS "
-                "error %.4f rho g H, largest speed %.4f sqrt(gH), largest drift %.3f dx, %zu "
-                "escaped\n",
-                corrected ? "on" : "off", result.pressureError, result.largestSpeed,
-                result.largestDrift, result.escaped);
+                "error %.4f rho g H (mean %.4f), largest speed %.4f sqrt(gH), largest drift "
+                "%.3f dx, %zu escaped\n",
+                corrected ? "on" : "off", result.pressureError, result.pressureOffset,
+                result.largestSpeed, result.largestDrift, result.escaped);
     EXPECT_EQ(result.escaped, 0u);
   }
 }

@@ -17,6 +17,26 @@ TEST(AcousticRiemannInterface, EqualStatesGiveThatState) {
   EXPECT_NEAR((star.velocity - side.velocity).norm(), 0, 1e-15);
 }
 
+TEST(AcousticRiemannInterface, AHydrostaticJumpAtRestLeavesTheVelocityAtRest) {
+  // Two particles of a column at rest, left one dx = 5 mm below the right one: p_L - p_R =
+  // rho g dx. Given as restingJump, v* = 0 (no density change at rest); without it v* points
+  // from high to low pressure by rho g dx / (2 rho c) = g dx / (2 c).
+  const Real g = Real(9.81);
+  const Real dx = Real(0.005);
+  const InterfaceSide left{1000, 1000 * g * dx, Vector::Zero()};
+  const InterfaceSide right{1000, 0, Vector::Zero()};
+  const Vector up(0, 1, 0);
+  const auto atRest = AcousticRiemannInterface{}(left, right, up, c, 1000 * g * dx);
+  EXPECT_EQ(atRest.velocity, Vector::Zero());
+  EXPECT_DOUBLE_EQ(atRest.pressure, 0.5 * 1000 * g * dx);
+  const auto plain = AcousticRiemannInterface{}(left, right, up, c);
+  EXPECT_NEAR(plain.velocity.y(), g * dx / (2 * c), 1e-15);
+  // a jump beyond the hydrostatic one still drives v*
+  const InterfaceSide pushed{1000, 2000 * g * dx, Vector::Zero()};
+  const auto driven = AcousticRiemannInterface{}(pushed, right, up, c, 1000 * g * dx);
+  EXPECT_NEAR(driven.velocity.y(), g * dx / (2 * c), 1e-15);
+}
+
 TEST(AcousticRiemannInterface, StrongCompressionGivesTheAcousticImpedanceJump) {
   // U_L - U_R = 20 m/s >= c/3: limiter 1, so P* = P_mean + rho c (U_L - U_R) / 2 exactly.
   const InterfaceSide left{2400, 0, Vector(10, 0, 0)};
