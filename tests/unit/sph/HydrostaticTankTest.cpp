@@ -121,20 +121,21 @@ TEST(HydrostaticTank, KernelCorrectionKeepsTheColumnInTheTank) {
   EXPECT_LT(result.largestDrift, 7.0);
 }
 
-// The issue's long run, t sqrt(g/H) = 100 (about 2 minutes on one thread): run with
-// --gtest_also_run_disabled_tests --gtest_filter='*LongRun*'. Not passed yet: measured RMS
-// pressure error 0.39 rho g H without and 0.33 with kernelCorrection, drift 9.0 and 12.2 dx (no
-// particle left the tank); the criterion of issue #3 is not met at this length of run.
-TEST(HydrostaticTank, DISABLED_LongRun) {
-  for (const bool corrected : {false, true}) {
-    const auto result = runTank("riemann", 100, corrected);
-    std::printf("hydrostatic tank 2D, 20x20, t sqrt(g/H) = 100, kernelCorrection %s: pressure RMS "
-                "error %.4f rho g H (mean %.4f), largest speed %.4f sqrt(gH), largest drift "
-                "%.3f dx, %zu escaped\n",
-                corrected ? "on" : "off", result.pressureError, result.pressureOffset,
-                result.largestSpeed, result.largestDrift, result.escaped);
-    EXPECT_EQ(result.escaped, 0u);
-  }
+// The issue's criterion: a long run, t sqrt(g/H) = 100 (about a minute on one thread).
+TEST(HydrostaticTank, StaysHydrostaticOverALongRun) {
+  const auto result = runTank("riemann", 100);
+  std::printf("hydrostatic tank 2D, 20x20, t sqrt(g/H) = 100: pressure RMS error %.4f rho g H "
+              "(mean %.4f), largest speed %.4f sqrt(gH), largest drift %.3f dx, %zu escaped\n",
+              result.pressureError, result.pressureOffset, result.largestSpeed,
+              result.largestDrift, result.escaped);
+  // Measured: RMS pressure error 0.0075 rho g H, nearly all of it a uniform offset (mean
+  // 0.0074), largest speed 0.012 sqrt(gH), drift 0.96 dx. Before the Riemann interface left
+  // out the hydrostatic jump the same run gave 0.39 rho g H and 9.0 dx; with kernelCorrection
+  // on it gives 0.027 rho g H, 0.090 sqrt(gH) and 22.6 dx (no particle escapes either way).
+  EXPECT_EQ(result.escaped, 0u);
+  EXPECT_LT(result.pressureError, 0.015);
+  EXPECT_LT(result.largestSpeed, 0.025);
+  EXPECT_LT(result.largestDrift, 1.5);
 }
 
 }  // namespace
