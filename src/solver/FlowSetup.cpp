@@ -79,8 +79,9 @@ FlowSetup readFlowSetup(const CaseFolder& caseFolder, const Vector& gravity) {
     settings.deltaSPHViscosity = coeffs.getOrDefault<Real>("alpha", settings.deltaSPHViscosity);
     for (const char* key : {"delta", "alpha"}) {
       if (coeffs.found(key) && !(coeffs.get<Real>(key) >= 0)) {
-        throw DictionaryError(coeffs.location(key),
-                              std::string("'") + key + "' must not be negative in " + coeffs.name());
+        throw DictionaryError(
+            coeffs.location(key),
+            std::string("'") + key + "' must not be negative in " + coeffs.name());
       }
     }
   }
@@ -132,8 +133,9 @@ std::vector<std::string> prepareFluidFields(const FlowSetup& setup, ParticleClou
   }
   fill("viscosity", setup.viscosity);
   if (!fluid.hasScalarField("rho")) {
-    const std::vector<Real> restValues = fluid.scalarField("restDensity");  // copied: adding
-    fluid.addScalarField("rho") = restValues;                              // a field may move it
+    // a copy: adding a field may move the others
+    const std::vector<Real> restValues = fluid.scalarField("restDensity");
+    fluid.addScalarField("rho") = restValues;
     added.emplace_back("rho");
   }
   if (!fluid.hasScalarField("mass")) {

@@ -19,11 +19,11 @@ Matrix blendedInverse(const Eigen::Matrix<Real, Size, Size>& moment,
   Matrix corrected = Matrix::Identity();
   // also catches NaN: a moment that is not finite gets the identity
   if (!(smallest > fallback.none)) return corrected;
-  const Real weight = std::min(Real(1), (smallest - fallback.none) / (fallback.full - fallback.none));
+  const Real weight =
+      std::min(Real(1), (smallest - fallback.none) / (fallback.full - fallback.none));
   const Eigen::Matrix<Real, Size, Size> inverse = moment.inverse();
   corrected.template topLeftCorner<Size, Size>() =
-      weight * inverse +
-      (Real(1) - weight) * Eigen::Matrix<Real, Size, Size>::Identity();
+      weight * inverse + (Real(1) - weight) * Eigen::Matrix<Real, Size, Size>::Identity();
   return corrected;
 }
 

@@ -19,10 +19,10 @@ struct FlowCase : testing::TemporaryCase {
            const std::string& density = "1000") {
     write("constant/physicsModels",
           header + models + "flow { model weaklyCompressible; fluid water; walls (tank); }\n");
-    write("system/sphSchemes", header + schemes +
-                                   "viscousForm Morris;\nsupportRadius 0.03;\nsoundSpeed 10;\n");
-    write("constant/physicalProperties", std::string(header) +
-                                             "water { density " + density + "; viscosity 1e-3; }\n");
+    write("system/sphSchemes",
+          header + schemes + "viscousForm Morris;\nsupportRadius 0.03;\nsoundSpeed 10;\n");
+    write("constant/physicalProperties",
+          std::string(header) + "water { density " + density + "; viscosity 1e-3; }\n");
   }
   FlowSetup read(const Vector& gravity = Vector(0, -9.81, 0)) const {
     return readFlowSetup(CaseFolder(root()), gravity);
@@ -106,8 +106,8 @@ TEST(FlowSetup, BadKeysAreErrorsAtTheirLine) {
   expectError(errorOf(FlowCase("dimension 4;\n", riemann)), "physicsModels:2",
               "'dimension' must be 2 or 3");
   EXPECT_EQ(errorOf(FlowCase("dimension 3;\n", riemann), Vector(0, 0, -9.81)), "");
-  expectError(errorOf(FlowCase("dimension 2;\n", riemann), Vector(0, 0, -9.81)),
-              "physicsModels:2", "constant/g has a z component");
+  expectError(errorOf(FlowCase("dimension 2;\n", riemann), Vector(0, 0, -9.81)), "physicsModels:2",
+              "constant/g has a z component");
   // the minimum image needs a period longer than 2 h = 0.06 m
   expectError(errorOf(FlowCase("periodic { y (0 0.05); }\n", riemann)), "physicsModels:2",
               "longer than twice the supportRadius");

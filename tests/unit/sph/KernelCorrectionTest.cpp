@@ -67,8 +67,7 @@ GradientAtOrigin gradientAtOrigin(const Particles& particles, Real radius, const
 TEST(KernelCorrection, MakesTheGradientOfALinearFieldExactOnDisorderedParticles3D) {
   const Real dx = 0.01;
   const Vector a(1.5, -2.0, 0.7);
-  const auto result =
-      gradientAtOrigin<3>(lattice(3, 5, dx, Real(0.15), Real(1)), 3 * dx, a);
+  const auto result = gradientAtOrigin<3>(lattice(3, 5, dx, Real(0.15), Real(1)), 3 * dx, a);
   // disorder of +-0.15 dx moves the plain gradient by several per cent ...
   EXPECT_GT((result.plain - a).norm() / a.norm(), 0.01);
   // ... the corrected one is exact to round-off
@@ -78,8 +77,7 @@ TEST(KernelCorrection, MakesTheGradientOfALinearFieldExactOnDisorderedParticles3
 TEST(KernelCorrection, MakesTheGradientOfALinearFieldExactOnDisorderedParticles2D) {
   const Real dx = 0.01;
   const Vector a(-0.3, 4.0, 0);
-  const auto result =
-      gradientAtOrigin<2>(lattice(2, 6, dx, Real(0.15), Real(1)), 3 * dx, a);
+  const auto result = gradientAtOrigin<2>(lattice(2, 6, dx, Real(0.15), Real(1)), 3 * dx, a);
   EXPECT_GT((result.plain - a).norm() / a.norm(), 0.01);
   EXPECT_LT((result.corrected - a).norm() / a.norm(), 1e-12);
   EXPECT_EQ(result.moment(2, 2), 0);  // no z in 2D; the correction keeps z untouched
