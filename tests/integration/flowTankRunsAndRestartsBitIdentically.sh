@@ -4,17 +4,7 @@
 # particle leaves the tank, and a run stopped at 0.1 s and restarted gives the same 0.2 s files,
 # byte for byte, as an uninterrupted run.
 . "$SPHCAST_TEST_TOOLS"
-tutorial=$(cd "$(dirname "$0")/../../tutorials/validation/hydrostaticTank" && pwd)
-mkdir -p "$scratch/whole"
-cp -r "$tutorial/system" "$tutorial/constant" "$scratch/whole/"
-rm -rf "$scratch/whole/constant/particles"
-cd "$scratch/whole"
-# Coarse: dx = 10 mm (500 water particles), 0.2 s.
-sed -i 's/0\.005;/0.01;/; s/0\.015;/0.03;/' system/particleizeMoldDict
-sed -i 's/0\.005;/0.01;/' system/setCastFieldsDict
-sed -i 's/0\.015;/0.03;/' system/sphSchemes
-setEntry system/controlDict endTime 0.2
-setEntry system/controlDict writeInterval 0.05
+coarseWaterTank "$scratch/whole"  # dx = 10 mm (500 water particles), to 0.2 s
 particleizeMold > log.particleizeMold 2>&1 || fail "particleizeMold: $(tail -5 log.particleizeMold)"
 setCastFields > log.setCastFields 2>&1 || fail "setCastFields: $(tail -5 log.setCastFields)"
 cp -r "$scratch/whole" "$scratch/stopped"

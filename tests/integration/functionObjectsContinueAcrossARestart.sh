@@ -5,16 +5,7 @@
 # (each folder's rows before the next folder's `# startTime`) gives the uninterrupted run's rows,
 # byte for byte, with no time twice. Bad function entries stop sphCastFoam before it writes.
 . "$SPHCAST_TEST_TOOLS"
-tutorial=$(cd "$(dirname "$0")/../../tutorials/validation/hydrostaticTank" && pwd)
-mkdir -p "$scratch/whole"
-cp -r "$tutorial/system" "$tutorial/constant" "$scratch/whole/"
-rm -rf "$scratch/whole/constant/particles"
-cd "$scratch/whole"
-sed -i 's/0\.005;/0.01;/; s/0\.015;/0.03;/' system/particleizeMoldDict
-sed -i 's/0\.005;/0.01;/' system/setCastFieldsDict
-sed -i 's/0\.015;/0.03;/' system/sphSchemes
-setEntry system/controlDict endTime 0.2
-setEntry system/controlDict writeInterval 0.05
+coarseWaterTank "$scratch/whole"  # dx = 10 mm (500 water particles), to 0.2 s
 cat >> system/controlDict <<'DICT'
 functions
 {

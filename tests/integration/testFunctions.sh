@@ -52,3 +52,19 @@ setEntry() { sed -i "s/^$2 .*/$2 $3;/" "$1"; }
 sameTimeFolder() {
     diff -r "$1" "$2" > /dev/null
 }
+
+# coarseWaterTank DIR: the hydrostaticTank tutorial in DIR at dx = 10 mm (500 water particles),
+# h = 30 mm, to 0.2 s with writes every 0.05 s; the working directory becomes DIR.
+coarseWaterTank() {
+    local tutorial
+    tutorial=$(cd "$(dirname "${BASH_SOURCE[0]}")/../../tutorials/validation/hydrostaticTank" && pwd)
+    mkdir -p "$1"
+    cp -r "$tutorial/system" "$tutorial/constant" "$1/"
+    rm -rf "$1/constant/particles"
+    cd "$1" || fail "cannot enter $1"
+    sed -i 's/0\.005;/0.01;/; s/0\.015;/0.03;/' system/particleizeMoldDict
+    sed -i 's/0\.005;/0.01;/' system/setCastFieldsDict
+    sed -i 's/0\.015;/0.03;/' system/sphSchemes
+    setEntry system/controlDict endTime 0.2
+    setEntry system/controlDict writeInterval 0.05
+}
