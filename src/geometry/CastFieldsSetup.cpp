@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "core/Error.h"
+#include "core/Gravity.h"
 #include "core/Log.h"
 #include "core/TemperatureTable.h"
 #include "core/dictionary/Dictionary.h"
@@ -29,7 +30,6 @@ constexpr double defaultWallClearance = 0.75;  // x spacing; see CastFieldsSetup
 constexpr double defaultSupportRadius = 3.0;   // x spacing, without system/sphSchemes
 const Dimensions length{{0, 1, 0, 0, 0, 0, 0}};
 const Dimensions speed{{0, 1, -1, 0, 0, 0, 0}};
-const Dimensions acceleration{{0, 1, -2, 0, 0, 0, 0}};
 const Dimensions temperatureDimensions{{0, 0, 0, 1, 0, 0, 0}};
 const Dimensions densityDimensions{{1, -3, 0, 0, 0, 0, 0}};
 
@@ -93,14 +93,7 @@ class CaseSettings {
       properties_ = Dictionary::read(caseFolder_.constantFile("physicalProperties"));
     return *properties_;
   }
-  // constant/g as the solver reads it (solver/Gravity.cpp; the geometry library may not link
-  // the solver).
-  Vector gravity() {
-    const Dictionary g = Dictionary::read(caseFolder_.constantFile("g"));
-    g.checkKeys({"dimensions", "value"});
-    if (g.found("dimensions")) g.checkDimensions("dimensions", acceleration);
-    return g.get<Vector>("value", acceleration);
-  }
+  Vector gravity() { return readGravity(caseFolder_); }
   const Dictionary& schemes() {
     if (!schemes_) schemes_ = Dictionary::read(caseFolder_.systemFile("sphSchemes"));
     return *schemes_;

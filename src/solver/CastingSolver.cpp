@@ -8,7 +8,7 @@
 #include "core/Error.h"
 #include "core/dictionary/Dictionary.h"
 #include "io/VtpCloud.h"
-#include "solver/Gravity.h"
+#include "core/Gravity.h"
 
 namespace sphcast {
 

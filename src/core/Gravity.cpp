@@ -1,4 +1,4 @@
-#include "solver/Gravity.h"
+#include "core/Gravity.h"
 
 #include "core/dictionary/Dictionary.h"
 
