@@ -56,7 +56,8 @@ WeaklyCompressibleFlow::WeaklyCompressibleFlow(FlowSettings settings, ParticleCl
   wallNeighbours_.resize(walls_.size());
   fluidAroundWall_.resize(walls_.size());
   for (const ParticleCloud* wall : walls_) wallPressure_.emplace_back(wall->size(), Real(0));
-  const bool restarted = fluid_.hasVectorField("acceleration") && fluid_.hasScalarField("densityRate");
+  const bool restarted =
+      fluid_.hasVectorField("acceleration") && fluid_.hasScalarField("densityRate");
   fluid_.addScalarField("p");
   fluid_.addVectorField("acceleration");
   fluid_.addScalarField("densityRate");
@@ -161,33 +162,40 @@ void WeaklyCompressibleFlow::computeCorrection() {
   const auto& restDensity = fluid_.scalarField("restDensity");
   correction_.resize(x.size());
   densityGradient_.resize(densityGradient ? x.size() : 0);
-  auto separation = [periodic](const Vector& a, const Vector& b) {
-    return periodic.separation(a, b);
-  };
+  std::vector<const Real*> wallVolume;  // looked up once, not per particle
+  for (const ParticleCloud* wall : walls_) wallVolume.push_back(wall->scalarField("volume").data());
+  // as in computeRatesFor: the minimum image only when an axis is periodic, chosen once
+  auto correctWith = [&](auto separation) {
 #pragma omp parallel for schedule(static)
-  for (std::size_t i = 0; i < x.size(); ++i) {
-    CorrectionMoment moment;
-    Vector gradientSum = Vector::Zero();
-    for (const std::uint32_t j : fluidNeighbours_.of(i)) {
-      const Vector xij = separation(x[i], x[j]);
-      const Real factor = kernel.derivativeOverDistance(xij.norm());
-      const Real volumeJ = mass[j] / rho[j];
-      moment.add(volumeJ, factor, xij);
-      gradientSum += (volumeJ * (rho[j] - rho[i]) * factor) * xij;
-    }
-    for (std::size_t w = 0; w < walls_.size(); ++w) {
-      const auto& wallX = walls_[w]->positions();
-      const auto& volume = walls_[w]->scalarField("volume");
-      for (const std::uint32_t k : wallNeighbours_[w].of(i)) {
-        const Vector xik = separation(x[i], wallX[k]);
-        const Real factor = kernel.derivativeOverDistance(xik.norm());
-        moment.add(volume[k], factor, xik);
-        const Real wallDensity = eos.density(wallPressure_[w][k], restDensity[i]);
-        gradientSum += (volume[k] * (wallDensity - rho[i]) * factor) * xik;
+    for (std::size_t i = 0; i < x.size(); ++i) {
+      CorrectionMoment moment;
+      Vector gradientSum = Vector::Zero();
+      for (const std::uint32_t j : fluidNeighbours_.of(i)) {
+        const Vector xij = separation(x[i], x[j]);
+        const Real factor = kernel.derivativeOverDistance(xij.norm());
+        const Real volumeJ = mass[j] / rho[j];
+        moment.add(volumeJ, factor, xij);
+        gradientSum += (volumeJ * (rho[j] - rho[i]) * factor) * xij;
       }
+      for (std::size_t w = 0; w < walls_.size(); ++w) {
+        const auto& wallX = walls_[w]->positions();
+        const Real* volume = wallVolume[w];
+        for (const std::uint32_t k : wallNeighbours_[w].of(i)) {
+          const Vector xik = separation(x[i], wallX[k]);
+          const Real factor = kernel.derivativeOverDistance(xik.norm());
+          moment.add(volume[k], factor, xik);
+          const Real wallDensity = eos.density(wallPressure_[w][k], restDensity[i]);
+          gradientSum += (volume[k] * (wallDensity - rho[i]) * factor) * xik;
+        }
+      }
+      correction_[i] = correctionMatrix(moment.sum, Dim);
+      if (densityGradient) densityGradient_[i] = correction_[i] * gradientSum;
     }
-    correction_[i] = correctionMatrix(moment.sum, Dim);
-    if (densityGradient) densityGradient_[i] = correction_[i] * gradientSum;
+  };
+  if (periodic.anyPeriodic()) {
+    correctWith([periodic](const Vector& a, const Vector& b) { return periodic.separation(a, b); });
+  } else {
+    correctWith([](const Vector& a, const Vector& b) { return Vector(a - b); });
   }
 }
 
@@ -300,11 +308,10 @@ void WeaklyCompressibleFlow::computeRatesFor() {
           const Vector gradW = gradientFactor[n] * xij;
           // 0.5 (L_i + L_j) grad_i W_ij stays antisymmetric: momentum is conserved exactly
           const Vector pairGradW =
-              corrected ? Vector(Real(0.5) * (correctionI * gradW + correction[j] * gradW))
-                        : gradW;
-          FluidPair<Dim, Interface, Viscosity>::accumulate(
-              self, {rho[j], p[j], v[j]}, mass[j], muI, mu[j], vi - v[j], xij, distance[n],
-              pairGradW, constants, rate, accel);
+              corrected ? Vector(Real(0.5) * (correctionI * gradW + correction[j] * gradW)) : gradW;
+          FluidPair<Dim, Interface, Viscosity>::accumulate(self, {rho[j], p[j], v[j]}, mass[j], muI,
+                                                           mu[j], vi - v[j], xij, distance[n],
+                                                           pairGradW, constants, rate, accel);
           if (diffusive) {
             DeltaSPHPair::accumulate(rho[i], rho[j], densityGradientI, densityGradient[j],
                                      mass[j] / rho[j], vi - v[j], xij, distance[n], gradW,
@@ -327,8 +334,9 @@ void WeaklyCompressibleFlow::computeRatesFor() {
             // deltaSPH's artificial viscosity against the mirror velocity 2 v_wall - v_i (walls
             // at rest): without it a means interface has no dissipation at an impact on a wall
             const Real etaSquared = constants.viscosityRegularisation;
-            accel += (viscousScale * wall.volume[k] * Real(2) * vi.dot(xik) /
-                      (r * r + etaSquared)) * gradW;
+            accel +=
+                (viscousScale * wall.volume[k] * Real(2) * vi.dot(xik) / (r * r + etaSquared)) *
+                gradW;
           }
         }
       }
