@@ -89,11 +89,16 @@ TankResult runTank(const std::string& scheme, double dimensionlessTime,
   return result;
 }
 
+void print(const char* run, const TankResult& result) {
+  std::printf("hydrostatic tank 2D, 20x20, %s: pressure RMS error %.4f rho g H (mean %.4f), "
+              "largest speed %.4f sqrt(gH), largest drift %.3f dx, %zu escaped\n",
+              run, result.pressureError, result.pressureOffset, result.largestSpeed,
+              result.largestDrift, result.escaped);
+}
+
 TEST(HydrostaticTank, RiemannSchemeKeepsTheColumnAtRestWithHydrostaticPressure) {
   const auto result = runTank("riemann", 20);
-  std::printf("hydrostatic tank 2D, 20x20, t sqrt(g/H) = 20: pressure RMS error %.4f rho g H, "
-              "largest speed %.4f sqrt(gH), largest drift %.3f dx, %zu escaped\n",
-              result.pressureError, result.largestSpeed, result.largestDrift, result.escaped);
+  print("t sqrt(g/H) = 20", result);
   // Measured at this coarse resolution: RMS pressure error 0.0052 rho g H, largest speed
   // 0.0085 sqrt(gH), largest drift 0.82 dx. Before the Riemann interface left out the
   // hydrostatic part of the pressure jump (RiemannSolver.h, restingJump) the same run gave
@@ -107,9 +112,7 @@ TEST(HydrostaticTank, RiemannSchemeKeepsTheColumnAtRestWithHydrostaticPressure) 
 
 TEST(HydrostaticTank, KernelCorrectionKeepsTheColumnInTheTank) {
   const auto result = runTank("riemann", 20, true);
-  std::printf("hydrostatic tank 2D, kernelCorrection on: pressure RMS error %.4f rho g H, "
-              "largest speed %.4f sqrt(gH), largest drift %.3f dx, %zu escaped\n",
-              result.pressureError, result.largestSpeed, result.largestDrift, result.escaped);
+  print("t sqrt(g/H) = 20, kernelCorrection on", result);
   // Measured: RMS pressure error 0.0167 rho g H, largest speed 0.061 sqrt(gH), drift 5.2 dx,
   // each worse than without the correction (0.0052, 0.0085, 0.82). The fallback blends the
   // correction out at the free surface only; one or two spacings below it the corrected
@@ -124,10 +127,7 @@ TEST(HydrostaticTank, KernelCorrectionKeepsTheColumnInTheTank) {
 // The criterion: a long run, t sqrt(g/H) = 100 (about a minute on one thread).
 TEST(HydrostaticTank, StaysHydrostaticOverALongRun) {
   const auto result = runTank("riemann", 100);
-  std::printf("hydrostatic tank 2D, 20x20, t sqrt(g/H) = 100: pressure RMS error %.4f rho g H "
-              "(mean %.4f), largest speed %.4f sqrt(gH), largest drift %.3f dx, %zu escaped\n",
-              result.pressureError, result.pressureOffset, result.largestSpeed,
-              result.largestDrift, result.escaped);
+  print("t sqrt(g/H) = 100", result);
   // Measured: RMS pressure error 0.0075 rho g H, nearly all of it a uniform offset (mean
   // 0.0074), largest speed 0.012 sqrt(gH), drift 0.96 dx. Before the Riemann interface left
   // out the hydrostatic jump the same run gave 0.39 rho g H and 9.0 dx; with kernelCorrection
