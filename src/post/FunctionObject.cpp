@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "core/Error.h"
+#include "post/FieldMinMax.h"
 #include "post/SamplingFunctionObjects.h"
 
 namespace fs = std::filesystem;
@@ -130,7 +131,7 @@ FunctionObjectList::FunctionObjectList(const Dictionary& controlDict,
                                        const FunctionObjectContext& context) {
   if (!controlDict.found("functions")) return;
   const Dictionary& functions = controlDict.subDict("functions");
-  const std::vector<std::string> types = {"probes", "surfaceHeights", "front"};
+  const std::vector<std::string> types = {"probes", "surfaceHeights", "front", "fieldMinMax"};
   for (const std::string& name : functions.keys()) {
     const Dictionary& dict = functions.subDict(name);
     // Explicit registration: one line per type.
@@ -139,8 +140,10 @@ FunctionObjectList::FunctionObjectList(const Dictionary& controlDict,
       objects_.push_back(std::make_unique<Probes>(name, dict, context));
     } else if (type == "surfaceHeights") {
       objects_.push_back(std::make_unique<SurfaceHeights>(name, dict, context));
-    } else {
+    } else if (type == "front") {
       objects_.push_back(std::make_unique<FluidFront>(name, dict, context));
+    } else {
+      objects_.push_back(std::make_unique<FieldMinMax>(name, dict, context));
     }
   }
 }

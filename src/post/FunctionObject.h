@@ -92,7 +92,7 @@ std::string formatSample(const Vector& value);  // "(x y z)"
 class FunctionObjectList {
  public:
   FunctionObjectList() = default;
-  // Types: probes, surfaceHeights, front. An unknown type, a missing or unknown cloud or field,
+  // Types: probes, surfaceHeights, front, fieldMinMax. An unknown type, a missing or unknown cloud or field,
   // a bad location: DictionaryError naming file, line and key.
   FunctionObjectList(const Dictionary& controlDict, const FunctionObjectContext& context);
 

@@ -45,7 +45,7 @@ class FunctionObjectTest : public testing::TemporaryFolderTest {
 TEST_F(FunctionObjectTest, BadEntriesAreErrorsAtTheirKey) {
   EXPECT_EQ(errorOf("P1 { type probe; cloud fluid; }"),
             "controlDict:1:22: unknown type 'probe'; valid type are: (probes surfaceHeights "
-            "front)");
+            "front fieldMinMax)");
   EXPECT_NE(
       errorOf("P1 { type probes; fields (p); probeLocations ((0 0 0)); }").find("controlDict:1:"),
       std::string::npos);
@@ -106,6 +106,36 @@ TEST_F(FunctionObjectTest, WritesOpenFoamStyleFilesUnderTheStartTime) {
   ASSERT_EQ(front.size(), 2u);  // the start and the write time
   EXPECT_NEAR(front[1][0], 0.3, 1e-12);
   EXPECT_NEAR(front[1][1], 0.095, 1e-12);
+}
+
+TEST_F(FunctionObjectTest, FieldMinMaxGivesTheExtremesAndWhereTheyAre) {
+  auto& p = water_.scalarField("p");
+  p[7] = -5;  // the lowest, at particle 7
+  p[23] = 250;
+  water_.vectorField("U")[11] = Vector(3, 4, 0);  // |U| = 5, the rest are at rest
+  FunctionObjectList list(
+      Dictionary::parse("functions { R { type fieldMinMax; cloud fluid; fields (p U); } }",
+                        "controlDict"),
+      context("0"));
+  list.execute(TimeState{0, "", 0, 0.1}, false);
+  const auto pressure = readFunctionObjectSeries(folder_, "R", "p");
+  ASSERT_EQ(pressure.size(), 1u);
+  ASSERT_EQ(pressure[0].size(), 9u);  // time, min, max, two positions
+  EXPECT_DOUBLE_EQ(pressure[0][1], -5);
+  EXPECT_DOUBLE_EQ(pressure[0][2], 250);
+  const auto& x = water_.positions();
+  for (int k = 0; k < 3; ++k) {
+    EXPECT_NEAR(pressure[0][3 + k], x[7][k], 1e-9);
+    EXPECT_NEAR(pressure[0][6 + k], x[23][k], 1e-9);
+  }
+  const auto speed = readFunctionObjectSeries(folder_, "R", "U");
+  ASSERT_EQ(speed.size(), 1u);
+  EXPECT_DOUBLE_EQ(speed[0][1], 0);
+  EXPECT_DOUBLE_EQ(speed[0][2], 5);
+  const std::string unknownField = errorOf("R { type fieldMinMax; cloud fluid; fields (T); }");
+  EXPECT_NE(unknownField.find("controlDict:1:"), std::string::npos) << unknownField;
+  EXPECT_NE(unknownField.find("unknown field 'T' of cloud 'fluid'"), std::string::npos)
+      << unknownField;
 }
 
 TEST_F(FunctionObjectTest, ARestartedRunContinuesWithoutDuplicatedRows) {
