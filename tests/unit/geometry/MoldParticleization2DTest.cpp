@@ -215,6 +215,62 @@ TEST(MoldParticleization2D, RightAngledObstacleCornersHoldNoDoublesAndNoHoles) {
   for (std::size_t i = 0; i < cloud.size(); ++i) EXPECT_NEAR(nearestOther(cloud, i), dx, 1e-12);
 }
 
+// Distance from (x, y) to the segment a-b.
+double segmentDistance(Eigen::Vector2d p, Eigen::Vector2d a, Eigen::Vector2d b) {
+  const double s = std::clamp((p - a).dot(b - a) / (b - a).squaredNorm(), 0.0, 1.0);
+  return (a + s * (b - a) - p).norm();
+}
+
+TEST(MoldParticleization2D, SlantedCornersAreClosedWithoutCrowding) {
+  // A trapezoid tank, wider at the top, open there: the floor meets the sides at 120 degrees
+  // inside the cavity (the layers part by 60 degrees: arcs fill the wedge). A ridge on the
+  // floor, 45 degrees each side, has convex corners of 135 degrees at its foot and a re-entrant
+  // one at its top (the layers of its two sides overlap there and are thinned).
+  const double dx = 0.01;
+  const std::string geo =
+      "Point(1) = {0, 0, 0};\nPoint(2) = {0.1, 0, 0};\nPoint(3) = {0.15, 0.05, 0};\n"
+      "Point(4) = {0.2, 0, 0};\nPoint(5) = {0.3, 0, 0};\nPoint(6) = {0.3 + 0.2 / Sqrt(3), 0.2, "
+      "0};\n"
+      "Point(7) = {-0.2 / Sqrt(3), 0.2, 0};\n"
+      "Line(1) = {1, 2};\nLine(2) = {2, 3};\nLine(3) = {3, 4};\nLine(4) = {4, 5};\n"
+      "Line(5) = {5, 6};\nLine(6) = {6, 7};\nLine(7) = {7, 1};\n"
+      "Curve Loop(1) = {1, 2, 3, 4, 5, 6, 7};\nPlane Surface(1) = {1};\n"
+      "Physical Curve(\"walls\") = {1, 2, 3, 4, 5, 7};\nPhysical Surface(\"cavity\") = {1};\n";
+  const int layers = 3;
+  const auto mold = particleize(geo, moldDict2D(dx, layers, shellPatch("walls")));
+  const ParticleCloud& cloud = mold.clouds[0];
+  double closest = 1e300;
+  for (std::size_t i = 0; i < cloud.size(); ++i)
+    closest = std::min(closest, nearestOther(cloud, i));
+  const std::vector<Eigen::Vector2d> corners = {
+      {-0.2 / std::sqrt(3.0), 0.2},     {0, 0}, {0.1, 0}, {0.15, 0.05}, {0.2, 0}, {0.3, 0},
+      {0.3 + 0.2 / std::sqrt(3.0), 0.2}};
+  const double band = layers * dx;
+  // The probes: outside the cavity, within the layers' depth of the walls (the open top's
+  // corners left out: the layers end flush there).
+  const double hole = widestHole(cloud, {-0.2, -band}, {0.5, 0.2}, dx / 7, [&](double x, double y) {
+    const Eigen::Vector2d p(x, y);
+    double wall = 1e300;
+    for (std::size_t c = 0; c + 1 < corners.size(); ++c) {
+      wall = std::min(wall, segmentDistance(p, corners[c], corners[c + 1]));
+    }
+    const bool inside = y > 0 && y < 0.2 && x > -y / std::sqrt(3.0) &&
+                        x < 0.3 + y / std::sqrt(3.0) &&
+                        !(y < 0.05 && std::abs(x - 0.15) < 0.05 - y);  // the cavity
+    return !inside && wall <= band - 0.5 * dx && y < 0.2 - band;
+  });
+  std::printf(
+      "2D trapezoid with a notch: %zu particles, closest pair %.3f dx, widest hole %.3f dx\n",
+      cloud.size(), closest / dx, hole / dx);
+  EXPECT_GE(closest, 0.5 * dx);
+  EXPECT_LE(hole, dx);
+  for (std::size_t i = 0; i < cloud.size(); ++i) {
+    EXPECT_NEAR(cloud.vectorField("normal")[i].norm(), 1.0, 1e-12);
+    EXPECT_GT(cloud.scalarField("wallDistance")[i], 0.0);
+    EXPECT_LT(cloud.scalarField("wallDistance")[i], band);
+  }
+}
+
 TEST(MoldParticleization2D, VolumeModeFillsADiskWithItsArea) {
   const double dx = 0.005, radius = 0.05;
   const auto mold = particleize(circleGeo(radius, "Physical Surface(\"disk\") = {1};\n"),
