@@ -360,23 +360,33 @@ std::vector<int> GmshGeometry::volumesBoundedBy(const PhysicalGroup& surfaceGrou
 std::vector<Eigen::Vector3d> GmshGeometry::sampledCurve(int curve, double maxSegment) const {
   std::string type;
   gmsh::model::getType(1, curve, type);
-  std::vector<double> coordinates;
-  if (type == "Line") {
-    std::vector<int> upward, ends;
-    gmsh::model::getAdjacencies(1, curve, upward, ends);
-    for (const int end : ends) {
+  // x, y, z of the curve's end points.
+  const auto ends = [curve] {
+    std::vector<int> upward, endPoints;
+    gmsh::model::getAdjacencies(1, curve, upward, endPoints);
+    std::vector<double> coordinates;
+    for (const int end : endPoints) {
       std::vector<double> point;
       gmsh::model::getValue(0, end, {}, point);
       coordinates.insert(coordinates.end(), point.begin(), point.end());
     }
+    return coordinates;
+  };
+  std::vector<double> coordinates;
+  if (type == "Line") {
+    coordinates = ends();
+  } else if (type.find("Discrete") != std::string::npos) {
+    coordinates = meshedCurve(curve);
+    // A curve whose elements the .msh left out (gmsh saves only the physical groups'): the
+    // chord between its ends, enough to bound a cavity for telling the sides of its walls.
+    if (coordinates.empty()) coordinates = ends();
   } else {
     std::vector<double> lower, upper;
     try {
       gmsh::model::getParametrizationBounds(1, curve, lower, upper);
     } catch (...) {
       throw Error("curve " + std::to_string(curve) + " of '" + file_.string() + "' (" + type +
-                  ") has no parametrisation: 2D walls are read from the geometry's curves, so "
-                  "give the .geo (or a .msh of an OpenCASCADE geometry with its .brep)");
+                  ") has no parametrisation to follow it by");
     }
     // A first look for the length, then points at most maxSegment apart.
     auto sample = [&](std::size_t pieces) {
@@ -399,6 +409,47 @@ std::vector<Eigen::Vector3d> GmshGeometry::sampledCurve(int curve, double maxSeg
     points.emplace_back(coordinates[j], coordinates[j + 1], coordinates[j + 2]);
   }
   return points;
+}
+
+std::vector<double> GmshGeometry::meshedCurve(int curve) const {
+  // The curve's line elements (2- or 3-node: the first two nodes are the ends), chained from an
+  // end node (any node of a closed curve); none without elements.
+  std::vector<int> types;
+  std::vector<std::vector<std::size_t>> elementTags, nodeTags;
+  gmsh::model::mesh::getElements(types, elementTags, nodeTags, 1, curve);
+  std::map<std::size_t, std::vector<std::size_t>> neighbours;
+  for (std::size_t t = 0; t < types.size(); ++t) {
+    const std::size_t nodesPerElement = types[t] == 1 ? 2 : types[t] == 8 ? 3 : 0;
+    for (std::size_t e = 0; nodesPerElement > 0 && e + nodesPerElement <= nodeTags[t].size();
+         e += nodesPerElement) {
+      neighbours[nodeTags[t][e]].push_back(nodeTags[t][e + 1]);
+      neighbours[nodeTags[t][e + 1]].push_back(nodeTags[t][e]);
+    }
+  }
+  if (neighbours.empty()) return {};
+  std::size_t start = neighbours.begin()->first;
+  for (const auto& [node, next] : neighbours) {
+    if (next.size() == 1) start = node;
+    if (next.size() > 2) {
+      throw Error("curve " + std::to_string(curve) + " of '" + file_.string() +
+                  "' branches at node " + std::to_string(node) + "; a curve is one chain of lines");
+    }
+  }
+  std::vector<double> coordinates;
+  std::size_t previous = 0, node = start;
+  for (std::size_t count = 0; count <= neighbours.size(); ++count) {
+    std::vector<double> point, parametric;
+    gmsh::model::mesh::getNode(node, point, parametric);
+    coordinates.insert(coordinates.end(), point.begin(), point.end());
+    const auto& next = neighbours[node];
+    const auto onward = std::find_if(next.begin(), next.end(), [&](std::size_t n) {
+      return n != previous;
+    });
+    if (onward == next.end() || (count > 0 && node == start)) break;
+    previous = node;
+    node = *onward;
+  }
+  return coordinates;
 }
 
 std::vector<Eigen::Vector2d> GmshGeometry::planarCurve(int curve, double maxSegment) const {

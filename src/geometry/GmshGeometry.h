@@ -55,9 +55,10 @@ class GmshGeometry {
   // 2D geometry, in the plane z = 0 (read from the CAD entities; no mesh needed).
   // The entities of a group (curves of a curve group, surfaces of a surface group).
   std::vector<int> entitiesOf(const PhysicalGroup& group) const;
-  // A curve entity as a polyline in the plane: its two ends for a straight line, else points of
-  // its parametrisation at most maxSegment apart. Throws an Error for a curve off z = 0 or one
-  // without a parametrisation (a discrete curve of a .msh).
+  // A curve entity as a polyline in the plane: its two ends for a straight line, points of its
+  // parametrisation at most maxSegment apart for another curve of a .geo, its mesh nodes for a
+  // discrete curve of a .msh (there a curved wall is followed as finely as it was meshed).
+  // Throws an Error for a curve off z = 0.
   std::vector<Eigen::Vector2d> planarCurve(int curve, double maxSegment) const;
   // The surface entities a curve group's curves bound: the cavity its walls enclose. Throws an
   // Error when one of its curves bounds no surface, or two (then the side is ambiguous).
@@ -75,6 +76,8 @@ class GmshGeometry {
   std::vector<int> volumesMeshedAgainst(int surface) const;
   // Points of a curve entity at most maxSegment apart (its ends for a straight line).
   std::vector<Eigen::Vector3d> sampledCurve(int curve, double maxSegment) const;
+  // x, y, z of the nodes of a meshed (discrete) curve in their order along it.
+  std::vector<double> meshedCurve(int curve) const;
 
   std::filesystem::path file_;
   std::vector<PhysicalGroup> groups_;

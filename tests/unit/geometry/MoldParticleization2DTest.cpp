@@ -1,8 +1,12 @@
 // particleizeMold in 2D (`dimension 2;`): walls behind Physical Curves in the plane z = 0, on the
 // side away from the cavity; volumes filling Physical Surfaces.
+#include <gmsh.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
+#include <filesystem>
 #include <numbers>
 #include <regex>
 #include <sstream>
@@ -286,6 +290,61 @@ TEST(MoldParticleization2D, VolumeModeFillsADiskWithItsArea) {
     EXPECT_NEAR(double(cloud.scalarField("wallDistance")[i]), radius - p.norm(), 1e-4 * dx);
   }
   EXPECT_NEAR(volumeSum / area, 1.0, 1e-4);  // the area shared among the particles
+}
+
+// The .geo meshed in 1D by gmsh (lines of at most maxLine) and saved as MSH 4.1, which holds
+// the elements of the physical groups only (not the tank's open top).
+ParticleizedMold particleizeMsh(const std::string& geo, double maxLine, const std::string& dict) {
+  TemporaryCase mold;
+  mold.write("constant/geometry/mold.geo", geo);
+  const std::string msh = (mold.root() / "constant/geometry/mold.msh").string();
+  gmsh::initialize();
+  gmsh::option::setNumber("General.Terminal", 0);
+  gmsh::open((mold.root() / "constant/geometry/mold.geo").string());
+  gmsh::option::setNumber("Mesh.MeshSizeMax", maxLine);
+  gmsh::model::mesh::generate(1);
+  gmsh::option::setNumber("Mesh.MshFileVersion", 4.1);
+  gmsh::write(msh);
+  gmsh::finalize();
+  std::filesystem::remove(mold.root() / "constant/geometry/mold.geo");
+  mold.write("system/particleizeMoldDict",
+             std::regex_replace(dict, std::regex("mold\\.geo"), "mold.msh"));
+  return particleizeMold(CaseFolder(mold.root()));
+}
+
+TEST(MoldParticleization2D, MshCurvesGiveTheParticlesOfTheGeo) {
+  const double dx = 0.01;
+  const std::string dict = moldDict2D(dx, 3, shellPatch("walls"));
+  const auto fromGeo = particleize(tankGeo(0.2, 0.1), dict).clouds[0];
+  const auto fromMsh = particleizeMsh(tankGeo(0.2, 0.1), 0.03, dict).clouds[0];
+  ASSERT_EQ(fromMsh.size(), fromGeo.size());
+  std::vector<std::array<double, 2>> a, b;
+  for (const Vector& p : fromGeo.positions()) a.push_back({double(p.x()), double(p.y())});
+  for (const Vector& p : fromMsh.positions()) b.push_back({double(p.x()), double(p.y())});
+  std::sort(a.begin(), a.end());
+  std::sort(b.begin(), b.end());
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    EXPECT_NEAR(a[i][0], b[i][0], 1e-12);
+    EXPECT_NEAR(a[i][1], b[i][1], 1e-12);
+  }
+  // A circle meshed with lines of dx/8: its layers within the chords' sag, (dx/8)^2 / (8 R).
+  const double radius = 0.05, smallDx = 0.005;
+  const auto circle = particleizeMsh(circleGeo(radius,
+                                               "Physical Curve(\"walls\") = {1, 2, 3, 4};\n"
+                                               "Physical Surface(\"cavity\") = {1};\n"),
+                                     smallDx / 8, moldDict2D(smallDx, 3, shellPatch("walls")))
+                          .clouds[0];
+  const auto circleFromGeo = particleize(circleGeo(radius,
+                                                   "Physical Curve(\"walls\") = {1, 2, 3, 4};\n"
+                                                   "Physical Surface(\"cavity\") = {1};\n"),
+                                         moldDict2D(smallDx, 3, shellPatch("walls")))
+                                 .clouds[0];
+  EXPECT_EQ(circle.size(), circleFromGeo.size());
+  for (std::size_t i = 0; i < circle.size(); ++i) {
+    const double depth = double(circle.positions()[i].norm()) - radius;
+    EXPECT_NEAR(depth / smallDx - 0.5, std::round(depth / smallDx - 0.5), 1e-3);
+    EXPECT_NEAR(double(circle.scalarField("wallDistance")[i]), depth, 1e-3 * smallDx);
+  }
 }
 
 const std::string tank = tankGeo(0.2, 0.1);
