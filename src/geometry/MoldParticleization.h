@@ -30,8 +30,8 @@ namespace sphcast {
 // In 2D (`dimension 2;`, WallCurves2D.h) the geometry lies in the plane z = 0: a shell patch is a
 // Physical Curve, its layers on the side away from the cavity, the surface its curves bound or
 // the Physical Surface named by `cavity name;`; a volume patch is a Physical Surface filled on
-// the square lattice. Only a .geo (or a geometry whose curves keep their parametrisation) is
-// read in 2D; particle volumes are areas (m^2).
+// the square lattice. A .geo's curves are followed by their parametrisation, a .msh's along
+// their line elements (mesh curved ones finely, dx/8 or less); particle volumes are areas (m^2).
 // wallLayers = ceil(h / dx): the first layer sits dx/2 behind the wall and layer k at
 // (k + 1/2) dx, so the layers reach wallLayers dx >= h behind it, and a fluid particle touching
 // the wall has a complete kernel.
