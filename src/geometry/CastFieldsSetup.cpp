@@ -368,8 +368,8 @@ std::vector<Vector> fillRegions(const CloudPlan& plan, double spacing, double& r
   return centres;
 }
 
-ParticleCloud fillCloud(const CloudPlan& plan, double spacing, const MoldObstacles& mold,
-                        CaseSettings& settings) {
+ParticleCloud fillCloud(const CloudPlan& plan, double spacing, int dimension,
+                        const MoldObstacles& mold, CaseSettings& settings) {
   double regionVolume = 0.0;
   bool volumeExact = true;
   std::vector<Vector> centres = fillRegions(plan, spacing, regionVolume, volumeExact);
@@ -449,7 +449,9 @@ ParticleCloud fillCloud(const CloudPlan& plan, double spacing, const MoldObstacl
   std::copy(centres.begin(), centres.end(), cloud.positions().begin());
   cloud.addVectorField("U");
   auto& volume = cloud.addScalarField("volume");
-  for (Real& v : volume) v = static_cast<Real>(dx3);
+  // A 2D case's particle stands for the area dx^2 (the solver's 2D kernel integrates over area).
+  const double cellVolume = dimension == 2 ? spacing * spacing : dx3;
+  for (Real& v : volume) v = static_cast<Real>(cellVolume);
   auto& id = cloud.addIdField("id");
   for (std::size_t i = 0; i < id.size(); ++i) id[i] = static_cast<std::int64_t>(i);
   cloud.attributes()["spacing"] = spacing;
@@ -473,7 +475,13 @@ int readRelaxation(const Dictionary& owner, int fallback) {
 std::vector<ParticleCloud> buildCastClouds(const CaseFolder& caseFolder,
                                            const std::vector<ParticleCloud>& moldClouds) {
   const Dictionary dict = Dictionary::read(caseFolder.systemFile("setCastFieldsDict"));
-  dict.checkKeys({"spacing", "maxParticles", "wallClearance", "relaxation", "clouds", "setFields"});
+  dict.checkKeys({"dimension", "spacing", "maxParticles", "wallClearance", "relaxation", "clouds",
+                  "setFields"});
+  const int dimension = dict.getOrDefault<int>("dimension", 3);
+  if (dimension != 2 && dimension != 3) {
+    throw DictionaryError(dict.location("dimension"),
+                          "'dimension' must be 2 or 3 in " + dict.name());
+  }
   const double spacing = dict.get<double>("spacing", length);
   if (!(spacing > 0.0)) {
     throw DictionaryError(dict.location("spacing"), "'spacing' must be positive in " + dict.name());
@@ -565,7 +573,18 @@ std::vector<ParticleCloud> buildCastClouds(const CaseFolder& caseFolder,
   const MoldObstacles mold(moldClouds, spacing, clearance);
   std::vector<ParticleCloud> clouds;
   for (const CloudPlan& plan : plans) {
-    ParticleCloud cloud = fillCloud(plan, spacing, mold, settings);
+    ParticleCloud cloud = fillCloud(plan, spacing, dimension, mold, settings);
+    if (dimension == 2) {
+      for (const Vector& x : cloud.positions()) {
+        if (x.z() != Real(0)) {
+          throw DictionaryError(dict.location("dimension"),
+                                "cloud '" + plan.name +
+                                    "' has a particle at z = " + std::to_string(x.z()) +
+                                    ": a 2D case lies in the plane z = 0 (give boxes with min z "
+                                    "= max z = 0)");
+        }
+      }
+    }
     const Dictionary& cloudDict = cloudsDict.subDict(plan.name);
     if (cloudDict.found("fields")) setFieldValues(cloudDict.subDict("fields"), cloud, {}, true);
     if (plan.density) setMaterialDensity(*plan.density, cloud, spacing);

@@ -9,6 +9,7 @@ namespace sphcast {
 
 // What system/setCastFieldsDict asks for, read and checked in full before anything is built:
 //
+//   dimension     2;              // optional: 2 for a case in the plane z = 0 (default 3)
 //   spacing       0.005;          // lattice spacing of the filled particles, m
 //   maxParticles  20000000;       // optional: refuse a spacing that would make more
 //   wallClearance 0.00375;        // optional, m: default 0.75 spacing (see below)
@@ -56,7 +57,8 @@ namespace sphcast {
 // the fill put it instead of swelling into the empty kernel half, which is what the metal's
 // own surface tension and the run will decide.
 //
-// Every filled particle gets `volume` dx^3 and `id`. The log reports for each new cloud the
+// Every filled particle gets `volume` dx^3 (dx^2 with `dimension 2`, whose regions must fill
+// the plane z = 0: boxes with min z = max z = 0) and `id`. The log reports for each new cloud the
 // count, the filled volume (count dx^3) against the regions' volume (exact for shapes and gmsh
 // volumes that do not overlap, else the bound) and the nearest-neighbour spacing.
 // moldClouds are the clouds of constant/particles (setCastFields reads them): obstacles for the

@@ -3,11 +3,13 @@
 #include <gmsh.h>
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 #include <set>
 #include <sstream>
 
 #include "core/Error.h"
+#include "geometry/WallCurves2D.h"
 
 namespace sphcast {
 
@@ -51,12 +53,6 @@ std::vector<PhysicalGroup> listPhysicalGroups() {
     groups.push_back(group);
   }
   return groups;
-}
-
-std::vector<int> entitiesOf(const PhysicalGroup& group) {
-  std::vector<int> entities;
-  gmsh::model::getEntitiesForPhysicalGroup(group.dimension, group.tag, entities);
-  return entities;
 }
 
 }  // namespace
@@ -271,6 +267,19 @@ double GmshGeometry::groupMeasure(const PhysicalGroup& group) const {
     } catch (...) {
       // not an OpenCASCADE entity
     }
+    const auto& box = group.boundingBox;
+    const double size = std::max({box[3] - box[0], box[4] - box[1], box[5] - box[2]});
+    if (group.dimension == 1) {
+      const auto points = sampledCurve(entity, size / 256.0);
+      for (std::size_t j = 0; j + 1 < points.size(); ++j) measure += (points[j + 1] - points[j]).norm();
+      continue;
+    }
+    if (group.dimension == 2 && std::abs(box[2]) <= 1e-6 * size && std::abs(box[5]) <= 1e-6 * size) {
+      PlaneRegion region;
+      for (const int curve : boundaryCurvesOf({entity})) region.add(planarCurve(curve, size / 256.0));
+      measure += region.area();
+      continue;
+    }
     if (!nodes_.empty()) {
       const TriangleMesh mesh = group.dimension == 2
                                     ? surfaceTriangles({{entity, 0}})
@@ -284,6 +293,12 @@ double GmshGeometry::groupMeasure(const PhysicalGroup& group) const {
     measure += group.dimension == 2 ? 2.0 * (x * y + y * z + z * x) : x * y * z;
   }
   return measure;
+}
+
+std::vector<int> GmshGeometry::entitiesOf(const PhysicalGroup& group) const {
+  std::vector<int> entities;
+  gmsh::model::getEntitiesForPhysicalGroup(group.dimension, group.tag, entities);
+  return entities;
 }
 
 std::vector<int> GmshGeometry::volumesOf(const PhysicalGroup& volumeGroup) const {
@@ -340,6 +355,149 @@ std::vector<int> GmshGeometry::volumesBoundedBy(const PhysicalGroup& surfaceGrou
   std::sort(volumes.begin(), volumes.end());
   volumes.erase(std::unique(volumes.begin(), volumes.end()), volumes.end());
   return volumes;
+}
+
+std::vector<Eigen::Vector3d> GmshGeometry::sampledCurve(int curve, double maxSegment) const {
+  std::string type;
+  gmsh::model::getType(1, curve, type);
+  // x, y, z of the curve's end points.
+  const auto ends = [curve] {
+    std::vector<int> upward, endPoints;
+    gmsh::model::getAdjacencies(1, curve, upward, endPoints);
+    std::vector<double> coordinates;
+    for (const int end : endPoints) {
+      std::vector<double> point;
+      gmsh::model::getValue(0, end, {}, point);
+      coordinates.insert(coordinates.end(), point.begin(), point.end());
+    }
+    return coordinates;
+  };
+  std::vector<double> coordinates;
+  if (type == "Line") {
+    coordinates = ends();
+  } else if (type.find("Discrete") != std::string::npos) {
+    coordinates = meshedCurve(curve);
+    // A curve whose elements the .msh left out (gmsh saves only the physical groups'): the
+    // chord between its ends, enough to bound a cavity for telling the sides of its walls.
+    if (coordinates.empty()) coordinates = ends();
+  } else {
+    std::vector<double> lower, upper;
+    try {
+      gmsh::model::getParametrizationBounds(1, curve, lower, upper);
+    } catch (...) {
+      throw Error("curve " + std::to_string(curve) + " of '" + file_.string() + "' (" + type +
+                  ") has no parametrisation to follow it by");
+    }
+    // A first look for the length, then points at most maxSegment apart.
+    auto sample = [&](std::size_t pieces) {
+      std::vector<double> parameters(pieces + 1);
+      for (std::size_t j = 0; j <= pieces; ++j) {
+        parameters[j] = lower[0] + (upper[0] - lower[0]) * static_cast<double>(j) / static_cast<double>(pieces);
+      }
+      gmsh::model::getValue(1, curve, parameters, coordinates);
+    };
+    sample(64);
+    double length = 0.0;
+    for (std::size_t j = 3; j + 2 < coordinates.size(); j += 3) {
+      length += std::hypot(coordinates[j] - coordinates[j - 3], coordinates[j + 1] - coordinates[j - 2],
+                           coordinates[j + 2] - coordinates[j - 1]);
+    }
+    sample(std::max<std::size_t>(64, static_cast<std::size_t>(std::ceil(1.01 * length / maxSegment))));
+  }
+  std::vector<Eigen::Vector3d> points;
+  for (std::size_t j = 0; j + 2 < coordinates.size(); j += 3) {
+    points.emplace_back(coordinates[j], coordinates[j + 1], coordinates[j + 2]);
+  }
+  return points;
+}
+
+std::vector<double> GmshGeometry::meshedCurve(int curve) const {
+  // The curve's line elements (2- or 3-node: the first two nodes are the ends), chained from an
+  // end node (any node of a closed curve); none without elements.
+  std::vector<int> types;
+  std::vector<std::vector<std::size_t>> elementTags, nodeTags;
+  gmsh::model::mesh::getElements(types, elementTags, nodeTags, 1, curve);
+  std::map<std::size_t, std::vector<std::size_t>> neighbours;
+  for (std::size_t t = 0; t < types.size(); ++t) {
+    const std::size_t nodesPerElement = types[t] == 1 ? 2 : types[t] == 8 ? 3 : 0;
+    for (std::size_t e = 0; nodesPerElement > 0 && e + nodesPerElement <= nodeTags[t].size();
+         e += nodesPerElement) {
+      neighbours[nodeTags[t][e]].push_back(nodeTags[t][e + 1]);
+      neighbours[nodeTags[t][e + 1]].push_back(nodeTags[t][e]);
+    }
+  }
+  if (neighbours.empty()) return {};
+  std::size_t start = neighbours.begin()->first;
+  for (const auto& [node, next] : neighbours) {
+    if (next.size() == 1) start = node;
+    if (next.size() > 2) {
+      throw Error("curve " + std::to_string(curve) + " of '" + file_.string() +
+                  "' branches at node " + std::to_string(node) + "; a curve is one chain of lines");
+    }
+  }
+  std::vector<double> coordinates;
+  std::size_t previous = 0, node = start;
+  for (std::size_t count = 0; count <= neighbours.size(); ++count) {
+    std::vector<double> point, parametric;
+    gmsh::model::mesh::getNode(node, point, parametric);
+    coordinates.insert(coordinates.end(), point.begin(), point.end());
+    const auto& next = neighbours[node];
+    const auto onward = std::find_if(next.begin(), next.end(), [&](std::size_t n) {
+      return n != previous;
+    });
+    if (onward == next.end() || (count > 0 && node == start)) break;
+    previous = node;
+    node = *onward;
+  }
+  return coordinates;
+}
+
+std::vector<Eigen::Vector2d> GmshGeometry::planarCurve(int curve, double maxSegment) const {
+  std::vector<Eigen::Vector2d> points;
+  for (const Eigen::Vector3d& p : sampledCurve(curve, maxSegment)) {
+    if (std::abs(p.z()) > 1e-12 * (1.0 + p.norm())) {
+      throw Error("curve " + std::to_string(curve) + " of '" + file_.string() + "' leaves the plane z = 0 (z = " +
+                  std::to_string(p.z()) + "); a 2D geometry lies in the plane z = 0");
+    }
+    points.emplace_back(p.x(), p.y());
+  }
+  return points;
+}
+
+std::vector<int> GmshGeometry::surfacesBoundedBy(const PhysicalGroup& curveGroup) const {
+  std::vector<int> surfaces;
+  for (const int curve : entitiesOf(curveGroup)) {
+    std::vector<int> upward, downward;
+    gmsh::model::getAdjacencies(1, curve, upward, downward);
+    if (upward.size() != 1) {
+      std::ostringstream message;
+      message << "cannot tell which side of physical group '" << curveGroup.name
+              << "' is the cavity: its curve " << curve << " in '" << file_.string() << "' bounds "
+              << upward.size()
+              << " surfaces; the shell goes outside the one surface (the cavity) its curves bound, "
+                 "or give the cavity's Physical Surface with the key 'cavity'";
+      throw Error(message.str());
+    }
+    surfaces.push_back(upward.front());
+  }
+  std::sort(surfaces.begin(), surfaces.end());
+  surfaces.erase(std::unique(surfaces.begin(), surfaces.end()), surfaces.end());
+  return surfaces;
+}
+
+std::vector<int> GmshGeometry::boundaryCurvesOf(const std::vector<int>& surfaceTags) const {
+  gmsh::vectorpair surfaces, boundary;
+  for (const int tag : surfaceTags) surfaces.emplace_back(2, tag);
+  try {
+    gmsh::model::getBoundary(surfaces, boundary, true, false, false);
+  } catch (...) {
+    rethrowGmshError(file_);
+  }
+  std::vector<int> curves;
+  for (const auto& [dimension, tag] : boundary) {
+    if (dimension == 1) curves.push_back(std::abs(tag));
+  }
+  return curves;
 }
 
 }  // namespace sphcast

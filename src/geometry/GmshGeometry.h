@@ -42,14 +42,29 @@ class GmshGeometry {
   // The volume entities a surface group's surfaces bound: the cavity its walls enclose. Throws
   // an Error when one of its surfaces bounds no volume, or two (then the side is ambiguous).
   std::vector<int> volumesBoundedBy(const PhysicalGroup& surfaceGroup) const;
-  // Area of a surface group or volume of a volume group: exact from the CAD for OpenCASCADE
-  // entities, from the mesh when there is one, else from the entities' bounding boxes (an
-  // overestimate). For refusing too fine a spacing before meshing.
+  // Length of a curve group (from the curves' parametrisation), area of a surface group or
+  // volume of a volume group: exact from the CAD for OpenCASCADE entities, from the mesh when
+  // there is one, from the boundary curves for a surface in the plane z = 0, else from the
+  // entities' bounding boxes (an overestimate). For refusing too fine a spacing before meshing.
   double groupMeasure(const PhysicalGroup& group) const;
   // The volume entities of a volume group.
   std::vector<int> volumesOf(const PhysicalGroup& volumeGroup) const;
   // The combined boundary of volume entities (faces shared between two of them drop out).
   TriangleMesh boundaryOfVolumes(const std::vector<int>& volumeTags) const;
+
+  // 2D geometry, in the plane z = 0 (read from the CAD entities; no mesh needed).
+  // The entities of a group (curves of a curve group, surfaces of a surface group).
+  std::vector<int> entitiesOf(const PhysicalGroup& group) const;
+  // A curve entity as a polyline in the plane: its two ends for a straight line, points of its
+  // parametrisation at most maxSegment apart for another curve of a .geo, its mesh nodes for a
+  // discrete curve of a .msh (there a curved wall is followed as finely as it was meshed).
+  // Throws an Error for a curve off z = 0.
+  std::vector<Eigen::Vector2d> planarCurve(int curve, double maxSegment) const;
+  // The surface entities a curve group's curves bound: the cavity its walls enclose. Throws an
+  // Error when one of its curves bounds no surface, or two (then the side is ambiguous).
+  std::vector<int> surfacesBoundedBy(const PhysicalGroup& curveGroup) const;
+  // The combined boundary curves of surface entities (curves shared by two of them drop out).
+  std::vector<int> boundaryCurvesOf(const std::vector<int>& surfaceTags) const;
 
  private:
   // Triangles of the surfaces (tag, owner).
@@ -59,6 +74,10 @@ class GmshGeometry {
   int vertexIndex(std::size_t nodeTag) const;
   // For a mesh without topology (MSH 2.2): the volumes with a tetrahedron on the surface.
   std::vector<int> volumesMeshedAgainst(int surface) const;
+  // Points of a curve entity at most maxSegment apart (its ends for a straight line).
+  std::vector<Eigen::Vector3d> sampledCurve(int curve, double maxSegment) const;
+  // x, y, z of the nodes of a meshed (discrete) curve in their order along it.
+  std::vector<double> meshedCurve(int curve) const;
 
   std::filesystem::path file_;
   std::vector<PhysicalGroup> groups_;

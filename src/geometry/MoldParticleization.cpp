@@ -10,6 +10,7 @@
 #include "core/dictionary/Dictionary.h"
 #include "geometry/GmshGeometry.h"
 #include "geometry/LatticeSolid.h"
+#include "geometry/MoldPatchRequest.h"
 
 namespace sphcast {
 
@@ -18,11 +19,6 @@ namespace {
 constexpr double defaultMaxParticles = 2e7;
 constexpr int layersWithoutSupportRadius = 3;  // complete for any h <= 3 dx
 const Dimensions length{{0, 1, 0, 0, 0, 0, 0}};
-
-struct PatchRequest {
-  MoldPatch patch;
-  SourceLocation where;
-};
 
 // The shells of one geometry file share the file's cavity; volumes are filled one by one.
 struct ShellJob {
@@ -91,12 +87,6 @@ void logGroups(const GmshGeometry& geometry) {
   }
 }
 
-std::string groupNames(const std::vector<PhysicalGroup>& groups) {
-  std::ostringstream names;
-  for (const auto& group : groups) names << ' ' << group.name;
-  return names.str();
-}
-
 ParticleCloud makeCloud(const std::string& name, const WallParticles& particles,
                         const std::vector<MoldPatch>& patches, double spacing) {
   std::vector<std::size_t> members;
@@ -123,90 +113,25 @@ ParticleCloud makeCloud(const std::string& name, const WallParticles& particles,
   return cloud;
 }
 
-}  // namespace
+const char* kindOfDimension(int dimension) {
+  return dimension == 1 ? "curve" : dimension == 2 ? "surface" : "volume";
+}
 
-ParticleizedMold particleizeMold(const CaseFolder& caseFolder) {
-  const Dictionary dict = Dictionary::read(caseFolder.systemFile("particleizeMoldDict"));
-  dict.checkKeys({"geometry", "spacing", "supportRadius", "wallLayers", "maxParticles", "patches"});
-  ParticleizedMold mold;
-  mold.spacing = dict.get<double>("spacing", length);
-  if (!(mold.spacing > 0.0)) {
-    throw DictionaryError(dict.location("spacing"), "'spacing' must be positive in " + dict.name());
-  }
-  const double spacing = mold.spacing;
-  mold.wallLayers = readWallLayers(dict, spacing);
-  const double maxParticles = dict.getOrDefault<double>("maxParticles", defaultMaxParticles);
-  std::vector<PatchRequest> requests = readPatches(dict.subDict("patches"));
-  const auto files = dict.get<std::vector<std::string>>("geometry");
-  for (const std::string& file : files) {
-    const auto path = caseFolder.constant() / "geometry" / file;
-    if (!std::filesystem::is_regular_file(path)) {
-      throw DictionaryError(dict.location("geometry"),
-                            "geometry file '" + path.string() + "' does not exist");
-    }
-  }
-
-  // First look at the files without meshing them: groups present, kinds, and how many
-  // particles the spacing would make (meshing a wall at dx/2 is itself costly at a tiny dx).
-  std::vector<std::vector<std::size_t>> patchesOfFile(files.size());
-  std::vector<bool> resolved(requests.size(), false);
-  std::vector<PhysicalGroup> allGroups;
-  double estimate = 0.0;
-  for (std::size_t f = 0; f < files.size(); ++f) {
-    const auto path = caseFolder.constant() / "geometry" / files[f];
-    info() << "Reading " << path.string() << '\n';
-    const GmshGeometry geometry(path, 0.0);
-    logGroups(geometry);
-    allGroups.insert(allGroups.end(), geometry.groups().begin(), geometry.groups().end());
-    for (std::size_t p = 0; p < requests.size(); ++p) {
-      const PhysicalGroup* group = geometry.findGroup(requests[p].patch.name);
-      if (group == nullptr || resolved[p]) continue;
-      resolved[p] = true;
-      patchesOfFile[f].push_back(p);
-      const MoldPatch& patch = requests[p].patch;
-      const int wantedDimension = patch.mode == "shell" ? 2 : 3;
-      if (group->dimension != wantedDimension) {
-        throw DictionaryError(
-            requests[p].where,
-            "patch '" + patch.name + "' has mode " + patch.mode + ", but physical group '" +
-                patch.name + "' of '" + path.string() + "' is not a " +
-                (wantedDimension == 2 ? "surface" : "volume") + " (dimension " +
-                std::to_string(group->dimension) + ")" +
-                (wantedDimension == 2 ? "; use mode volume" : ""));
-      }
-      const double measure = geometry.groupMeasure(*group);
-      estimate += wantedDimension == 2 ? measure * mold.wallLayers / (spacing * spacing)
-                                       : measure / (spacing * spacing * spacing);
-    }
-  }
-  for (std::size_t p = 0; p < requests.size(); ++p) {
-    if (!resolved[p]) {
-      throw DictionaryError(requests[p].where,
-                            "patch '" + requests[p].patch.name +
-                                "' is not a physical group of the geometry; the groups present "
-                                "are (" + groupNames(allGroups) + " )");
-    }
-  }
-  if (estimate > maxParticles) {
-    std::ostringstream message;
-    message << "spacing " << spacing << " m would make about " << std::llround(estimate)
-            << " mold particles, more than maxParticles " << maxParticles << " (raise maxParticles in "
-            << dict.name() << " if you mean it); nothing was written";
-    throw DictionaryError(dict.location("spacing"), message.str());
-  }
-
-  // Then mesh them and take the triangles of every patch.
+// The particles of the 3D patches: shells behind surface groups, volumes filling volume groups.
+WallParticles particleizeSolidMold(const std::vector<GeometryFilePatches>& files,
+                                   const std::vector<PatchRequest>& requests, double spacing,
+                                   int layers) {
+  // Mesh the files and take the triangles of every patch.
   std::vector<ShellJob> shells;
   std::vector<VolumeJob> volumes;
-  for (std::size_t f = 0; f < files.size(); ++f) {
-    if (patchesOfFile[f].empty()) continue;
-    const auto path = caseFolder.constant() / "geometry" / files[f];
+  for (const auto& [path, patchesOfFile] : files) {
+    if (patchesOfFile.empty()) continue;
     // Triangles of dx/2 keep the faceting error of a curved wall small: the sag of a chord s on
     // a radius R is s^2 / (8 R), the normal's error s / (2 R).
     const GmshGeometry geometry(path, 0.5 * spacing);
     std::vector<GmshGeometry::OwnedGroup> shellGroups;
     std::vector<int> cavityVolumes;
-    for (const std::size_t p : patchesOfFile[f]) {
+    for (const std::size_t p : patchesOfFile) {
       const PhysicalGroup* group = geometry.findGroup(requests[p].patch.name);
       const MoldPatch& patch = requests[p].patch;
       if (patch.mode == "shell") {
@@ -242,14 +167,6 @@ ParticleizedMold particleizeMold(const CaseFolder& caseFolder) {
 
   const auto patchCount = static_cast<int>(requests.size());
   WallParticles all;
-  auto appendParticles = [&all](const WallParticles& more) {
-    all.positions.insert(all.positions.end(), more.positions.begin(), more.positions.end());
-    all.normals.insert(all.normals.end(), more.normals.begin(), more.normals.end());
-    all.wallDistances.insert(all.wallDistances.end(), more.wallDistances.begin(),
-                             more.wallDistances.end());
-    all.volumes.insert(all.volumes.end(), more.volumes.begin(), more.volumes.end());
-    all.owners.insert(all.owners.end(), more.owners.begin(), more.owners.end());
-  };
   for (const auto& shell : shells) {
     const LatticeSolid cavity(shell.cavityBoundary, spacing);
     const auto planarFaces = findPlanarFaces(shell.wall, shell.cavityBoundary, spacing);
@@ -257,8 +174,7 @@ ParticleizedMold particleizeMold(const CaseFolder& caseFolder) {
                                       [](const PlanarFace& face) { return !face.globalLattice; });
     info() << "Shell walls: flat faces on their own lattice " << planarFaces.size()
            << " (tilted to the axes " << tilted << "); other faces follow their curvature\n";
-    appendParticles(generateShellParticles(shell.wall, cavity, spacing, mold.wallLayers, patchCount,
-                                           planarFaces));
+    all.append(generateShellParticles(shell.wall, cavity, spacing, layers, patchCount, planarFaces));
   }
   for (const auto& volume : volumes) {
     WallParticles filled = fillVolumeParticles(volume.boundary, spacing, volume.patch);
@@ -272,9 +188,118 @@ ParticleizedMold particleizeMold(const CaseFolder& caseFolder) {
            << " m^3 of the geometry's " << volume.boundary.enclosedVolume()
            << " m^3; particle volume set to " << volumePerParticle << " m^3\n";
     std::fill(filled.volumes.begin(), filled.volumes.end(), volumePerParticle);
-    appendParticles(filled);
+    all.append(filled);
+  }
+  return all;
+}
+
+}  // namespace
+
+std::string groupNames(const std::vector<PhysicalGroup>& groups) {
+  std::ostringstream names;
+  for (const auto& group : groups) names << ' ' << group.name;
+  return names.str();
+}
+
+ParticleizedMold particleizeMold(const CaseFolder& caseFolder) {
+  const Dictionary dict = Dictionary::read(caseFolder.systemFile("particleizeMoldDict"));
+  dict.checkKeys({"dimension", "geometry", "spacing", "supportRadius", "wallLayers",
+                  "maxParticles", "cavity", "patches"});
+  const int dimension = dict.getOrDefault<int>("dimension", 3);
+  if (dimension != 2 && dimension != 3) {
+    throw DictionaryError(dict.location("dimension"), "'dimension' must be 2 or 3 in " + dict.name());
+  }
+  CavityRequest cavity;
+  if (dict.found("cavity")) {
+    cavity = {dict.get<std::string>("cavity"), dict.location("cavity")};
+    if (dimension == 3) {
+      throw DictionaryError(cavity.where,
+                            "'cavity' is for a 2D case (dimension 2); in 3D the cavity is the "
+                            "volume the shell surfaces bound");
+    }
+  }
+  ParticleizedMold mold;
+  mold.spacing = dict.get<double>("spacing", length);
+  if (!(mold.spacing > 0.0)) {
+    throw DictionaryError(dict.location("spacing"), "'spacing' must be positive in " + dict.name());
+  }
+  const double spacing = mold.spacing;
+  mold.wallLayers = readWallLayers(dict, spacing);
+  const double maxParticles = dict.getOrDefault<double>("maxParticles", defaultMaxParticles);
+  std::vector<PatchRequest> requests = readPatches(dict.subDict("patches"));
+  std::vector<GeometryFilePatches> files;
+  for (const std::string& file : dict.get<std::vector<std::string>>("geometry")) {
+    const auto path = caseFolder.constant() / "geometry" / file;
+    if (!std::filesystem::is_regular_file(path)) {
+      throw DictionaryError(dict.location("geometry"),
+                            "geometry file '" + path.string() + "' does not exist");
+    }
+    files.push_back({path, {}});
   }
 
+  // First look at the files without meshing them: groups present, kinds, and how many
+  // particles the spacing would make (meshing a wall at dx/2 is itself costly at a tiny dx).
+  // A shell is a group one dimension below the case's (a surface in 3D, a curve in 2D), a
+  // volume one of the case's dimension (a volume in 3D, a surface in 2D).
+  std::vector<bool> resolved(requests.size(), false);
+  std::vector<PhysicalGroup> allGroups;
+  double estimate = 0.0;
+  for (auto& [path, patchesOfFile] : files) {
+    info() << "Reading " << path.string() << '\n';
+    const GmshGeometry geometry(path, 0.0);
+    logGroups(geometry);
+    allGroups.insert(allGroups.end(), geometry.groups().begin(), geometry.groups().end());
+    for (std::size_t p = 0; p < requests.size(); ++p) {
+      const PhysicalGroup* group = geometry.findGroup(requests[p].patch.name);
+      if (group == nullptr || resolved[p]) continue;
+      resolved[p] = true;
+      patchesOfFile.push_back(p);
+      const MoldPatch& patch = requests[p].patch;
+      const int wantedDimension = patch.mode == "shell" ? dimension - 1 : dimension;
+      if (group->dimension != wantedDimension) {
+        throw DictionaryError(
+            requests[p].where,
+            "patch '" + patch.name + "' has mode " + patch.mode + ", but physical group '" +
+                patch.name + "' of '" + path.string() + "' is not a " +
+                kindOfDimension(wantedDimension) + " (dimension " +
+                std::to_string(group->dimension) + ")" +
+                (patch.mode == "shell" && group->dimension == dimension ? "; use mode volume" : "") +
+                (dimension == 3 && group->dimension < 2 ? "; is the case 2D (dimension 2)?" : ""));
+      }
+      const double measure = geometry.groupMeasure(*group);
+      estimate += patch.mode == "shell"
+                      ? measure * mold.wallLayers / std::pow(spacing, dimension - 1)
+                      : measure / std::pow(spacing, dimension);
+    }
+  }
+  for (std::size_t p = 0; p < requests.size(); ++p) {
+    if (!resolved[p]) {
+      throw DictionaryError(requests[p].where,
+                            "patch '" + requests[p].patch.name +
+                                "' is not a physical group of the geometry; the groups present "
+                                "are (" + groupNames(allGroups) + " )");
+    }
+  }
+  if (!cavity.name.empty() &&
+      std::none_of(allGroups.begin(), allGroups.end(), [&](const PhysicalGroup& group) {
+        return group.name == cavity.name && group.dimension == 2;
+      })) {
+    throw DictionaryError(cavity.where, "cavity '" + cavity.name +
+                                            "' is not a physical surface of the geometry; the "
+                                            "groups present are (" + groupNames(allGroups) + " )");
+  }
+  if (estimate > maxParticles) {
+    std::ostringstream message;
+    message << "spacing " << spacing << " m would make about " << std::llround(estimate)
+            << " mold particles, more than maxParticles " << maxParticles << " (raise maxParticles in "
+            << dict.name() << " if you mean it); nothing was written";
+    throw DictionaryError(dict.location("spacing"), message.str());
+  }
+
+  WallParticles all =
+      dimension == 3 ? particleizeSolidMold(files, requests, spacing, mold.wallLayers)
+                     : particleizePlaneMold(files, requests, cavity, spacing, mold.wallLayers);
+  const auto patchCount = static_cast<int>(requests.size());
   const auto statistics = nearestNeighbourStatistics(all, patchCount, spacing);
   for (auto& request : requests) {
     MoldPatch& patch = request.patch;

@@ -12,6 +12,7 @@ namespace sphcast {
 // What system/particleizeMoldDict asks for, read and checked in full (dictionary, geometry
 // files, physical groups, particle count) before a particle is made:
 //
+//   dimension     3;            // optional: 2 for a geometry in the plane z = 0 (default 3)
 //   geometry      ("cone.geo" "press.msh");  // in constant/geometry: .geo (meshed by gmsh) or .msh
 //   spacing       0.002;        // particle spacing dx, m
 //   supportRadius 0.0045;       // optional: the kernel's support radius h, m
@@ -26,6 +27,11 @@ namespace sphcast {
 // type: fixedWall | rigidBody | fixedTemperature (how the solver treats the particles);
 // mode: shell (default; `wallLayers` layers behind a surface group, on the side away from the
 // volume the surfaces bound, the cavity) | volume (the whole of a closed volume group).
+// In 2D (`dimension 2;`, WallCurves2D.h) the geometry lies in the plane z = 0: a shell patch is a
+// Physical Curve, its layers on the side away from the cavity, the surface its curves bound or
+// the Physical Surface named by `cavity name;`; a volume patch is a Physical Surface filled on
+// the square lattice. A .geo's curves are followed by their parametrisation, a .msh's along
+// their line elements (mesh curved ones finely, dx/8 or less); particle volumes are areas (m^2).
 // wallLayers = ceil(h / dx): the first layer sits dx/2 behind the wall and layer k at
 // (k + 1/2) dx, so the layers reach wallLayers dx >= h behind it, and a fluid particle touching
 // the wall has a complete kernel.

@@ -295,6 +295,14 @@ WallParticles generateShellParticles(const TriangleMesh& wall, const LatticeSoli
   return shell;
 }
 
+void WallParticles::append(const WallParticles& more) {
+  positions.insert(positions.end(), more.positions.begin(), more.positions.end());
+  normals.insert(normals.end(), more.normals.begin(), more.normals.end());
+  wallDistances.insert(wallDistances.end(), more.wallDistances.begin(), more.wallDistances.end());
+  volumes.insert(volumes.end(), more.volumes.begin(), more.volumes.end());
+  owners.insert(owners.end(), more.owners.begin(), more.owners.end());
+}
+
 WallParticles fillVolumeParticles(const TriangleMesh& boundary, double spacing, int patch) {
   const LatticeSolid solid(boundary, spacing);
   const TriangleDistanceTree tree(boundary);

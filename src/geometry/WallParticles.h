@@ -21,6 +21,8 @@ struct WallParticles {
   std::vector<int> owners;
 
   std::size_t size() const { return positions.size(); }
+  // Adds the particles of `more` after these.
+  void append(const WallParticles& more);
 };
 
 // `layers` layers of particles behind `wall` (the surfaces of the shell patches, owners = patch

@@ -112,5 +112,35 @@ TEST(CastFieldsSetup, RelaxationOfAFlatCloudIsAnErrorAtTheRelaxationKey) {
   }
 }
 
+TEST(CastFieldsSetup, TwoDimensionalCloudsHaveTheAreaOfTheirCellAsVolume) {
+  TemporaryCase folder;
+  folder.write("system/setCastFieldsDict",
+               header + "dimension 2;\nspacing 0.01;\nclouds\n{\n    water\n    {\n        regions "
+                        "{ r { type box; min (0 0 0); max (0.1 0.2 0); } }\n    }\n}\n");
+  const auto clouds = buildCastClouds(CaseFolder(folder.root()), {});
+  ASSERT_EQ(clouds.size(), 1u);
+  EXPECT_EQ(clouds[0].size(), 200u);
+  for (std::size_t i = 0; i < clouds[0].size(); ++i) {
+    EXPECT_DOUBLE_EQ(double(clouds[0].scalarField("volume")[i]), 1e-4);  // dx^2
+    EXPECT_EQ(clouds[0].positions()[i].z(), 0);
+  }
+}
+
+TEST(CastFieldsSetup, TwoDimensionalCloudOffThePlaneIsAnErrorAtTheDimensionKey) {
+  TemporaryCase folder;
+  folder.write("system/setCastFieldsDict",
+               header + "dimension 2;\nspacing 0.01;\nclouds\n{\n    water\n    {\n        regions "
+                        "{ r { type box; min (0 0 0); max (0.1 0.2 0.05); } }\n    }\n}\n");
+  try {
+    buildCastClouds(CaseFolder(folder.root()), {});
+    FAIL() << "a 2D cloud off z = 0 accepted";
+  } catch (const DictionaryError& error) {
+    const std::string message = error.what();
+    EXPECT_NE(message.find("setCastFieldsDict:2:1: cloud 'water' has a particle at z = 0.005"),
+              std::string::npos)
+        << message;
+  }
+}
+
 }  // namespace
 }  // namespace sphcast
