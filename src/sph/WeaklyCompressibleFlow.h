@@ -64,22 +64,27 @@ class WeaklyCompressibleFlow {
   std::size_t fluidPairCount() const { return fluidNeighbours_.pairCount(); }
 
  private:
+  // Which rates a pass computes: both at once (riemann, standard), or, for deltaSPH's
+  // Stormer-Verlet step (step()), the density rate and the acceleration in separate passes.
+  enum class RatePart { both, densityRate, acceleration };
   void requirePlane() const;
+  void stepStormerVerlet(Real dt);
   void findNeighbours();
   void updatePressure();
   template <int Dim>
   void extrapolateWallPressure();
   template <int Dim>
   void computeCorrection();
-  bool needsCorrectionMatrix() const {
-    return settings_.kernelCorrection || settings_.densityScheme == "deltaSPH";
+  bool needsCorrectionMatrix(RatePart part) const {
+    return settings_.kernelCorrection ||
+           (settings_.densityScheme == "deltaSPH" && part != RatePart::acceleration);
   }
-  void computeRates();
+  void computeRates(RatePart part = RatePart::both);
   template <int Dim>
-  void computeRatesInDimension();
+  void computeRatesInDimension(RatePart part);
   template <int Dim, class Interface>
-  void computeRatesWithInterface();
-  template <int Dim, class Interface, class Viscosity>
+  void computeRatesWithInterface(RatePart part);
+  template <int Dim, class Interface, class Viscosity, RatePart Part>
   void computeRatesFor();
 
   FlowSettings settings_;
