@@ -383,8 +383,10 @@ template <int Dim>
 void WeaklyCompressibleFlow::computeRatesInDimension(RatePart part) {
   if (settings_.densityScheme == "riemann") {
     computeRatesWithInterface<Dim, AcousticRiemannInterface>(part);
-  } else {  // standard, and deltaSPH whose extra terms are added in the same pass
+  } else if (settings_.densityScheme == "standard") {
     computeRatesWithInterface<Dim, ArithmeticMeanInterface>(part);
+  } else {  // deltaSPH, whose extra terms are added in the same pass
+    computeRatesWithInterface<Dim, DeltaSPHInterface>(part);
   }
 }
 
