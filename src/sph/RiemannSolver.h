@@ -24,12 +24,23 @@ struct InterfaceState {
 // Standard SPH (the paper's comparison, Monaghan 1992): arithmetic means, no dissipation.
 struct ArithmeticMeanInterface {
   static constexpr const char* name = "standard";
+  // whether a wall pair takes the fluid particle's own pressure as it is, tension included
+  // (accumulateWallPair says why deltaSPH does and the others do not)
+  static constexpr bool fluidTensionAtWalls = false;
   InterfaceState operator()(const InterfaceSide& left, const InterfaceSide& right,
                             const Vector& /*towardsRight*/, Real /*soundSpeed*/,
                             Real /*restingJump*/ = 0) const {
     return {Real(0.5) * (left.pressure + right.pressure),
             Real(0.5) * (left.velocity + right.velocity)};
   }
+};
+
+// deltaSPH's pair (Antuono et al. 2010): the plain means of standard SPH, whose wall pairs keep
+// the fluid particle's tension (FlowRates.h, accumulateWallPair); the density diffusion and
+// artificial viscosity are added by the flow pass (DeltaSPHPair).
+struct DeltaSPHInterface : ArithmeticMeanInterface {
+  static constexpr const char* name = "deltaSPH";
+  static constexpr bool fluidTensionAtWalls = true;
 };
 
 // The linearised (acoustic) Riemann solver of Parshikov & Medin (2002) with the low-dissipation
@@ -46,6 +57,7 @@ struct ArithmeticMeanInterface {
 // raised the density at the free surface and walls of a tank at rest steadily.
 struct AcousticRiemannInterface {
   static constexpr const char* name = "riemann";
+  static constexpr bool fluidTensionAtWalls = false;
   static constexpr Real limiterSlope = 3;
 
   InterfaceState operator()(const InterfaceSide& left, const InterfaceSide& right,

@@ -41,7 +41,8 @@ struct FlowStepLimits {
 // solver (or plain means: densityScheme standard; plain means with the density diffusion and
 // artificial viscosity of Antuono et al. 2010: deltaSPH), optionally with the normalised kernel
 // gradient (KernelCorrection.h), the viscous term with dynamic viscosity, and gravity;
-// integrated kick-drift-kick. The cloud is reordered along the cell grid every step.
+// integrated kick-drift-kick (deltaSPH: Stormer-Verlet with the density updated like the
+// positions, stepStormerVerlet says why). The cloud is reordered along the cell grid every step.
 //
 // Fluid fields read: U, rho, mass, viscosity (mu, Pa s), restDensity (rho_s); written: p,
 // acceleration, densityRate (kept in the cloud, so a restart continues bit for bit). Cloud
@@ -64,22 +65,28 @@ class WeaklyCompressibleFlow {
   std::size_t fluidPairCount() const { return fluidNeighbours_.pairCount(); }
 
  private:
+  // Which rates a pass computes: both at once (riemann, standard), or, for deltaSPH's
+  // Stormer-Verlet step (stepStormerVerlet), the density rate and the acceleration in separate
+  // passes.
+  enum class RatePart { both, densityRate, acceleration };
   void requirePlane() const;
+  void stepStormerVerlet(Real dt);
   void findNeighbours();
   void updatePressure();
   template <int Dim>
   void extrapolateWallPressure();
   template <int Dim>
   void computeCorrection();
-  bool needsCorrectionMatrix() const {
-    return settings_.kernelCorrection || settings_.densityScheme == "deltaSPH";
+  bool needsCorrectionMatrix(RatePart part) const {
+    return settings_.kernelCorrection ||
+           (settings_.densityScheme == "deltaSPH" && part != RatePart::acceleration);
   }
-  void computeRates();
+  void computeRates(RatePart part = RatePart::both);
   template <int Dim>
-  void computeRatesInDimension();
+  void computeRatesInDimension(RatePart part);
   template <int Dim, class Interface>
-  void computeRatesWithInterface();
-  template <int Dim, class Interface, class Viscosity>
+  void computeRatesWithInterface(RatePart part);
+  template <int Dim, class Interface, class Viscosity, RatePart Part>
   void computeRatesFor();
 
   FlowSettings settings_;
