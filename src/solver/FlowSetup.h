@@ -22,7 +22,7 @@ namespace sphcast {
 //                                                        // intervals, longer than 2 h
 //   system/sphSchemes:       densityScheme riemann;      // riemann | standard | deltaSPH
 //                            kernelCorrection on;        // optional, off by default
-//                            deltaSPHCoeffs { delta 0.1; alpha 0; }  // optional (deltaSPH)
+//                            deltaSPHCoeffs { delta 0.1; alpha 0.02; }  // optional (deltaSPH)
 //                            viscousForm   Morris;       // Morris | Cleary
 //                            supportRadius 0.0045;       // h, m
 //                            soundSpeed    50;           // c of eq. (3), m/s
