@@ -1,6 +1,8 @@
 # Sourced by the integration tests: a scratch folder, the built tools on PATH, small cases.
 set -u
 export PATH="$SPHCAST_BIN:$PATH"
+# the tutorials' comparison scripts, run on copies of the cases, import etc/functionObjectSeries.py
+export PYTHONPATH="$(cd "$(dirname "${BASH_SOURCE[0]}")/../../etc" && pwd)${PYTHONPATH:+:$PYTHONPATH}"
 export OMP_NUM_THREADS=${OMP_NUM_THREADS:-2}
 scratch=$(mktemp -d "${TMPDIR:-/tmp}/sphCastIntegration.XXXXXX")
 trap 'rm -rf "$scratch"' EXIT
