@@ -436,15 +436,15 @@ void WeaklyCompressibleFlow::step(double deltaT) {
 //   rho^{n+1} = rho^n + dt Drho(x^{n+1}, v^{n+1/2}, rho^n),
 //   v^{n+1} = v^{n+1/2} + dt/2 a(x^{n+1}, rho^{n+1}, v^{n+1/2}),
 // two passes over the pairs per step. The kick-drift-kick of step() kicks rho like v, so the
-// pressure of a^{n+1} comes from rho^{n+1/2} and the density rate from v^{n+1/2}: for an
-// acoustic mode of frequency w (drho/dt = -w v, dv/dt = w rho) that amplifies by about
-// 1 + (w dt)^2 / 2 every step, for any dt. The Riemann interface damps that growth; the
-// plain-mean pressure of deltaSPH has only the density diffusion and alpha to do it, which
-// is too little at maxCo 0.25 (measured, delta 0.1 and alpha 0.02: the 2D hydrostatic tank's
+// pressure of a^{n+1} comes from rho^{n+1/2} and the density rate from v^{n+1/2}: for an acoustic
+// mode of frequency w (drho/dt = -w v, dv/dt = w rho) that amplifies by about 1 + (w dt)^2 / 4 in
+// amplitude (1 + (w dt)^2 / 2 in energy) every step, for any dt. The Riemann interface damps that
+// growth; the plain-mean pressure of deltaSPH has only the density diffusion and alpha to do it,
+// which is too little at maxCo 0.25 (measured, delta 0.1 and alpha 0.02: the 2D hydrostatic tank's
 // density oscillates with growing amplitude from the free-surface corners and blows up by
-// t sqrt(g/H) = 1.6; at maxCo 0.1 it survives, at 0.05 it stays at rest; the 2D dam break
-// loses particles at a/dx = 10 and 20). This step is neutral for w dt < 2 and costs a second
-// pass over the pairs (the 2D dam break at a/dx = 20: 4.2 s against riemann's 2.8 s).
+// t sqrt(g/H) = 1.6; at maxCo 0.1 it survives, at 0.05 it stays at rest; the 2D dam break loses
+// particles at a/dx = 10 and 20). This step is neutral for w dt < 2 and costs a second pass over
+// the pairs (the 2D dam break at a/dx = 20: 4.2 s against riemann's 2.8 s).
 void WeaklyCompressibleFlow::stepStormerVerlet(Real dt) {
   const Real halfDt = Real(0.5) * dt;
   auto& x = fluid_.positions();
