@@ -1,6 +1,7 @@
 #include "sph/WeaklyCompressibleFlow.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <limits>
 
@@ -9,6 +10,18 @@
 #include "sph/FlowRates.h"
 
 namespace sphcast {
+
+namespace {
+
+// Runs `work` and adds its wall time to `total` (seconds).
+template <class Work>
+void timed(double& total, Work&& work) {
+  const auto start = std::chrono::steady_clock::now();
+  work();
+  total += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+}  // namespace
 
 double FlowStepLimits::smallest(std::string& limiter) const {
   double step = acoustic;
@@ -20,6 +33,10 @@ double FlowStepLimits::smallest(std::string& limiter) const {
   if (bodyForce < step) {
     step = bodyForce;
     limiter = "body force";
+  }
+  if (acceleration < step) {
+    step = acceleration;
+    limiter = "acceleration";
   }
   return step;
 }
@@ -61,8 +78,10 @@ WeaklyCompressibleFlow::WeaklyCompressibleFlow(FlowSettings settings, ParticleCl
   fluid_.addScalarField("p");
   fluid_.addVectorField("acceleration");
   fluid_.addScalarField("densityRate");
+  // A restarted cloud was written in cell order after its last search: searching again moves
+  // no particle, so the restart stays bit for bit, and the log's pair count is right.
+  findNeighbours();
   if (!restarted) {
-    findNeighbours();
     updatePressure();
     computeRates();
   }
@@ -100,6 +119,31 @@ void WeaklyCompressibleFlow::findNeighbours() {
     wallNeighbours_[w].buildBetween(fluid_.positions(), walls_[w]->positions(), wallGrids_[w]);
     fluidAroundWall_[w].buildBetween(walls_[w]->positions(), fluid_.positions(), fluidGrid_);
   }
+}
+
+std::vector<WallSurfaceView> WeaklyCompressibleFlow::wallSurfaces() const {
+  std::vector<WallSurfaceView> surfaces;
+  for (std::size_t w = 0; w < walls_.size(); ++w) {
+    surfaces.push_back({walls_[w]->positions(), walls_[w]->vectorField("normal"),
+                        walls_[w]->scalarField("wallDistance"), &wallNeighbours_[w]});
+  }
+  return surfaces;
+}
+
+void WeaklyCompressibleFlow::keepClearOfWalls() {
+  const Real spacing = static_cast<Real>(fluid_.attributes().at("spacing"));
+  lastClearance_ =
+      enforceWallClearance(fluid_.positions(), fluid_.vectorField("U"), wallSurfaces(),
+                           settings_.periodic, spacing, settings_.wallClearance * spacing);
+  // The lists stay those of the positions before the move (at most a quarter spacing, most far
+  // less): a pair that came within h misses W's last (1 - r/h)^4 sliver, and one that left it
+  // adds W = 0. A second search for the few particles moved would cost as much as the first.
+}
+
+WallSurfaceDistance WeaklyCompressibleFlow::wallSurfaceDistanceOf(std::size_t i) const {
+  const Real spacing = static_cast<Real>(fluid_.attributes().at("spacing"));
+  return wallSurfaceDistance(fluid_.positions()[i], i, wallSurfaces(), settings_.periodic,
+                             spacing);
 }
 
 void WeaklyCompressibleFlow::updatePressure() {
@@ -412,23 +456,32 @@ void WeaklyCompressibleFlow::step(double deltaT) {
   const auto& acceleration = fluid_.vectorField("acceleration");
   const PeriodicBox periodic = settings_.periodic;
   // Kick and drift with the rates of the current state ...
+  timed(timings_.integration, [&] {
 #pragma omp parallel for
-  for (std::size_t i = 0; i < x.size(); ++i) {
-    v[i] += halfDt * acceleration[i];
-    rho[i] += halfDt * densityRate[i];
-    x[i] = periodic.wrap(x[i] + dt * v[i]);
-  }
+    for (std::size_t i = 0; i < x.size(); ++i) {
+      v[i] += halfDt * acceleration[i];
+      rho[i] += halfDt * densityRate[i];
+      x[i] = periodic.wrap(x[i] + dt * v[i]);
+    }
+  });
   // ... then the second kick with the rates at the new positions (the reorder inside
   // findNeighbours permutes the same vectors, so the references above stay valid).
-  findNeighbours();
-  updatePressure();
-  computeRates();
+  timed(timings_.neighbourSearch, [&] {
+    findNeighbours();
+    keepClearOfWalls();
+  });
+  timed(timings_.rates, [&] {
+    updatePressure();
+    computeRates();
+  });
+  timed(timings_.integration, [&] {
 #pragma omp parallel for
-  for (std::size_t i = 0; i < v.size(); ++i) {
-    v[i] += halfDt * acceleration[i];
-    rho[i] += halfDt * densityRate[i];
-  }
-  updatePressure();
+    for (std::size_t i = 0; i < v.size(); ++i) {
+      v[i] += halfDt * acceleration[i];
+      rho[i] += halfDt * densityRate[i];
+    }
+    updatePressure();
+  });
 }
 
 // deltaSPH's step: Stormer-Verlet with the density as a position-like variable,
@@ -453,30 +506,42 @@ void WeaklyCompressibleFlow::stepStormerVerlet(Real dt) {
   const auto& densityRate = fluid_.scalarField("densityRate");
   const auto& acceleration = fluid_.vectorField("acceleration");
   const PeriodicBox periodic = settings_.periodic;
+  timed(timings_.integration, [&] {
 #pragma omp parallel for
-  for (std::size_t i = 0; i < x.size(); ++i) {
-    v[i] += halfDt * acceleration[i];
-    x[i] = periodic.wrap(x[i] + dt * v[i]);
-  }
-  findNeighbours();
-  computeRates(RatePart::densityRate);  // the pressure is still that of rho^n
+    for (std::size_t i = 0; i < x.size(); ++i) {
+      v[i] += halfDt * acceleration[i];
+      x[i] = periodic.wrap(x[i] + dt * v[i]);
+    }
+  });
+  timed(timings_.neighbourSearch, [&] {
+    findNeighbours();
+    keepClearOfWalls();
+  });
+  timed(timings_.rates, [&] { computeRates(RatePart::densityRate); });  // p is still of rho^n
+  timed(timings_.integration, [&] {
 #pragma omp parallel for
-  for (std::size_t i = 0; i < rho.size(); ++i) rho[i] += dt * densityRate[i];
-  updatePressure();
-  computeRates(RatePart::acceleration);
+    for (std::size_t i = 0; i < rho.size(); ++i) rho[i] += dt * densityRate[i];
+    updatePressure();
+  });
+  timed(timings_.rates, [&] { computeRates(RatePart::acceleration); });
+  timed(timings_.integration, [&] {
 #pragma omp parallel for
-  for (std::size_t i = 0; i < v.size(); ++i) v[i] += halfDt * acceleration[i];
+    for (std::size_t i = 0; i < v.size(); ++i) v[i] += halfDt * acceleration[i];
+  });
 }
 
 FlowStepLimits WeaklyCompressibleFlow::stepLimits(double maxCo) const {
   const auto& v = fluid_.vectorField("U");
   const auto& rho = fluid_.scalarField("rho");
   const auto& mu = fluid_.scalarField("viscosity");
+  const auto& a = fluid_.vectorField("acceleration");
   double fastest = 0;
+  double largestAcceleration = 0;
   double largestKinematicViscosity = 0;
-#pragma omp parallel for reduction(max : fastest, largestKinematicViscosity)
+#pragma omp parallel for reduction(max : fastest, largestAcceleration, largestKinematicViscosity)
   for (std::size_t i = 0; i < v.size(); ++i) {
     fastest = std::max(fastest, static_cast<double>(v[i].norm()));
+    largestAcceleration = std::max(largestAcceleration, static_cast<double>(a[i].norm()));
     largestKinematicViscosity =
         std::max(largestKinematicViscosity, static_cast<double>(mu[i] / rho[i]));
   }
@@ -490,9 +555,14 @@ FlowStepLimits WeaklyCompressibleFlow::stepLimits(double maxCo) const {
   const double dx = spacing->second;
   const double g = static_cast<double>(settings_.gravity.norm());
   const double infinite = std::numeric_limits<double>::max();
+  // The force criterion of Monaghan (1992) on the total acceleration: an impact on a wall
+  // accelerates the front particles far beyond g for a few steps, and a step that lets them
+  // travel more than dx / 32 under that acceleration lets them into the wall (the acoustic limit
+  // alone does not see it: |v| is still small when |a| is large).
   return {maxCo * dx / (settings_.soundSpeed + fastest),
           largestKinematicViscosity > 0 ? 0.125 * dx * dx / largestKinematicViscosity : infinite,
-          g > 0 ? 0.25 * std::sqrt(dx / g) : infinite};
+          g > 0 ? 0.25 * std::sqrt(dx / g) : infinite,
+          largestAcceleration > 0 ? 0.25 * std::sqrt(dx / largestAcceleration) : infinite};
 }
 
 std::pair<Real, Real> WeaklyCompressibleFlow::densityRange() const {

@@ -7,6 +7,7 @@
 #include "particles/NeighbourList.h"
 #include "particles/ParticleCloud.h"
 #include "sph/KernelCorrection.h"
+#include "sph/WallClearance.h"
 
 namespace sphcast {
 
@@ -27,13 +28,24 @@ struct FlowSettings {
   Real deltaSPHViscosity = Real(0.02);
   std::string viscousForm = "Morris";     // Morris | Cleary (FlowRates.h says why Morris)
   PeriodicBox periodic;
+  // The least distance, in particle spacings, a fluid particle keeps from a wall surface
+  // (WallClearance.h, WallSurfaceDistance.h).
+  Real wallClearance = Real(wallClearanceInSpacings);
+};
+
+// Wall time spent in each part of the flow's steps, seconds since construction.
+struct FlowTimings {
+  double neighbourSearch = 0;  // grids, reorder, pair lists, wall clearance
+  double rates = 0;            // wall pressure, correction, the pair loops
+  double integration = 0;      // kicks and drifts
 };
 
 // Why the step is what it is: each limit in seconds, for the log.
 struct FlowStepLimits {
-  double acoustic;  // maxCo dx / (c + |v|max)
-  double viscous;   // 0.125 dx^2 / nu_max
-  double bodyForce; // 0.25 sqrt(dx / |g|)
+  double acoustic;      // maxCo dx / (c + |v|max)
+  double viscous;       // 0.125 dx^2 / nu_max
+  double bodyForce;     // 0.25 sqrt(dx / |g|)
+  double acceleration;  // 0.25 sqrt(dx / |a|max), Monaghan's force criterion
   double smallest(std::string& limiter) const;
 };
 
@@ -65,6 +77,13 @@ class WeaklyCompressibleFlow {
 
   std::size_t fluidPairCount() const { return fluidNeighbours_.pairCount(); }
 
+  // What the wall clearance did in the last step, and the estimate of one particle's distance
+  // in front of the wall surface (for the run's health checks).
+  const WallClearanceReport& lastWallClearance() const { return lastClearance_; }
+  WallSurfaceDistance wallSurfaceDistanceOf(std::size_t i) const;
+
+  const FlowTimings& timings() const { return timings_; }
+
  private:
   // Which rates a pass computes: both at once (riemann, standard), or, for deltaSPH's
   // Stormer-Verlet step (stepStormerVerlet), the density rate and the acceleration in separate
@@ -73,6 +92,9 @@ class WeaklyCompressibleFlow {
   void requirePlane() const;
   void stepStormerVerlet(Real dt);
   void findNeighbours();
+  // Moves fluid particles closer than the clearance back from the walls (WallClearance.h).
+  void keepClearOfWalls();
+  std::vector<WallSurfaceView> wallSurfaces() const;
   void updatePressure();
   template <int Dim>
   void extrapolateWallPressure();
@@ -101,6 +123,8 @@ class WeaklyCompressibleFlow {
   std::vector<std::vector<Real>> wallPressure_;     // per wall cloud, per particle
   std::vector<Matrix> correction_;                  // L_i, with kernelCorrection or deltaSPH
   std::vector<Vector> densityGradient_;             // renormalised grad rho (deltaSPH)
+  WallClearanceReport lastClearance_;
+  FlowTimings timings_;
 };
 
 }  // namespace sphcast
