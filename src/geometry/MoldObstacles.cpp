@@ -1,10 +1,11 @@
 #include "geometry/MoldObstacles.h"
 
+
 namespace sphcast {
 
 MoldObstacles::MoldObstacles(const std::vector<ParticleCloud>& moldClouds, double spacing,
                              double clearance)
-    : clearance_(clearance), clearanceGrid_(static_cast<Real>(clearance)) {
+    : spacing_(spacing), clearance_(clearance), clearanceGrid_(static_cast<Real>(clearance)) {
   bool sided = true;
   for (const ParticleCloud& cloud : moldClouds) {
     sided = sided && cloud.hasVectorField("normal") && cloud.hasScalarField("wallDistance");
@@ -56,6 +57,22 @@ std::vector<bool> MoldObstacles::behindWall(const std::vector<Vector>& points,
     }
   }
   return behind;
+}
+
+std::vector<WallSurfaceDistance> MoldObstacles::wallSurfaceDistances(
+    const std::vector<Vector>& points, double radius) const {
+  std::vector<WallSurfaceDistance> distances(points.size());
+  if (normals_.empty() || points.empty()) return distances;
+  CellGrid grid(static_cast<Real>(radius));
+  grid.build(particles_.positions);
+  NeighbourList list;
+  list.buildBetween(points, particles_.positions, grid);
+  const std::vector<WallSurfaceView> walls{
+      {particles_.positions, normals_, wallDistances_, &list}};
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    distances[i] = wallSurfaceDistance(points[i], i, walls, PeriodicBox{}, static_cast<Real>(spacing_));
+  }
+  return distances;
 }
 
 FixedNeighbours MoldObstacles::within(const Vector& lower, const Vector& upper) const {

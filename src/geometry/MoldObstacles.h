@@ -7,6 +7,7 @@
 #include "particles/CellGrid.h"
 #include "particles/NeighbourList.h"
 #include "particles/ParticleCloud.h"
+#include "particles/WallSurfaceDistance.h"
 
 namespace sphcast {
 
@@ -32,6 +33,13 @@ class MoldObstacles {
   // to the other face). All false when some mold cloud lacks normal or wallDistance.
   std::vector<bool> behindWall(const std::vector<Vector>& points, double radius) const;
 
+  // For each point, its distance in front of the wall surface and the wall normal there, as the
+  // flow estimates them (particles/WallSurfaceDistance.h) from the mold particles within
+  // `radius`; not found where none is that near, or some mold cloud lacks normal or
+  // wallDistance.
+  std::vector<WallSurfaceDistance> wallSurfaceDistances(const std::vector<Vector>& points,
+                                                        double radius) const;
+
   // The mold particles inside the box [lower, upper].
   FixedNeighbours within(const Vector& lower, const Vector& upper) const;
 
@@ -39,6 +47,7 @@ class MoldObstacles {
   FixedNeighbours particles_;
   std::vector<Vector> normals_;      // empty when some cloud has none
   std::vector<Real> wallDistances_;  // likewise
+  double spacing_;
   double clearance_;
   CellGrid clearanceGrid_;
 };
