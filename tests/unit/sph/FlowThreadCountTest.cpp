@@ -1,0 +1,89 @@
+// Every OpenMP pass of the flow step (neighbour search, wall pressure, correction, rates, wall
+// clearance, integration, step limits) gives the same bits on one thread as on two: the loops
+// gather (each particle writes only its own values) and the reductions are max and min. The CI
+// runs every other test on one thread, so this is where two threads are exercised.
+#include <omp.h>
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "FlowTestCases.h"
+#include "sph/WeaklyCompressibleFlow.h"
+
+namespace sphcast {
+namespace {
+
+struct Scheme {
+  std::string densityScheme;
+  bool kernelCorrection;
+};
+
+// A 2D dam break (a = 15 dx) run for `steps` steps on `threads` threads; the column is released
+// against the far wall at 1 m/s so that the wall clearance acts within the steps taken.
+ParticleCloud runDamBreak(int threads, const Scheme& scheme, int steps) {
+  const int previous = omp_get_max_threads();
+  omp_set_num_threads(threads);
+  const Real dx = 0.005;
+  auto fluid = testing::fluidBlock2D(15, 30, dx, Vector::Zero(), 1000, 1e-3);
+  for (Vector& u : fluid.vectorField("U")) u = Vector(1.0, 0, 0);
+  auto wall = testing::emptyWall();
+  const int tank = 24;
+  auto outside = [=](int column, int row) {
+    const Real ox = column < 0 ? Real(column + 0.5) : (column >= tank ? Real(column - tank + 0.5) : 0);
+    const Real oy = row < 0 ? Real(row + 0.5) : 0;
+    return Vector(ox, oy, 0);
+  };
+  auto normal = [=](int column, int row) { return Vector(-outside(column, row)); };
+  auto depth = [=](int column, int row) { return outside(column, row).norm() * dx; };
+  testing::addWallCells(wall, -3, tank + 3, -3, 0, dx, Vector::Zero(), normal, depth);
+  testing::addWallCells(wall, -3, 0, 0, 40, dx, Vector::Zero(), normal, depth);
+  testing::addWallCells(wall, tank, tank + 3, 0, 40, dx, Vector::Zero(), normal, depth);
+  FlowSettings settings;
+  settings.dimension = 2;
+  settings.supportRadius = 3 * dx;
+  settings.soundSpeed = 20;
+  settings.gravity = Vector(0, -9.81, 0);
+  settings.densityScheme = scheme.densityScheme;
+  settings.kernelCorrection = scheme.kernelCorrection;
+  WeaklyCompressibleFlow flow(settings, fluid, {&wall});
+  std::string limiter;
+  std::size_t corrected = 0;
+  for (int step = 0; step < steps; ++step) {
+    flow.step(flow.stepLimits(0.25).smallest(limiter));
+    corrected += flow.lastWallClearance().corrected;
+  }
+  omp_set_num_threads(previous);
+  std::printf("    %s%s, %d thread(s): %zu particle corrections by the wall clearance\n",
+              scheme.densityScheme.c_str(), scheme.kernelCorrection ? " + correction" : "", threads,
+              corrected);
+  return fluid;
+}
+
+void expectSameBits(const ParticleCloud& one, const ParticleCloud& two) {
+  ASSERT_EQ(one.size(), two.size());
+  for (std::size_t i = 0; i < one.size(); ++i) {
+    ASSERT_EQ(one.positions()[i], two.positions()[i]) << "particle " << i;
+  }
+  for (const char* name : {"U", "acceleration"}) {
+    for (std::size_t i = 0; i < one.size(); ++i) {
+      ASSERT_EQ(one.vectorField(name)[i], two.vectorField(name)[i]) << name << " of " << i;
+    }
+  }
+  for (const char* name : {"rho", "p", "densityRate"}) {
+    for (std::size_t i = 0; i < one.size(); ++i) {
+      ASSERT_EQ(one.scalarField(name)[i], two.scalarField(name)[i]) << name << " of " << i;
+    }
+  }
+}
+
+TEST(FlowThreadCount, OneAndTwoThreadsGiveTheSameBitsForEveryScheme) {
+  for (const Scheme& scheme : {Scheme{"riemann", false}, Scheme{"riemann", true},
+                               Scheme{"standard", false}, Scheme{"deltaSPH", false}}) {
+    SCOPED_TRACE(scheme.densityScheme);
+    expectSameBits(runDamBreak(1, scheme, 200), runDamBreak(2, scheme, 200));
+  }
+}
+
+}  // namespace
+}  // namespace sphcast
