@@ -1,9 +1,13 @@
 #include "solver/CastingSolver.h"
 
 #include <algorithm>
+#include <chrono>
+#include <cmath>
 #include <filesystem>
 #include <limits>
+#include <new>
 #include <ostream>
+#include <sstream>
 
 #include "core/Error.h"
 #include "core/dictionary/Dictionary.h"
@@ -11,6 +15,24 @@
 #include "core/Gravity.h"
 
 namespace sphcast {
+
+namespace {
+
+// Runs `work` and adds its wall time to `total` (seconds).
+template <class Work>
+auto timed(double& total, Work&& work) {
+  const auto start = std::chrono::steady_clock::now();
+  struct AddOnExit {
+    double& total;
+    std::chrono::steady_clock::time_point start;
+    ~AddOnExit() {
+      total += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    }
+  } add{total, start};
+  return work();
+}
+
+}  // namespace
 
 CastingSolver::CastingSolver(const CaseFolder& caseFolder)
     : caseFolder_(caseFolder),
@@ -30,6 +52,7 @@ CastingSolver::CastingSolver(const CaseFolder& caseFolder)
     throw Error("time folder " + (caseFolder_.root() / time_.startTimeName()).string() +
                 " holds no cloud (.vtp) to run");
   }
+  health_ = HealthSettings::read(Dictionary::read(caseFolder_.systemFile("controlDict")));
   if (flowSetup_.enabled) {
     setUpFlow();
   } else {
@@ -104,7 +127,14 @@ void CastingSolver::setUpFlow() {
   const Eigen::IOFormat plain(Eigen::StreamPrecision, Eigen::DontAlignCols, " ", " ");
   info() << "    domain (" << domain_.lower.transpose().format(plain) << ") ("
          << domain_.upper.transpose().format(plain)
-         << "): a particle outside it, or not finite, stops the run\n";
+         << "): a particle outside it, or not finite, stops the run\n"
+         << "    health checks: density deviation warned above "
+         << 100 * health_.warnDensityDeviation << " %, stops above "
+         << 100 * health_.maxDensityDeviation << " %; a particle "
+         << health_.maxWallPenetration << " dx behind a wall surface, or a stable step below "
+         << health_.minDeltaTFraction << " of its running mean, stops the run\n"
+         << "    wall clearance " << settings.wallClearance
+         << " dx: fluid particles closer to a wall surface are moved back to it\n";
   // Everything else stays where it is: only the fluid moves.
 }
 
@@ -158,12 +188,42 @@ void CastingSolver::logStep(bool printBlock) {
   info() << "deltaT = " << time_.deltaT() << "  (" << time_.deltaTLimiter() << ")\n"
          << "Time = " << time_.timeName() << "\n\n";
   if (flow_) {
-    const auto [lowest, highest] = flow_->densityRange();
-    info() << "Density range " << lowest << " .. " << highest << " kg/m^3\n";
+    const FluidSummary summary = summarizeFluid(*fluid_);
+    const FlowSettings& settings = flowSetup_.settings;
+    const double spacing = fluid_->attributes().at("spacing");
+    const double courant =
+        (static_cast<double>(settings.soundSpeed) + summary.largestSpeed) * time_.deltaT() / spacing;
+    std::ostringstream line;
+    line.precision(6);
+    line << "Step " << time_.timeIndex() << "  Courant " << courant << "  max|U| "
+         << summary.largestSpeed << " m/s  Mach "
+         << summary.largestSpeed / static_cast<double>(settings.soundSpeed) << '\n'
+         << "Density range " << summary.lowestDensity << " .. " << summary.highestDensity
+         << " kg/m^3 (" << 100 * summary.lowestDeviation << " .. "
+         << 100 * summary.highestDeviation << " % of rho_s)  p " << summary.lowestPressure
+         << " .. " << summary.highestPressure << " Pa\n"
+         << "Mass " << summary.mass << " kg  kinetic energy " << summary.kineticEnergy
+         << " J  particles lost 0  moved back from walls "
+         << flow_->lastWallClearance().corrected << '\n';
+    info() << line.str();
   }
   info() << clock_.timesLine() << '\n'
          << clock_.progressLine(time_.progress(), stepsTaken_) << '\n'
          << std::endl;  // flushed: a killed run's log ends at its last step
+}
+
+void CastingSolver::logTimeSpent() {
+  std::ostringstream line;
+  line.precision(3);
+  line << "Time spent (wall, s):";
+  if (flow_) {
+    const FlowTimings& t = flow_->timings();
+    line << " neighbour search " << t.neighbourSearch << ", rates " << t.rates
+         << ", integration " << t.integration << ",";
+  }
+  line << " health checks " << checkSeconds_ << ", function objects " << functionSeconds_
+       << ", output " << outputSeconds_;
+  info() << line.str() << '\n' << "Run health: " << warnings_.summary() << '\n';
 }
 
 void CastingSolver::logRereadMessage() {
@@ -171,18 +231,101 @@ void CastingSolver::logRereadMessage() {
   if (!message.empty()) info() << message << "\n\n";
 }
 
-void CastingSolver::stopIfParticlesWentBad(const TimeState& before) {
-  const ParticleCheck check = checkParticles(*fluid_, domain_);
-  if (check.good()) return;
-  const std::string what = check.describe(*fluid_, domain_);
-  *fluid_ = *lastGoodFluid_;
+std::string CastingSolver::checkHealth() {
+  std::ostringstream problem;
+  problem.precision(4);
+  for (const ParticleCloud& cloud : clouds_) {
+    if (!cloud.hasVectorField("U")) continue;  // at rest: nothing to go bad
+    const CloudHealth health = measureCloudHealth(cloud, domain_);
+    if (!health.finiteAndInside()) {
+      problem << health.outside << " particle(s) of cloud '" << cloud.name()
+              << "' left the domain and " << health.nonFinite
+              << " went non-finite; the first, "
+              << describeParticle(cloud, health.firstBad, health.firstBadPosition);
+      return problem.str();
+    }
+    if (!health.hasDensity) continue;
+    const double deviation = health.largestDensityDeviation;
+    const std::string where =
+        describeParticle(cloud, health.mostDeviating, health.mostDeviatingPosition);
+    if (deviation > health_.maxDensityDeviation) {
+      problem << "the density of " << where << " deviates by " << 100 * deviation
+              << " % from rho_s (healthChecks maxDensityDeviation "
+              << 100 * health_.maxDensityDeviation << " %)";
+      return problem.str();
+    }
+    if (deviation > health_.warnDensityDeviation &&
+        warnings_.shouldPrint("density deviation above " +
+                                  std::to_string(std::lround(100 * health_.warnDensityDeviation)) +
+                                  " %",
+                              deviation)) {
+      std::ostringstream message;
+      message.precision(4);
+      message << "time " << time_.timeName() << " (step " << time_.timeIndex()
+              << "): the density of " << where << " deviates by " << 100 * deviation
+              << " % from rho_s; a larger soundSpeed (c >= 10 |U|max) keeps it smaller";
+      warning(message.str());
+    }
+  }
+  if (flow_) {
+    const WallClearanceReport& clearance = flow_->lastWallClearance();
+    const double spacing = fluid_->attributes().at("spacing");
+    const double depth = static_cast<double>(clearance.deepest) / spacing;
+    if (clearance.beyondSurface > 0) {
+      const std::string where =
+          describeParticle(*fluid_, clearance.deepestParticle, clearance.deepestPosition);
+      if (depth > health_.maxWallPenetration) {
+        problem << where << " was " << depth
+                << " dx behind a wall surface after the step (healthChecks maxWallPenetration "
+                << health_.maxWallPenetration << " dx): it went through the wall";
+        return problem.str();
+      }
+      if (warnings_.shouldPrint("fluid pushed back out of a wall", depth)) {
+        std::ostringstream message;
+        message.precision(4);
+        message << "time " << time_.timeName() << " (step " << time_.timeIndex() << "): "
+                << clearance.beyondSurface << " fluid particle(s) reached behind a wall surface"
+                << " and were moved back in front of it; the deepest, " << where << ", " << depth
+                << " dx behind";
+        warning(message.str());
+      }
+    }
+  }
+  return "";
+}
+
+std::string CastingSolver::checkStepCollapse(double stableDeltaT, const std::string& limiter) {
+  if (!time_.settings().adjustTimeStep) return "";
+  if (!(stableDeltaT > 0) || !std::isfinite(stableDeltaT)) {
+    return "the stable time step (" + limiter + ") is " + std::to_string(stableDeltaT);
+  }
+  if (meanStableDeltaT_ > 0 && stableDeltaT < health_.minDeltaTFraction * meanStableDeltaT_) {
+    std::ostringstream problem;
+    problem.precision(4);
+    problem << "the stable time step collapsed to " << stableDeltaT << " s (" << limiter
+            << "), below " << health_.minDeltaTFraction << " of its running mean "
+            << meanStableDeltaT_ << " s (healthChecks minDeltaTFraction)";
+    return problem.str();
+  }
+  // a mean over about the last 100 steps
+  meanStableDeltaT_ =
+      meanStableDeltaT_ > 0 ? 0.99 * meanStableDeltaT_ + 0.01 * stableDeltaT : stableDeltaT;
+  return "";
+}
+
+void CastingSolver::stopWithLastGoodState(const TimeState& good, bool restoreSaved,
+                                          const std::string& what) {
+  const std::string badTime = time_.timeName();
+  const long badIndex = time_.timeIndex();
+  if (restoreSaved && fluid_ && lastGoodFluid_) *fluid_ = *lastGoodFluid_;
   std::vector<const ParticleCloud*> written;
   for (const ParticleCloud& cloud : clouds_) written.push_back(&cloud);
-  writer_.write(before, written);
-  throw Error("at time " + time_.timeName() + " (step " + std::to_string(time_.timeIndex()) +
-              "): " + what + ". The last good state, time " + before.name +
-              ", is written; restart from it with a smaller maxCo or deltaT, or look for a "
-              "gap in the walls there.");
+  writer_.write(good, written);
+  logTimeSpent();
+  throw Error("at time " + badTime + " (step " + std::to_string(badIndex) + "): " + what +
+              ". The last good state, time " + good.name +
+              ", is written (it passed every check); restart from it with a smaller maxCo or "
+              "deltaT, a larger soundSpeed, or look for a gap in the walls there.");
 }
 
 void CastingSolver::run() {
@@ -192,21 +335,35 @@ void CastingSolver::run() {
     logRereadMessage();
     std::string limiter;
     const double stable = stableDeltaT(limiter);
+    if (const std::string collapse = checkStepCollapse(stable, limiter); !collapse.empty()) {
+      stopWithLastGoodState(time_.state(), false, collapse);  // this state passed every check
+    }
     time_.adjustDeltaT(stable, limiter);
     const TimeState before = time_.state();
     if (flow_) *lastGoodFluid_ = *fluid_;  // reuses its storage: no allocation per step
     time_.advance();
     ++stepsTaken_;
-    evolve(time_.deltaT());
-    if (flow_) stopIfParticlesWentBad(before);
+    // A step that throws (a far-flung particle the cell grid cannot place, memory exhausted)
+    // stops the run the same way as a failed check: with the last good state written.
+    std::string failure;
+    try {
+      evolve(time_.deltaT());
+    } catch (const std::bad_alloc&) {
+      failure = "the step ran out of memory";
+    } catch (const std::exception& error) {
+      failure = std::string("the step failed: ") + error.what();
+    }
+    if (failure.empty()) failure = timed(checkSeconds_, [&] { return checkHealth(); });
+    if (!failure.empty()) stopWithLastGoodState(before, true, failure);
     const bool printBlock = stepsTaken_ % time_.settings().logInterval == 0 || time_.writeTime();
     logStep(printBlock);
-    if (time_.writeTime()) writeResults();
-    functions_.execute(time_.state(), time_.writeTime());
+    if (time_.writeTime()) timed(outputSeconds_, [&] { writeResults(); });
+    timed(functionSeconds_, [&] { functions_.execute(time_.state(), time_.writeTime()); });
   }
   logRereadMessage();
   info() << "Stopping: " << time_.stopReason() << " at time " << time_.timeName() << '\n';
-  if (time_.finalWriteWanted()) writeResults();
+  if (time_.finalWriteWanted()) timed(outputSeconds_, [&] { writeResults(); });
+  logTimeSpent();
   info() << clock_.timesLine() << "\n\nEnd\n\n";
 }
 

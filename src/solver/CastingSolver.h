@@ -12,7 +12,7 @@
 #include "solver/BallisticMotion.h"
 #include "solver/CaseWriter.h"
 #include "solver/FlowSetup.h"
-#include "solver/ParticleCheck.h"
+#include "solver/RunHealth.h"
 #include "sph/WeaklyCompressibleFlow.h"
 
 namespace sphcast {
@@ -42,7 +42,17 @@ class CastingSolver {
   void writeResults();
   void logStep(bool printBlock);
   void logRereadMessage();
-  void stopIfParticlesWentBad(const TimeState& before);
+  void logTimeSpent();
+  // Why the run must stop after the step just taken, or "" when every check passed; warns in
+  // the log about what is bad but not yet fatal.
+  std::string checkHealth();
+  // Why the run must stop before the next step, from the models' stable step: "" when it is not
+  // far below its running mean.
+  std::string checkStepCollapse(double stableDeltaT, const std::string& limiter);
+  // Writes `good` (the last state that passed every check: the clouds as saved before the step)
+  // and stops the run with `what` went wrong.
+  [[noreturn]] void stopWithLastGoodState(const TimeState& good, bool restoreSaved,
+                                          const std::string& what);
 
   const CaseFolder& caseFolder_;
   // Repaired before the start time is chosen: a time folder set aside by a killed write must
@@ -58,6 +68,10 @@ class CastingSolver {
   ParticleCloud* fluid_ = nullptr;
   Domain domain_;
   std::unique_ptr<ParticleCloud> lastGoodFluid_;  // the fluid before the step being taken
+  HealthSettings health_;
+  HealthWarnings warnings_;
+  double meanStableDeltaT_ = 0;  // running mean of the models' stable step
+  double checkSeconds_ = 0, outputSeconds_ = 0, functionSeconds_ = 0;
   CaseWriter writer_;
   FunctionObjectList functions_;  // of controlDict's `functions`, run after every step
   RunClock clock_;

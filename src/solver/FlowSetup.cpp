@@ -64,7 +64,7 @@ FlowSetup readFlowSetup(const CaseFolder& caseFolder, const Vector& gravity) {
 
   const Dictionary schemes = Dictionary::read(caseFolder.systemFile("sphSchemes"));
   schemes.checkKeys({"densityScheme", "kernelCorrection", "viscousForm", "supportRadius",
-                     "soundSpeed", "deltaSPHCoeffs"});
+                     "soundSpeed", "deltaSPHCoeffs", "wallClearance"});
   FlowSettings& settings = setup.settings;
   settings.densityScheme = schemes.getChoice("densityScheme", {"riemann", "standard", "deltaSPH"});
   settings.kernelCorrection =
@@ -84,6 +84,13 @@ FlowSetup readFlowSetup(const CaseFolder& caseFolder, const Vector& gravity) {
             std::string("'") + key + "' must not be negative in " + coeffs.name());
       }
     }
+  }
+  // in spacings; 0 leaves the walls to their pressure alone (for studies, not for casting)
+  settings.wallClearance = schemes.getOrDefault<Real>("wallClearance", settings.wallClearance);
+  if (!(settings.wallClearance >= 0 && settings.wallClearance <= Real(0.5))) {
+    throw DictionaryError(schemes.location("wallClearance"),
+                          "'wallClearance' (in particle spacings) must lie in [0, 0.5] in " +
+                              schemes.name());
   }
   settings.gravity = gravity;
   settings.dimension = models.getOrDefault<int>("dimension", 3);

@@ -1,0 +1,179 @@
+#include "solver/RunHealth.h"
+
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+#include "core/Error.h"
+#include "core/dictionary/Dictionary.h"
+
+namespace sphcast {
+
+namespace {
+
+bool isBad(const Vector& x, const Vector& u, Real rho, const Domain& domain) {
+  return !x.allFinite() || !u.allFinite() || !std::isfinite(rho) ||
+         (x.array() < domain.lower.array()).any() || (x.array() > domain.upper.array()).any();
+}
+
+void requirePositive(const Dictionary& dict, const std::string& key, double value) {
+  if (!(value > 0) || !std::isfinite(value)) {
+    throw DictionaryError(dict.location(key), "'" + key + "' must be a positive number in " +
+                                                  dict.name());
+  }
+}
+
+}  // namespace
+
+HealthSettings HealthSettings::read(const Dictionary& controlDict) {
+  HealthSettings s;
+  if (!controlDict.found("healthChecks")) return s;
+  const Dictionary& dict = controlDict.subDict("healthChecks");
+  dict.checkKeys({"warnDensityDeviation", "maxDensityDeviation", "maxWallPenetration",
+                  "minDeltaTFraction"});
+  s.warnDensityDeviation = dict.getOrDefault<double>("warnDensityDeviation", s.warnDensityDeviation);
+  s.maxDensityDeviation = dict.getOrDefault<double>("maxDensityDeviation", s.maxDensityDeviation);
+  s.maxWallPenetration = dict.getOrDefault<double>("maxWallPenetration", s.maxWallPenetration);
+  s.minDeltaTFraction = dict.getOrDefault<double>("minDeltaTFraction", s.minDeltaTFraction);
+  for (const char* key : {"warnDensityDeviation", "maxDensityDeviation", "maxWallPenetration",
+                          "minDeltaTFraction"}) {
+    if (dict.found(key)) requirePositive(dict, key, dict.get<double>(key));
+  }
+  if (s.warnDensityDeviation >= s.maxDensityDeviation) {
+    throw DictionaryError(dict.location("warnDensityDeviation"),
+                          "'warnDensityDeviation' must be below 'maxDensityDeviation' (" +
+                              std::to_string(s.maxDensityDeviation) + ") in " + dict.name());
+  }
+  return s;
+}
+
+Domain defaultDomain(const std::vector<const ParticleCloud*>& clouds) {
+  Domain box{Vector::Constant(std::numeric_limits<Real>::max()),
+             Vector::Constant(std::numeric_limits<Real>::lowest())};
+  for (const ParticleCloud* cloud : clouds) {
+    for (const Vector& x : cloud->positions()) {
+      box.lower = box.lower.cwiseMin(x);
+      box.upper = box.upper.cwiseMax(x);
+    }
+  }
+  const Vector margin = Real(0.5) * (box.upper - box.lower);
+  box.lower -= margin;
+  box.upper += margin;
+  return box;
+}
+
+CloudHealth measureCloudHealth(const ParticleCloud& cloud, const Domain& domain) {
+  const auto& x = cloud.positions();
+  const auto& u = cloud.vectorField("U");
+  CloudHealth health;
+  health.firstBad = x.size();
+  health.hasDensity = cloud.hasScalarField("rho") && cloud.hasScalarField("restDensity");
+  static const std::vector<Real> none;
+  const auto& rho = health.hasDensity ? cloud.scalarField("rho") : none;
+  const auto& restDensity = health.hasDensity ? cloud.scalarField("restDensity") : none;
+  const Real noDensity = 1;  // a cloud without density: only position and velocity are checked
+  // Counted in one pass (max and sums: the same on any number of threads); the particles named
+  // in messages are found again only when needed.
+  std::size_t nonFinite = 0;
+  std::size_t outside = 0;
+  double deviation = 0;
+#pragma omp parallel for reduction(+ : nonFinite, outside) reduction(max : deviation)
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    const Real density = health.hasDensity ? rho[i] : noDensity;
+    if (!x[i].allFinite() || !u[i].allFinite() || !std::isfinite(density)) {
+      ++nonFinite;
+    } else if ((x[i].array() < domain.lower.array()).any() ||
+               (x[i].array() > domain.upper.array()).any()) {
+      ++outside;
+    } else if (health.hasDensity) {
+      deviation = std::max(deviation, std::abs(static_cast<double>(rho[i] / restDensity[i]) - 1.0));
+    }
+  }
+  health.nonFinite = nonFinite;
+  health.outside = outside;
+  health.largestDensityDeviation = deviation;
+  if (!health.finiteAndInside()) {
+    for (std::size_t i = 0; i < x.size(); ++i) {
+      if (isBad(x[i], u[i], health.hasDensity ? rho[i] : noDensity, domain)) {
+        health.firstBad = i;
+        health.firstBadPosition = x[i];
+        break;
+      }
+    }
+  }
+  if (health.hasDensity && deviation > 0) {
+    for (std::size_t i = 0; i < x.size(); ++i) {
+      if (std::abs(static_cast<double>(rho[i] / restDensity[i]) - 1.0) == deviation) {
+        health.mostDeviating = i;
+        health.mostDeviatingPosition = x[i];
+        break;
+      }
+    }
+  }
+  return health;
+}
+
+std::string describeParticle(const ParticleCloud& cloud, std::size_t index, const Vector& x) {
+  const Eigen::IOFormat plain(Eigen::StreamPrecision, Eigen::DontAlignCols, " ", " ");
+  std::ostringstream text;
+  text.precision(6);
+  text << "particle " << index;
+  if (cloud.hasIdField("id") && index < cloud.size()) text << " (id " << cloud.idField("id")[index] << ")";
+  text << " of cloud '" << cloud.name() << "' at (" << x.transpose().format(plain) << ")";
+  return text.str();
+}
+
+bool HealthWarnings::shouldPrint(const std::string& kind, double severity) {
+  Kind& k = kinds_[kind];
+  ++k.count;
+  if (k.count == 1 || severity >= 1.5 * k.printedSeverity) {
+    k.printedSeverity = severity;
+    return true;
+  }
+  return false;
+}
+
+std::string HealthWarnings::summary() const {
+  if (kinds_.empty()) return "no warnings";
+  std::ostringstream text;
+  text << "warnings:";
+  const char* separator = " ";
+  for (const auto& [kind, k] : kinds_) {
+    text << separator << k.count << " step(s) with " << kind;
+    separator = ", ";
+  }
+  return text.str();
+}
+
+}  // namespace sphcast
+
+namespace sphcast {
+
+FluidSummary summarizeFluid(const ParticleCloud& fluid) {
+  FluidSummary s;
+  const auto& u = fluid.vectorField("U");
+  const auto& rho = fluid.scalarField("rho");
+  const auto& restDensity = fluid.scalarField("restDensity");
+  const auto& p = fluid.scalarField("p");
+  const auto& mass = fluid.scalarField("mass");
+  if (u.empty()) return s;
+  s.lowestDeviation = s.highestDeviation = static_cast<double>(rho[0] / restDensity[0]) - 1.0;
+  s.lowestPressure = s.highestPressure = static_cast<double>(p[0]);
+  s.lowestDensity = s.highestDensity = static_cast<double>(rho[0]);
+  for (std::size_t i = 0; i < u.size(); ++i) {
+    const double speedSquared = static_cast<double>(u[i].squaredNorm());
+    const double deviation = static_cast<double>(rho[i] / restDensity[i]) - 1.0;
+    s.largestSpeed = std::max(s.largestSpeed, std::sqrt(speedSquared));
+    s.lowestDensity = std::min(s.lowestDensity, static_cast<double>(rho[i]));
+    s.highestDensity = std::max(s.highestDensity, static_cast<double>(rho[i]));
+    s.lowestDeviation = std::min(s.lowestDeviation, deviation);
+    s.highestDeviation = std::max(s.highestDeviation, deviation);
+    s.lowestPressure = std::min(s.lowestPressure, static_cast<double>(p[i]));
+    s.highestPressure = std::max(s.highestPressure, static_cast<double>(p[i]));
+    s.mass += static_cast<double>(mass[i]);
+    s.kineticEnergy += 0.5 * static_cast<double>(mass[i]) * speedSquared;
+  }
+  return s;
+}
+
+}  // namespace sphcast

@@ -1,0 +1,100 @@
+#pragma once
+
+#include <cstddef>
+#include <limits>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "core/Real.h"
+#include "particles/ParticleCloud.h"
+
+namespace sphcast {
+
+class Dictionary;
+
+// The box a run's particles must stay in: a particle outside it has left the mold (through a
+// wall, or splashed away), and one that is not finite has blown up. Either stops the run.
+struct Domain {
+  // everywhere, until a flow sets it (a ballistic cloud may fly anywhere)
+  Vector lower = Vector::Constant(std::numeric_limits<Real>::lowest());
+  Vector upper = Vector::Constant(std::numeric_limits<Real>::max());
+};
+
+// The bounding box of the clouds (the walls; the fluid in a run without walls) grown by half its
+// size on every side: generous for splashes over an open top, and a particle through a wall is
+// caught before it falls far.
+Domain defaultDomain(const std::vector<const ParticleCloud*>& clouds);
+
+// The thresholds of the run's health checks: system/controlDict's optional `healthChecks`
+// sub-dictionary, every entry optional.
+struct HealthSettings {
+  // |rho / rho_s - 1| above this is written to the log as a warning (the weakly compressible
+  // error is about the Mach number squared, or v/c at an impact: 3 % says c is too small).
+  double warnDensityDeviation = 0.03;
+  // ... and above this the run stops: no flow with 20 % compression is still the liquid's.
+  double maxDensityDeviation = 0.2;
+  // A fluid particle found this many spacings behind a wall surface after a step has tunnelled
+  // through the wall (the wall clearance pushes back anything less): the run stops.
+  double maxWallPenetration = 0.5;
+  // The models' stable step below this fraction of its running mean (over ~100 steps) means the
+  // run is blowing up: it stops.
+  double minDeltaTFraction = 1e-3;
+
+  static HealthSettings read(const Dictionary& controlDict);
+};
+
+// One moving cloud's state after a step, measured in one pass.
+struct CloudHealth {
+  std::size_t nonFinite = 0;  // position, velocity or density not finite
+  std::size_t outside = 0;    // finite but outside the domain
+  std::size_t firstBad = 0;   // index of the first of either
+  Vector firstBadPosition = Vector::Zero();
+  bool hasDensity = false;    // the cloud has rho and restDensity
+  double largestDensityDeviation = 0;  // max |rho / rho_s - 1|, fraction
+  std::size_t mostDeviating = 0;
+  Vector mostDeviatingPosition = Vector::Zero();
+
+  bool finiteAndInside() const { return nonFinite == 0 && outside == 0; }
+};
+
+CloudHealth measureCloudHealth(const ParticleCloud& cloud, const Domain& domain);
+
+// The particle's place in a message: "particle 12 (id 345) at (0.2 0.05 0.01)".
+std::string describeParticle(const ParticleCloud& cloud, std::size_t index, const Vector& x);
+
+// Keeps the count of each kind of warning and decides which to print: the first of a kind, then
+// only when it is half as bad again as the last one printed, so a long run's log stays readable.
+class HealthWarnings {
+ public:
+  // Whether a warning of `kind` with this `severity` should be printed now; counts it either way.
+  bool shouldPrint(const std::string& kind, double severity);
+  // "warnings: 3 density deviation, 12 wall contact" or "no warnings".
+  std::string summary() const;
+
+ private:
+  struct Kind {
+    long count = 0;
+    double printedSeverity = 0;
+  };
+  std::map<std::string, Kind> kinds_;
+};
+
+}  // namespace sphcast
+
+namespace sphcast {
+
+// What the log prints of a fluid cloud at a printed step: sums in particle order (the same on
+// any number of threads).
+struct FluidSummary {
+  double largestSpeed = 0;                        // m/s
+  double lowestDensity = 0, highestDensity = 0;   // kg/m^3
+  double lowestDeviation = 0, highestDeviation = 0;  // rho / rho_s - 1
+  double lowestPressure = 0, highestPressure = 0;    // Pa
+  double mass = 0;                                // kg
+  double kineticEnergy = 0;                       // J
+};
+
+FluidSummary summarizeFluid(const ParticleCloud& fluid);
+
+}  // namespace sphcast
