@@ -1,9 +1,12 @@
 #include "core/CommandLine.h"
 
+#include <cstdlib>
 #include <exception>
 #include <iostream>
+#include <new>
 
 #include "core/Error.h"
+#include "core/OpenMPWaitPolicy.h"
 
 namespace po = boost::program_options;
 
@@ -41,6 +44,27 @@ std::filesystem::path CommandLine::casePath() const { return values_["case"].as<
 
 int runApplication(const std::string& application, int (*body)(int, const char* const[]),
                    int argc, const char* const argv[]) {
+  adoptPassiveWaitPolicy(const_cast<char**>(argv));  // execv takes, and keeps, the same strings
+  // An exception cannot leave an OpenMP loop (a bad_alloc in one terminates the program): say
+  // what it was before the program aborts.
+  static std::string name;
+  name = application;
+  std::set_terminate([] {
+    std::cout.flush();
+    std::cerr << "\n--> sphCast FATAL ERROR in " << name << ": ";
+    try {
+      if (std::current_exception()) std::rethrow_exception(std::current_exception());
+      std::cerr << "terminated without an exception";
+    } catch (const std::bad_alloc&) {
+      std::cerr << "out of memory (inside a parallel loop); a smaller case or more memory";
+    } catch (const std::exception& error) {
+      std::cerr << error.what() << " (inside a parallel loop)";
+    } catch (...) {
+      std::cerr << "unknown exception (inside a parallel loop)";
+    }
+    std::cerr << "\n\nExiting with status 134 (abort)" << std::endl;
+    std::abort();
+  });
   try {
     return body(argc, argv);
   } catch (const Error& error) {

@@ -8,6 +8,7 @@
 #include <iostream>
 #include <sstream>
 
+#include "core/OpenMPWaitPolicy.h"
 #include "core/Real.h"
 
 #ifdef _OPENMP
@@ -43,7 +44,8 @@ void printBanner(const std::string& application, const std::string& caseRoot) {
          << "Host     : " << host << '\n'
          << "PID      : " << getpid() << '\n'
          << "Case     : " << caseRoot << '\n'
-         << "nThreads : " << threads << " (OpenMP)\n\n";
+         << "nThreads : " << threads << " (OpenMP, wait policy " << openMPWaitPolicy()
+         << ")\n\n";
 }
 
 namespace {
