@@ -7,7 +7,7 @@ namespace sphcast {
 
 // Files a run writes (time folders, the .pvd index) are replaced atomically: a reader, or a run
 // killed at any moment, sees either the old complete file or the new complete file, never a half
-// one (DESIGN.md §2). The content goes to "<file>.tmp", is flushed to disk, and is renamed over
+// one (doc/design.md §2). The content goes to "<file>.tmp", is flushed to disk and is renamed over
 // the file. Every failure throws an Error naming the file and the system's reason.
 
 // Writes content to file through "<file>.tmp", fsync and rename.

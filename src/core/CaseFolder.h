@@ -21,7 +21,7 @@ struct TimeFolder {
 // "0.1:" or a mix of these, comma-separated. Throws an Error for a malformed list.
 std::vector<TimeFolder> selectTimes(const std::vector<TimeFolder>& times, const std::string& list);
 
-// The case folder contract of DESIGN.md §2: system/, constant/, one folder per written time.
+// The case folder contract of doc/design.md §2: system/, constant/, one folder per written time.
 class CaseFolder {
  public:
   // Throws an Error when the folder or its system/ is missing.
@@ -46,7 +46,7 @@ class CaseFolder {
   // are removed. Returns the names it repaired or removed, for the log.
   std::vector<std::string> recoverInterruptedWrites() const;
 
-  // Names used while a time folder is written (DESIGN.md §2: write, then rename).
+  // Names used while a time folder is written (doc/design.md §2: write, then rename).
   std::filesystem::path writingFolder(const std::string& timeFolderName) const;
   std::filesystem::path replacedFolder(const std::string& timeFolderName) const;
   std::filesystem::path purgedFolder(const std::string& timeFolderName) const;

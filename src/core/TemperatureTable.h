@@ -8,7 +8,7 @@
 
 namespace sphcast {
 
-// A material property as a function of temperature (DESIGN.md §4: rho_s(T), mu(T), ...), read
+// A material property as a function of temperature (doc/physics.md §4: rho_s(T), mu(T), ...), read
 // from one entry of constant/physicalProperties, either a constant or a table of (T value) rows:
 //
 //   density  [1 -3 0 0 0 0 0] 2400;

@@ -6,7 +6,7 @@
 
 namespace sphcast {
 
-// Initial density of a filled melt, for the linear equation of state of DESIGN.md §4,
+// Initial density of a filled melt, for the linear equation of state of doc/physics.md §4,
 // eq. (3): p = c^2 (rho - rho_s(T)).
 //
 // Hydrostatic start: the pressure that holds the column up, p = rho_s |g| d at depth d below

@@ -8,7 +8,7 @@
 namespace sphcast {
 
 // A particle cloud as a VTK XML PolyData file (.vtp), the restart and ParaView format of a time
-// folder (DESIGN.md §2). One vertex cell per particle; every field in full precision (Real as
+// folder (doc/design.md §2). One vertex cell per particle; every field in full precision (Real as
 // Float64, or Float32 in a single-precision build; ids as Int64): scalar fields as 1-component
 // point data, vector fields as 3-component point data, id fields as Int64 point data; cloud
 // attributes as field data of one Float64 value each. Appended raw binary data, zlib-compressed,

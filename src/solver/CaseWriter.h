@@ -11,7 +11,7 @@
 
 namespace sphcast {
 
-// Writes time folders the way DESIGN.md §2 asks: every cloud and uniform/time into a hidden
+// Writes time folders the way doc/design.md §2 asks: every cloud and uniform/time into a hidden
 // folder first, then one rename, so a run killed at any moment leaves only complete folders;
 // then the oldest written times beyond purgeWrite are removed and <case>.pvd is rewritten.
 class CaseWriter {

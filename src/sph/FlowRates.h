@@ -44,7 +44,7 @@ struct FlowConstants {
 // continuous where mu jumps by decades across the solidification front (Cleary 1998).
 // Two forms, selectable in system/sphSchemes:
 //
-// Cleary (Monaghan-Cleary; paper eq. (4), DESIGN.md §4): a central pair force, so angular
+// Cleary (Monaghan-Cleary; paper eq. (4), doc/physics.md §5): a central pair force, so angular
 // momentum is conserved,
 //   2 (d + 2) m_j mu_ij / (rho_i rho_j) (v_ij . x_ij) / (|x_ij|^2 + eta^2) grad_i W_ij,
 // whose factor 2 (d + 2) makes the pair sum nu Laplacian(v) for divergence-free flow in the

@@ -50,7 +50,7 @@ struct FlowStepLimits {
 };
 
 // Weakly compressible SPH for one fluid cloud among static wall clouds (paper eqs. (1)-(4),
-// DESIGN.md §4): continuity and momentum with the interface pressure and velocity of a Riemann
+// doc/physics.md): continuity and momentum with the interface pressure and velocity of a Riemann
 // solver (or plain means: densityScheme standard; plain means with the density diffusion and
 // artificial viscosity of Antuono et al. 2010: deltaSPH), optionally with the normalised kernel
 // gradient (KernelCorrection.h), the viscous term with dynamic viscosity, and gravity;

@@ -19,7 +19,7 @@ namespace dictionary {
 class Parser;
 }
 
-// An OpenFOAM dictionary read from a case file (DESIGN.md §2): `key value;` entries,
+// An OpenFOAM dictionary read from a case file (doc/design.md §2): `key value;` entries,
 // sub-dictionaries `{ }`, lists, optional dimension sets, comments, #include and $macros, all
 // resolved while reading. Values are converted when a reader asks for a type, so that every
 // mistake is reported against the key and the file, line and column where it was written.

@@ -62,7 +62,7 @@ TEST(FlowSetup, DefaultsAre3DWithoutCorrectionOrPeriodicAxes) {
   EXPECT_FALSE(setup.settings.periodic.anyPeriodic());
 }
 
-// rho_s as a table in T (the material tables of DESIGN.md §4): each particle starts with
+// rho_s as a table in T (the material tables of doc/physics.md §4): each particle starts with
 // restDensity and rho at its own temperature; a cloud without T cannot use a table.
 TEST(FlowSetup, RestDensityFromATemperatureTable) {
   const FlowCase flowCase("", "densityScheme riemann;\n",

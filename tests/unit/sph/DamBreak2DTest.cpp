@@ -1,6 +1,6 @@
 // The 2D dam break against Martin & Moyce (1952): a water column of width a and height 2a
 // collapses onto a dry floor; the surge front Z = x / a against T = t sqrt(2 g / a)
-// (validation.md; data in tests/unit/data/damBreak with its citation). The dimensionless time
+// (doc/validation.md §1.4; cited data in tests/unit/data/damBreak). The dimensionless time
 // is the one of Martin & Moyce's Fig. 3 (and of the PySPH digitisation): with it the shallow
 // water front speed 2 sqrt(g 2a) is dZ/dT = 2, and the measured slope between T = 2 and 4 is
 // 1.7.

@@ -1,4 +1,4 @@
-// A 2D water column at rest in a tank (validation.md: p = rho g (H - z), the fluid stays at rest).
+// A 2D water column in a tank (doc/validation.md §1.2: p = rho g (H - z), fluid stays at rest).
 // Coarse CI version: 20 x 20 particles, t sqrt(g/H) = 20; the long run (>= 100) is a tutorial.
 #include <gtest/gtest.h>
 
