@@ -13,58 +13,6 @@ here=$(cd "$(dirname "$0")" && pwd)
 python=python3
 python3 -c 'import vtk' 2>/dev/null || python=/usr/bin/python3
 
-# makeMoldCase DIR GEO REGIONS U SOUNDSPEED ENDTIME: a case whose mold is the Physical Surface
-# "moldWall" of the .geo text GEO, filled with REGIONS (setCastFieldsDict syntax) moving at U.
-makeMoldCase() {
-    local dir=$1 geo=$2 regions=$3 velocity=$4 soundSpeed=$5 endTime=$6
-    mkdir -p "$dir/system" "$dir/constant/geometry"
-    echo "$geo" > "$dir/constant/geometry/mold.geo"
-    cat > "$dir/system/particleizeMoldDict" <<DICT
-FoamFile { version 2.0; format ascii; class dictionary; object particleizeMoldDict; }
-geometry        ("mold.geo");
-spacing         0.004;
-supportRadius   0.01;
-patches { moldWall { cloud mold; type fixedWall; mode shell; } }
-DICT
-    cat > "$dir/system/setCastFieldsDict" <<DICT
-FoamFile { version 2.0; format ascii; class dictionary; object setCastFieldsDict; }
-spacing         0.004;
-clouds { metal { regions { $regions } fields { U $velocity; } } }
-DICT
-    cat > "$dir/system/sphSchemes" <<DICT
-FoamFile { version 2.0; format ascii; class dictionary; object sphSchemes; }
-densityScheme   riemann;
-viscousForm     Morris;
-supportRadius   0.01;
-soundSpeed      $soundSpeed;
-DICT
-    cat > "$dir/system/controlDict" <<DICT
-FoamFile { version 2.0; format ascii; class dictionary; object controlDict; }
-application     sphCastFoam;
-startFrom       latestTime;
-stopAt          endTime;
-endTime         $endTime;
-deltaT          1e-5;
-adjustTimeStep  yes;
-writeControl    adjustableRunTime;
-writeInterval   0.02;
-logInterval     1000;
-DICT
-    cat > "$dir/constant/physicsModels" <<DICT
-FoamFile { version 2.0; format ascii; class dictionary; object physicsModels; }
-flow { model weaklyCompressible; fluid metal; walls (mold); }
-DICT
-    cat > "$dir/constant/physicalProperties" <<DICT
-FoamFile { version 2.0; format ascii; class dictionary; object physicalProperties; }
-metal { density 2400; viscosity 1.28e-3; }
-DICT
-    cat > "$dir/constant/g" <<DICT
-FoamFile { version 2.0; format ascii; class uniformDimensionedVectorField; object g; }
-dimensions [0 1 -2 0 0 0 0];
-value (0 0 -9.81);
-DICT
-}
-
 # runMoldCase NAME SHAPE PARAMETERS... --max-deviation F: runs the tools, then the check.
 runMoldCase() {
     local name=$1; shift
