@@ -218,7 +218,8 @@ void CastingSolver::logTimeSpent() {
   line << "Time spent (wall, s):";
   if (flow_) {
     const FlowTimings& t = flow_->timings();
-    line << " neighbour search " << t.neighbourSearch << ", rates " << t.rates
+    line << " neighbour search " << t.neighbourSearch << ", wall clearance " << t.wallClearance
+         << ", rates " << t.rates
          << ", integration " << t.integration << ",";
   }
   line << " health checks " << checkSeconds_ << ", function objects " << functionSeconds_

@@ -35,7 +35,8 @@ struct FlowSettings {
 
 // Wall time spent in each part of the flow's steps, seconds since construction.
 struct FlowTimings {
-  double neighbourSearch = 0;  // grids, reorder, pair lists, wall clearance
+  double neighbourSearch = 0;  // grids, reorder, pair lists
+  double wallClearance = 0;    // keepClearOfWalls
   double rates = 0;            // wall pressure, correction, the pair loops
   double integration = 0;      // kicks and drifts
 };
