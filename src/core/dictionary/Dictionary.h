@@ -59,8 +59,8 @@ class Dictionary {
   template <class T>
   T getOrDefault(std::string_view key, const T& fallback) const;
 
-  // A word out of `choices`, OpenFOAM style:
-  // "unknown stopAt 'foo'; valid stopAt are: (endTime writeNow noWriteNow)".
+  // A word out of `choices`, OpenFOAM style, suggesting the nearest one:
+  // "unknown stopAt 'wirteNow'; did you mean 'writeNow'? valid stopAt are: (endTime ...)".
   std::string getChoice(std::string_view key, const std::vector<std::string>& choices) const;
   std::string getChoiceOrDefault(std::string_view key, const std::vector<std::string>& choices,
                                  const std::string& fallback) const;
@@ -125,5 +125,10 @@ template <class T>
 T Dictionary::getOrDefault(std::string_view key, const T& fallback) const {
   return found(key) ? get<T>(key) : fallback;
 }
+
+// The word of validWords that `misspelt` most likely meant, for "did you mean" in messages:
+// within a third of its length (at least one edit; a swap of two neighbouring letters is one),
+// the first of equally near ones; empty if none is that near.
+std::string nearestWord(std::string_view misspelt, const std::vector<std::string>& validWords);
 
 }  // namespace sphcast

@@ -439,6 +439,24 @@ TEST(DictionaryError, MisspelledKeySuggestsTheNearestValidKey) {
             "valid keys are: (startTime endTime deltaT)");
 }
 
+TEST(DictionaryError, SwappedLettersCountAsOneEditInTheSuggestion) {
+  const Dictionary dict = parse("flow\n{\n    modle weaklyCompressible;\n}\n");
+  EXPECT_EQ(errorOf([&] {
+              dict.subDict("flow").checkKeys({"model", "fluid", "walls"});
+            }),
+            "controlDict:3:5: unknown key 'modle' in controlDict/flow; did you mean 'model'? "
+            "valid keys are: (model fluid walls)");
+}
+
+TEST(DictionaryError, UnknownChoiceSuggestsTheNearestValidOne) {
+  const Dictionary dict = parse("stopAt wirteNow;");
+  EXPECT_EQ(errorOf([&] {
+              dict.getChoice("stopAt", {"endTime", "writeNow", "noWriteNow"});
+            }),
+            "controlDict:1:8: unknown stopAt 'wirteNow'; did you mean 'writeNow'? valid stopAt "
+            "are: (endTime writeNow noWriteNow)");
+}
+
 TEST(DictionaryError, UnknownKeyWithNothingNearListsTheValidKeys) {
   const Dictionary dict = parse("functions { banana 1; }");
   EXPECT_EQ(errorOf([&] {
