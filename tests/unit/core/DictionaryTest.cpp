@@ -624,8 +624,16 @@ TEST(DictionaryError, BadOrOutOfRangeNumber) {
   EXPECT_EQ(parseError("a 1.2.3;"), "controlDict:1:3: bad number '1.2.3'");
   EXPECT_EQ(parseError("a 0x1F;"), "controlDict:1:3: bad number '0x1F'");
   EXPECT_EQ(parseError("a 12abc;"), "controlDict:1:3: bad number '12abc'");
-  EXPECT_EQ(parseError("a 1e999;"), "controlDict:1:3: number out of range: 1e999");
-  EXPECT_EQ(parseError("a -1e999;"), "controlDict:1:3: number out of range: -1e999");
+}
+
+TEST(DictionaryError, NumberBeyondTheLargestDoubleNamesItsKey) {
+  const std::string beyond = " is out of range: its magnitude exceeds the largest double, 1.8e308";
+  EXPECT_EQ(parseError("a 1e999;"), "controlDict:1:3: number 1e999 for 'a'" + beyond);
+  EXPECT_EQ(parseError("b 1;\ng (0 0 -1e999);"), "controlDict:2:8: number -1e999 for 'g'" + beyond);
+  EXPECT_EQ(parseError("nu [0 2e999 -1 0 0 0 0] 1;"),
+            "controlDict:1:7: number 2e999 for 'nu'" + beyond);
+  EXPECT_EQ(parseError("sub { deep { x 1e400; } }"),
+            "controlDict:1:16: number 1e400 for 'x'" + beyond);
 }
 
 TEST(DictionaryError, UnsupportedDirectives) {
