@@ -40,6 +40,9 @@ class Dictionary {
   const SourceLocation& location() const { return location_; }
 
   // Keys in file order (an overridden key keeps its first place); the FoamFile header excluded.
+  // A key may be given again to override an entry of an #include file or of a $macro merge
+  // (`$defaults`); a value given twice in one file and scope is an error naming both lines. A
+  // sub-dictionary given twice is merged, its entries by the same rule.
   std::vector<std::string> keys() const;
   bool found(std::string_view key) const;
   bool isDict(std::string_view key) const;
@@ -82,6 +85,7 @@ class Dictionary {
   struct Entry {
     std::string key;
     SourceLocation where;  // of the key
+    bool copied = false;   // brought in by a $macro merge, not written here
     std::vector<dictionary::ValueItem> value;
     SourceLocation valueEnd;              // just after the value, for "found nothing"
     std::shared_ptr<Dictionary> subDict;  // set for a sub-dictionary, which has no value

@@ -472,6 +472,7 @@ std::shared_ptr<Dictionary> Parser::cloneDictionary(const Dictionary& source,
     Entry cloned;
     cloned.key = entry.key;
     cloned.where = entry.where;
+    cloned.copied = true;
     cloned.valueEnd = entry.valueEnd;
     if (entry.subDict) {
       checkNesting(depth + 1, macro);
@@ -490,11 +491,25 @@ void Parser::insertEntry(Dictionary& scope, Entry entry) {
   Entry* existing = scope.findEntry(entry.key);
   if (!existing) {
     scope.appendEntry(std::move(entry));
-  } else if (existing->subDict && entry.subDict) {
-    for (Entry& child : entry.subDict->entries_) insertEntry(*existing->subDict, std::move(child));
-  } else {
-    *existing = std::move(entry);
+    return;
   }
+  if (existing->subDict && entry.subDict) {
+    for (Entry& child : entry.subDict->entries_) insertEntry(*existing->subDict, std::move(child));
+    return;
+  }
+  // The same place read twice is one file included twice, not a key typed twice.
+  const bool samePlace =
+      existing->where.line == entry.where.line && existing->where.column == entry.where.column;
+  if (!existing->copied && !entry.copied && existing->where.file == entry.where.file &&
+      !samePlace) {
+    throw DictionaryError(entry.where, "duplicate key " + inQuotes(entry.key) + " in " +
+                                           scope.name_ + ": given at lines " +
+                                           std::to_string(existing->where.line) + " and " +
+                                           std::to_string(entry.where.line) +
+                                           "; remove one (a key may override only an entry of "
+                                           "an #include file or of a $macro merge)");
+  }
+  *existing = std::move(entry);
 }
 
 }  // namespace sphcast::dictionary
