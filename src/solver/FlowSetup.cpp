@@ -46,6 +46,28 @@ void readPeriodicAxes(const Dictionary& periodic, FlowSettings& settings) {
   }
 }
 
+// The material that `key` of `models` names must be a sub-dictionary of physicalProperties,
+// which may hold other materials too (setCastFields' clouds may use them). The error is where
+// the name is written: "constant/physicsModels:3:5: 'fluid' names the material 'steel', which
+// is not in constant/physicalProperties; materials there: (water)".
+void requireMaterial(const Dictionary& properties, const Dictionary& models,
+                     const std::string& key) {
+  const auto name = models.get<std::string>(key);
+  if (properties.isDict(name)) return;
+  std::vector<std::string> materials;
+  for (const std::string& candidate : properties.keys()) {
+    if (properties.isDict(candidate)) materials.push_back(candidate);
+  }
+  std::string listed;
+  for (const std::string& material : materials) listed += (listed.empty() ? "" : " ") + material;
+  const std::string nearest = nearestWord(name, materials);
+  throw DictionaryError(models.location(key),
+                        "'" + key + "' names the material '" + name + "', which is not in " +
+                            properties.location().file +
+                            (nearest.empty() ? "" : "; did you mean '" + nearest + "'?") +
+                            (nearest.empty() ? "; " : " ") + "materials there: (" + listed + ")");
+}
+
 }  // namespace
 
 FlowSetup readFlowSetup(const CaseFolder& caseFolder, const Vector& gravity) {
@@ -98,7 +120,7 @@ FlowSetup readFlowSetup(const CaseFolder& caseFolder, const Vector& gravity) {
   if (models.found("periodic")) readPeriodicAxes(models.subDict("periodic"), settings);
 
   const Dictionary properties = Dictionary::read(caseFolder.constantFile("physicalProperties"));
-  properties.checkKeys({setup.fluidCloud});
+  requireMaterial(properties, flow, "fluid");
   const Dictionary& material = properties.subDict(setup.fluidCloud);
   material.checkKeys({"density", "viscosity"});
   setup.restDensity = TemperatureTable::read(material, "density", density);

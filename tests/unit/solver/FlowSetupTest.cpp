@@ -122,5 +122,34 @@ TEST(FlowSetup, BadKeysAreErrorsAtTheirLine) {
               "sphSchemes:3", "'delta' must not be negative");
 }
 
+// `fluid water;` in constant/physicsModels without a material water in
+// constant/physicalProperties: the error is at the 'fluid' entry, names the file that lacks the
+// material and lists the materials it has.
+TEST(FlowSetup, FluidMaterialMissingFromPhysicalPropertiesIsReportedWhereItIsNamed) {
+  const FlowCase flowCase("", "densityScheme riemann;\n");
+  flowCase.write("constant/physicalProperties",
+                 std::string(header) + "steel { density 7000; viscosity 5e-3; }\n");
+  const std::string message = errorOf(flowCase);
+  EXPECT_EQ(message, (flowCase.root() / "constant/physicsModels").string() +
+                         ":2:34: 'fluid' names the material 'water', which is not in " +
+                         (flowCase.root() / "constant/physicalProperties").string() +
+                         "; materials there: (steel)");
+
+  flowCase.write("constant/physicalProperties", std::string(header) +
+                                                    "steel { density 7000; viscosity 5e-3; }\n" +
+                                                    "watr { density 1000; viscosity 1e-3; }\n");
+  EXPECT_NE(errorOf(flowCase).find("; did you mean 'watr'? materials there: (steel watr)"),
+            std::string::npos)
+      << errorOf(flowCase);
+}
+
+TEST(FlowSetup, PhysicalPropertiesMayHoldOtherMaterialsThanTheFluid) {
+  const FlowCase flowCase("", "densityScheme riemann;\n");
+  flowCase.write("constant/physicalProperties", std::string(header) +
+                                                    "steel { density 7000; viscosity 5e-3; }\n" +
+                                                    "water { density 1000; viscosity 1e-3; }\n");
+  EXPECT_EQ(errorOf(flowCase), "");
+}
+
 }  // namespace
 }  // namespace sphcast
