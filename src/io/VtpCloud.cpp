@@ -20,10 +20,12 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <cstdint>
 #include <exception>
 #include <fstream>
 #include <numeric>
+#include <sstream>
 #include <system_error>
 #include <type_traits>
 
@@ -309,6 +311,23 @@ void copyIds(vtkDataArray& array, const std::string& name, std::int64_t* out,
               "; id fields are Int64 or Int32");
 }
 
+// The first NaN or infinity, named with its particle: it would surface far from here (in the
+// neighbour grid, as a negative density) without a file to look at.
+void checkValues(const Real* values, std::size_t valueCount, int components,
+                 const std::string& fieldName, const ParticleCloud& cloud) {
+  const Real* end = values + valueCount;
+  const Real* bad = std::find_if(values, end, [](Real value) { return !std::isfinite(value); });
+  if (bad == end) return;
+  const std::size_t particle =
+      static_cast<std::size_t>(bad - values) / static_cast<std::size_t>(components);
+  std::ostringstream message;
+  message << "cloud '" << cloud.name()
+          << "': " << (fieldName.empty() ? "the position" : "field '" + fieldName + "'")
+          << " of particle " << particle << " is " << *bad
+          << "; particle positions and fields must be finite";
+  throw Error(message.str());
+}
+
 bool isFloatingPoint(const vtkDataArray& array) {
   return array.GetDataType() == VTK_DOUBLE || array.GetDataType() == VTK_FLOAT;
 }
@@ -328,9 +347,13 @@ void readPointArray(vtkAbstractArray& abstractArray, ParticleCloud& cloud) {
   if (!isFloatingPoint(*array) && components == 1) {
     copyIds(*array, name, cloud.addIdField(name).data(), count);
   } else if (isFloatingPoint(*array) && components == 1) {
-    copyReals(*array, name, cloud.addScalarField(name).data(), count);
+    Real* values = cloud.addScalarField(name).data();
+    copyReals(*array, name, values, count);
+    checkValues(values, count, 1, name, cloud);
   } else if (isFloatingPoint(*array) && components == 3) {
-    copyReals(*array, name, flatXyz(cloud.addVectorField(name)), 3 * count);
+    Real* values = flatXyz(cloud.addVectorField(name));
+    copyReals(*array, name, values, 3 * count);
+    checkValues(values, 3 * count, 3, name, cloud);
   } else {
     throw Error("point data array '" + name + "' (" + array->GetDataTypeAsString() + ") has " +
                 std::to_string(components) +
@@ -346,15 +369,22 @@ void readAttribute(vtkAbstractArray& abstractArray, ParticleCloud& cloud) {
     throw Error("field data array '" + name +
                 "' is not a cloud attribute (a named array of one number)");
   }
-  cloud.attributes()[name] = array->GetComponent(0, 0);
+  const double value = array->GetComponent(0, 0);
+  if (!std::isfinite(value)) {
+    throw Error("cloud '" + cloud.name() + "': attribute '" + name + "' is " +
+                std::to_string(value) + "; it must be finite");
+  }
+  cloud.attributes()[name] = value;
 }
 
 ParticleCloud cloudFrom(vtkPolyData& polyData, const std::string& cloudName) {
   ParticleCloud cloud(cloudName);
   const auto count = static_cast<std::size_t>(polyData.GetNumberOfPoints());
   cloud.resize(count);
-  if (count > 0)
+  if (count > 0) {
     copyReals(*polyData.GetPoints()->GetData(), "Points", flatXyz(cloud.positions()), 3 * count);
+    checkValues(flatXyz(cloud.positions()), 3 * count, 3, "", cloud);
+  }
   vtkPointData& pointData = *polyData.GetPointData();
   for (int i = 0; i < pointData.GetNumberOfArrays(); ++i) {
     readPointArray(*pointData.GetAbstractArray(i), cloud);

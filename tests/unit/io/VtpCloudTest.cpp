@@ -21,23 +21,14 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// Values that a text format or a careless conversion would not keep bit for bit.
+// Values that a text format or a careless conversion would not keep bit for bit (all finite:
+// the reader refuses NaN and infinities, NonFiniteValuesAreRefused...).
 std::vector<Real> awkwardValues() {
   using Limits = std::numeric_limits<Real>;
-  return {Real(0),
-          -Real(0),
-          Limits::denorm_min(),
-          -Limits::denorm_min(),
-          Limits::min() / 3,
-          Limits::min(),
-          Limits::max(),
-          Limits::lowest(),
-          Limits::epsilon(),
-          Real(1) / 3,
-          Real(0.1),
-          Limits::infinity(),
-          -Limits::infinity(),
-          Limits::quiet_NaN()};
+  return {
+      Real(0),       -Real(0),      Limits::denorm_min(), -Limits::denorm_min(), Limits::min() / 3,
+      Limits::min(), Limits::max(), Limits::lowest(),     Limits::epsilon(),     Real(1) / 3,
+      Real(0.1)};
 }
 
 // A cloud with random fields, the awkward values sprinkled over the first particles.
@@ -118,8 +109,41 @@ TEST_F(VtpCloudTest, WriteThenReadIsBitExact) {
   EXPECT_TRUE(read.identicalTo(cloud));
   expectAttributesBitwiseEqual(cloud, read);
   EXPECT_TRUE(std::signbit(read.positions()[0].y()));  // -0.0 kept
-  EXPECT_EQ(read.scalarField("T")[4], -std::numeric_limits<Real>::infinity());
-  EXPECT_TRUE(std::isnan(read.scalarField("rho")[4]));
+  EXPECT_EQ(read.scalarField("T")[2], std::numeric_limits<Real>::max());
+  EXPECT_EQ(read.scalarField("rho")[2], std::numeric_limits<Real>::lowest());
+}
+
+// A NaN or infinity in a start time's cloud is refused when read, naming the file, the cloud,
+// the position or field and the particle, not later by the neighbour grid without a file.
+TEST_F(VtpCloudTest, NonFiniteValuesAreRefusedNamingFileCloudFieldAndParticle) {
+  const fs::path file = folder_ / "metal.vtp";
+  auto expectRefused = [&](const ParticleCloud& cloud, const std::string& because) {
+    writeCloudVtp(cloud, file);
+    try {
+      readCloudVtp(file, "metal");
+      ADD_FAILURE() << "no Error for " << because;
+    } catch (const Error& error) {
+      EXPECT_EQ(std::string(error.what()), "cannot read cloud file '" + file.string() +
+                                               "': cloud 'metal': " + because +
+                                               "; particle positions and fields must be finite");
+    }
+  };
+  const Real nan = std::numeric_limits<Real>::quiet_NaN();
+  const Real inf = std::numeric_limits<Real>::infinity();
+  ParticleCloud cloud = randomCloud(20, 9);
+  cloud.positions()[13].z() = nan;
+  expectRefused(cloud, "the position of particle 13 is nan");
+  cloud = randomCloud(20, 9);
+  cloud.scalarField("T")[7] = -inf;
+  expectRefused(cloud, "field 'T' of particle 7 is -inf");
+  cloud = randomCloud(20, 9);
+  cloud.vectorField("U")[19].y() = inf;
+  expectRefused(cloud, "field 'U' of particle 19 is inf");
+
+  cloud = randomCloud(20, 9);
+  cloud.attributes()["spacing"] = nan;
+  writeCloudVtp(cloud, file);
+  expectReadErrorNamingFile(file, "attribute 'spacing' is nan");
 }
 
 TEST_F(VtpCloudTest, ReadKeepsFieldKinds) {
