@@ -8,6 +8,7 @@
 #include "core/Log.h"
 #include "core/TimeControl.h"
 #include "geometry/CastFieldsSetup.h"
+#include "io/TimeFolders.h"
 #include "io/VtpCloud.h"
 #include "solver/CaseWriter.h"
 
@@ -46,6 +47,7 @@ int setCastFields(int argc, const char* const argv[]) {
   const sphcast::TimeState zero;  // value 0, name "0", index 0
   sphcast::writeTimeFolder(caseFolder, zero, written);
   sphcast::writeCaseIndex(caseFolder);
+  sphcast::warnOfStaleCaseIndexes(caseFolder);
   sphcast::info() << "Wrote " << (caseFolder.root() / "0").string() << "\n\nEnd\n";
   return 0;
 }
