@@ -4,6 +4,7 @@
 
 #include "core/Error.h"
 #include "core/dictionary/Dictionary.h"
+#include "sph/EquationOfState.h"
 
 namespace sphcast {
 
@@ -176,6 +177,19 @@ std::vector<std::string> prepareFluidFields(const FlowSetup& setup, ParticleClou
     added.emplace_back("U");
   }
   return added;
+}
+
+std::vector<Real> startPressure(const FlowSetup& setup, const ParticleCloud& fluid) {
+  ParticleCloud started = fluid;
+  prepareFluidFields(setup, started);
+  const LinearEquationOfState equationOfState{setup.settings.soundSpeed};
+  const auto& rho = started.scalarField("rho");
+  const auto& restDensity = started.scalarField("restDensity");
+  std::vector<Real> pressure(rho.size());
+  for (std::size_t i = 0; i < rho.size(); ++i) {
+    pressure[i] = equationOfState.pressure(rho[i], restDensity[i]);
+  }
+  return pressure;
 }
 
 }  // namespace sphcast

@@ -47,4 +47,9 @@ FlowSetup readFlowSetup(const CaseFolder& caseFolder, const Vector& gravity);
 // move T, rho_s stays what it was at the start.
 std::vector<std::string> prepareFluidFields(const FlowSetup& setup, ParticleCloud& fluid);
 
+// The pressure the flow starts `fluid` with: eq. (3), p = c^2 (rho - rho_s), on the fields
+// prepareFluidFields gives a copy of it. setCastFields writes it to 0/ so that the first frame
+// of the series carries p as the later ones do; the solver computes the same p at its start.
+std::vector<Real> startPressure(const FlowSetup& setup, const ParticleCloud& fluid);
+
 }  // namespace sphcast

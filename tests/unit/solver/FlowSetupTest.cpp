@@ -151,5 +151,19 @@ TEST(FlowSetup, PhysicalPropertiesMayHoldOtherMaterialsThanTheFluid) {
   EXPECT_EQ(errorOf(flowCase), "");
 }
 
+// setCastFields writes p to 0/ (the first frame of the series) as the flow starts it: eq. (3)
+// on the start's rho, or on rho = rho_s where the cloud has none.
+TEST(FlowSetup, StartPressureIsTheEquationOfStateOfTheStartDensity) {
+  const FlowSetup setup = FlowCase("", "densityScheme riemann;\n").read();  // c = 10 m/s
+  ParticleCloud water("water");
+  water.resize(3);
+  water.attributes()["spacing"] = 0.01;
+  water.addScalarField("volume") = {1e-6, 1e-6, 1e-6};
+  EXPECT_EQ(startPressure(setup, water), (std::vector<Real>{0, 0, 0}));
+  EXPECT_FALSE(water.hasScalarField("rho"));  // the cloud itself is left as it was
+  water.addScalarField("rho") = {1000, 1001, 999.5};
+  EXPECT_EQ(startPressure(setup, water), (std::vector<Real>{0, 100, -50}));
+}
+
 }  // namespace
 }  // namespace sphcast
