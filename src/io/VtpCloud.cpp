@@ -311,12 +311,26 @@ void copyIds(vtkDataArray& array, const std::string& name, std::int64_t* out,
               "; id fields are Int64 or Int32");
 }
 
-// The first NaN or infinity, named with its particle: it would surface far from here (in the
-// neighbour grid, as a negative density) without a file to look at.
+// Fields that hold a positive quantity wherever sphCast writes them; zero or less in a file is
+// a damaged or hand-made cloud, which the flow would divide by (rho, mass, the harmonic mean of
+// two viscosities) or weigh with (a wall particle's volume).
+bool mustBePositive(const std::string& fieldName) {
+  for (const char* name : {"mass", "restDensity", "rho", "viscosity", "volume"}) {
+    if (fieldName == name) return true;
+  }
+  return false;
+}
+
+// The first value that breaks the rules, named with its particle: NaN or infinity anywhere (it
+// would surface far from here, in the neighbour grid or as a negative density, without a file
+// to look at), zero or less in a field that holds a positive quantity.
 void checkValues(const Real* values, std::size_t valueCount, int components,
                  const std::string& fieldName, const ParticleCloud& cloud) {
+  const bool positive = mustBePositive(fieldName);
   const Real* end = values + valueCount;
-  const Real* bad = std::find_if(values, end, [](Real value) { return !std::isfinite(value); });
+  const Real* bad = std::find_if(values, end, [positive](Real value) {
+    return !std::isfinite(value) || (positive && !(value > 0));
+  });
   if (bad == end) return;
   const std::size_t particle =
       static_cast<std::size_t>(bad - values) / static_cast<std::size_t>(components);
@@ -324,7 +338,8 @@ void checkValues(const Real* values, std::size_t valueCount, int components,
   message << "cloud '" << cloud.name()
           << "': " << (fieldName.empty() ? "the position" : "field '" + fieldName + "'")
           << " of particle " << particle << " is " << *bad
-          << "; particle positions and fields must be finite";
+          << (std::isfinite(*bad) ? "; it must be positive (valid range: > 0)"
+                                  : "; particle positions and fields must be finite");
   throw Error(message.str());
 }
 

@@ -22,7 +22,8 @@ void writeCloudVtp(const ParticleCloud& cloud, const std::filesystem::path& file
 // with 1 or 3 components, or integer with 1). Integer arrays become id fields, 1-component
 // floating-point arrays scalar fields, 3-component ones vector fields. Every problem (missing,
 // truncated or corrupt file, an unsupported array, a NaN or infinite position, field value or
-// attribute) is an Error naming the file, and the cloud, field and particle where they apply.
+// attribute, a value of mass, restDensity, rho, viscosity or volume that is not positive) is an
+// Error naming the file, and the cloud, field, particle and value where they apply.
 ParticleCloud readCloudVtp(const std::filesystem::path& file, const std::string& cloudName);
 
 }  // namespace sphcast

@@ -1,6 +1,7 @@
 #include "solver/FlowSetup.h"
 
 #include <filesystem>
+#include <sstream>
 
 #include "core/Error.h"
 #include "core/dictionary/Dictionary.h"
@@ -15,11 +16,19 @@ const Dimensions speed{{0, 1, -1, 0, 0, 0, 0}};
 const Dimensions density{{1, -3, 0, 0, 0, 0, 0}};
 const Dimensions dynamicViscosity{{1, -1, -1, 0, 0, 0, 0}};
 
+// The range of h/dx (supportRadius over the particle spacing) a run can trust: below it the
+// kernel reaches hardly a neighbour, above it a step costs (h/dx)^3 pairs for nothing.
+constexpr double lowestSupportRatio = 1.2;
+constexpr double highestSupportRatio = 6.0;
+
 template <class Value>
 Value positive(const Dictionary& dict, const std::string& key, const Dimensions& dimensions) {
   const Value value = dict.get<Value>(key, dimensions);
   if (!(value > 0)) {
-    throw DictionaryError(dict.location(key), "'" + key + "' must be positive in " + dict.name());
+    std::ostringstream message;
+    message << "'" << key << "' is " << value << " in " << dict.name()
+            << "; it must be positive (valid range: > 0)";
+    throw DictionaryError(dict.location(key), message.str());
   }
   return value;
 }
@@ -94,6 +103,7 @@ FlowSetup readFlowSetup(const CaseFolder& caseFolder, const Vector& gravity) {
       schemes.getChoiceOrDefault("kernelCorrection", {"on", "off"}, "off") == "on";
   settings.viscousForm = schemes.getChoice("viscousForm", {"Morris", "Cleary"});
   settings.supportRadius = positive<Real>(schemes, "supportRadius", length);
+  setup.supportRadiusAt = schemes.location("supportRadius");
   settings.soundSpeed = positive<Real>(schemes, "soundSpeed", speed);
   if (schemes.found("deltaSPHCoeffs")) {
     const Dictionary& coeffs = schemes.subDict("deltaSPHCoeffs");
@@ -130,6 +140,22 @@ FlowSetup readFlowSetup(const CaseFolder& caseFolder, const Vector& gravity) {
 }
 
 std::vector<std::string> prepareFluidFields(const FlowSetup& setup, ParticleCloud& fluid) {
+  const auto spacing = fluid.attributes().find("spacing");
+  if (spacing == fluid.attributes().end() || !(spacing->second > 0)) {
+    throw Error("cloud '" + fluid.name() + "' (" + fluid.name() +
+                ".vtp of the start time) has no positive 'spacing' attribute, the particle "
+                "spacing dx that the flow needs; write the cloud with setCastFields, which "
+                "records it");
+  }
+  const double ratio = static_cast<double>(setup.settings.supportRadius) / spacing->second;
+  if (!(ratio >= lowestSupportRatio && ratio <= highestSupportRatio)) {
+    std::ostringstream message;
+    message << "'supportRadius' " << setup.settings.supportRadius << " m is " << ratio
+            << " times the spacing " << spacing->second << " m of cloud '" << fluid.name()
+            << "'; supportRadius/spacing must lie in [" << lowestSupportRatio << ", "
+            << highestSupportRatio << "] (3 is usual)";
+    throw DictionaryError(setup.supportRadiusAt, message.str());
+  }
   std::vector<std::string> added;
   auto fill = [&](const char* name, Real value) {
     if (fluid.hasScalarField(name)) return;

@@ -22,7 +22,7 @@ namespace {
 namespace fs = std::filesystem;
 
 // Values that a text format or a careless conversion would not keep bit for bit (all finite:
-// the reader refuses NaN and infinities, NonFiniteValuesAreRefused...).
+// the reader refuses NaN and infinities, NonFiniteOrNonPositiveValuesAreRefused...).
 std::vector<Real> awkwardValues() {
   using Limits = std::numeric_limits<Real>;
   return {
@@ -43,7 +43,7 @@ ParticleCloud randomCloud(std::size_t count, unsigned seed) {
   ParticleCloud cloud("metal");
   cloud.resize(count);
   auto& temperature = cloud.addScalarField("T");
-  auto& density = cloud.addScalarField("rho");
+  auto& pressure = cloud.addScalarField("p");  // any sign (rho, mass, ... must be positive)
   auto& velocity = cloud.addVectorField("U");
   auto& force = cloud.addVectorField("force");
   auto& id = cloud.addIdField("id");
@@ -53,7 +53,7 @@ ParticleCloud randomCloud(std::size_t count, unsigned seed) {
     velocity[i] = Vector(value(i, 2), value(i, 0), value(i, 1));
     force[i] = Vector(value(i, 1), value(i, 2), value(i, 0));
     temperature[i] = value(i, 0);
-    density[i] = value(i, 1);
+    pressure[i] = value(i, 1);
     id[i] = static_cast<std::int64_t>(random());
     origin[i] = -static_cast<std::int64_t>(i);
   }
@@ -110,12 +110,13 @@ TEST_F(VtpCloudTest, WriteThenReadIsBitExact) {
   expectAttributesBitwiseEqual(cloud, read);
   EXPECT_TRUE(std::signbit(read.positions()[0].y()));  // -0.0 kept
   EXPECT_EQ(read.scalarField("T")[2], std::numeric_limits<Real>::max());
-  EXPECT_EQ(read.scalarField("rho")[2], std::numeric_limits<Real>::lowest());
+  EXPECT_EQ(read.scalarField("p")[2], std::numeric_limits<Real>::lowest());
 }
 
-// A NaN or infinity in a start time's cloud is refused when read, naming the file, the cloud,
-// the position or field and the particle, not later by the neighbour grid without a file.
-TEST_F(VtpCloudTest, NonFiniteValuesAreRefusedNamingFileCloudFieldAndParticle) {
+// A NaN or infinity in a start time's cloud, or a zero or negative mass, density, viscosity or
+// volume, is refused when read, naming the file, the cloud, the position or field, the particle
+// and the value; not later by the neighbour grid or as 0/0, without a file.
+TEST_F(VtpCloudTest, NonFiniteOrNonPositiveValuesAreRefusedNamingFileCloudFieldAndParticle) {
   const fs::path file = folder_ / "metal.vtp";
   auto expectRefused = [&](const ParticleCloud& cloud, const std::string& because) {
     writeCloudVtp(cloud, file);
@@ -140,6 +141,22 @@ TEST_F(VtpCloudTest, NonFiniteValuesAreRefusedNamingFileCloudFieldAndParticle) {
   cloud.vectorField("U")[19].y() = inf;
   expectRefused(cloud, "field 'U' of particle 19 is inf");
 
+  // A cloud the flow would divide by zero with (mass, rho, viscosity) or weigh wrongly (volume).
+  const std::string positive = "; it must be positive (valid range: > 0)";
+  for (const char* field : {"mass", "restDensity", "rho", "viscosity", "volume"}) {
+    cloud = randomCloud(20, 9);
+    std::vector<Real>& values =
+        cloud.hasScalarField(field) ? cloud.scalarField(field) : cloud.addScalarField(field);
+    std::fill(values.begin(), values.end(), Real(1));
+    values[11] = Real(0);
+    writeCloudVtp(cloud, file);
+    expectReadErrorNamingFile(
+        file, std::string("cloud 'metal': field '") + field + "' of particle 11 is 0" + positive);
+    values[11] = Real(-2.5);
+    writeCloudVtp(cloud, file);
+    expectReadErrorNamingFile(file, std::string("field '") + field + "' of particle 11 is -2.5");
+  }
+
   cloud = randomCloud(20, 9);
   cloud.attributes()["spacing"] = nan;
   writeCloudVtp(cloud, file);
@@ -151,7 +168,7 @@ TEST_F(VtpCloudTest, ReadKeepsFieldKinds) {
   writeCloudVtp(randomCloud(10, 1), file);
   const ParticleCloud read = readCloudVtp(file, "metal");
   EXPECT_TRUE(read.hasScalarField("T"));
-  EXPECT_TRUE(read.hasScalarField("rho"));
+  EXPECT_TRUE(read.hasScalarField("p"));
   EXPECT_TRUE(read.hasVectorField("U"));
   EXPECT_TRUE(read.hasVectorField("force"));
   EXPECT_TRUE(read.hasIdField("id"));
