@@ -1,6 +1,7 @@
 #include "core/dictionary/Dictionary.h"
 
 #include <algorithm>
+#include <utility>
 
 #include "core/dictionary/Parser.h"
 
@@ -24,23 +25,23 @@ std::string listed(const std::vector<std::string>& words) {
 }
 
 // Optimal string alignment distance: insertions, deletions, substitutions and transpositions
-// of two neighbouring letters ("modle" for "model") each count one edit.
+// of two neighbouring letters ("modle" for "model") each count one edit. Three rows at a time.
 std::size_t editDistance(std::string_view from, std::string_view to) {
-  const std::size_t columns = to.size() + 1;
-  std::vector<std::size_t> distance((from.size() + 1) * columns);
-  auto at = [&](std::size_t i, std::size_t j) -> std::size_t& { return distance[i * columns + j]; };
-  for (std::size_t i = 0; i <= from.size(); ++i) at(i, 0) = i;
-  for (std::size_t j = 0; j <= to.size(); ++j) at(0, j) = j;
+  std::vector<std::size_t> beforeLast(to.size() + 1), last(to.size() + 1), row(to.size() + 1);
+  for (std::size_t j = 0; j <= to.size(); ++j) row[j] = j;
   for (std::size_t i = 1; i <= from.size(); ++i) {
+    std::swap(beforeLast, last);
+    std::swap(last, row);
+    row[0] = i;
     for (std::size_t j = 1; j <= to.size(); ++j) {
-      const std::size_t substitution = at(i - 1, j - 1) + (from[i - 1] == to[j - 1] ? 0 : 1);
-      at(i, j) = std::min({at(i - 1, j) + 1, at(i, j - 1) + 1, substitution});
+      const std::size_t substitution = last[j - 1] + (from[i - 1] == to[j - 1] ? 0 : 1);
+      row[j] = std::min({last[j] + 1, row[j - 1] + 1, substitution});
       if (i > 1 && j > 1 && from[i - 1] == to[j - 2] && from[i - 2] == to[j - 1]) {
-        at(i, j) = std::min(at(i, j), at(i - 2, j - 2) + 1);
+        row[j] = std::min(row[j], beforeLast[j - 2] + 1);
       }
     }
   }
-  return at(from.size(), to.size());
+  return row[to.size()];
 }
 
 // "; did you mean 'endTime'?" when a valid word is near, else "".
@@ -55,8 +56,11 @@ std::string nearestWord(std::string_view misspelt, const std::vector<std::string
   std::string nearest;
   std::size_t nearestDistance = 0;
   for (const std::string& valid : validWords) {
-    const std::size_t distance = editDistance(misspelt, valid);
     const std::size_t tolerance = std::max<std::size_t>(1, valid.size() / 3);
+    // The distance is at least the difference in length: a long word is not compared at all.
+    const std::size_t shorter = std::min(misspelt.size(), valid.size());
+    if (std::max(misspelt.size(), valid.size()) - shorter > tolerance) continue;
+    const std::size_t distance = editDistance(misspelt, valid);
     if (distance <= tolerance && (nearest.empty() || distance < nearestDistance)) {
       nearest = valid;
       nearestDistance = distance;
