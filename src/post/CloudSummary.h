@@ -1,7 +1,6 @@
 #pragma once
 
 #include <string>
-#include <vector>
 
 #include "core/Real.h"
 #include "particles/ParticleCloud.h"
