@@ -5,7 +5,10 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <limits>
+
+#include <unistd.h>
 
 #include "core/Error.h"
 
@@ -90,6 +93,14 @@ CaseFolder::CaseFolder(const fs::path& root) : root_(fs::absolute(root).lexicall
   }
   if (!fs::is_directory(system())) {
     throw Error("'" + root.string() + "' is not a case folder: it has no system/ folder");
+  }
+  // Every tool writes into the case (time folders, <case>.pvd, postProcessing/): a case that
+  // cannot be written is refused now, not at the first write after hours of running.
+  if (::access(root_.c_str(), W_OK | X_OK) != 0) {
+    const std::string reason = std::strerror(errno);
+    throw Error("case folder '" + root_.string() + "' is not writable (" + reason +
+                "): the tools write their results into it; copy the case to a writable place "
+                "or make it writable");
   }
 }
 

@@ -24,7 +24,8 @@ std::vector<TimeFolder> selectTimes(const std::vector<TimeFolder>& times, const 
 // The case folder contract of doc/design.md §2: system/, constant/, one folder per written time.
 class CaseFolder {
  public:
-  // Throws an Error when the folder or its system/ is missing.
+  // Throws an Error when the folder or its system/ is missing, or the folder is not writable
+  // (every tool writes its results into the case).
   explicit CaseFolder(const std::filesystem::path& root);
 
   const std::filesystem::path& root() const { return root_; }

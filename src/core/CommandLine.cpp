@@ -1,9 +1,12 @@
 #include "core/CommandLine.h"
 
+#include <algorithm>
 #include <cstdlib>
 #include <exception>
 #include <iostream>
 #include <new>
+#include <utility>
+#include <vector>
 
 #include "core/Error.h"
 #include "core/OpenMPWaitPolicy.h"
@@ -11,6 +14,28 @@
 namespace po = boost::program_options;
 
 namespace sphcast {
+
+namespace {
+
+// The options as users type them, with one dash (Boost's own listing prints "--case"):
+// "  -case DIR (=.)  the case folder".
+void printOptions(std::ostream& out, const po::options_description& options) {
+  std::vector<std::pair<std::string, std::string>> rows;
+  std::size_t width = 0;
+  for (const auto& option : options.options()) {
+    std::string usage = "-" + option->long_name();
+    const std::string parameter = option->format_parameter();
+    if (!parameter.empty()) usage += " " + parameter;
+    width = std::max(width, usage.size());
+    rows.emplace_back(usage, option->description());
+  }
+  out << "Options:\n";
+  for (const auto& [usage, description] : rows) {
+    out << "  " << usage << std::string(width - usage.size() + 2, ' ') << description << '\n';
+  }
+}
+
+}  // namespace
 
 CommandLine::CommandLine(std::string application, std::string description)
     : application_(std::move(application)),
@@ -33,8 +58,9 @@ bool CommandLine::parse(int argc, const char* const argv[]) {
     throw Error(application_ + ": " + bad.what() + " (see " + application_ + " -help)");
   }
   if (values_.count("help")) {
-    std::cout << "Usage: " << application_ << " [OPTIONS]\n\n"
-              << description_ << "\n\n" << options_ << '\n';
+    std::cout << "Usage: " << application_ << " [OPTIONS]\n\n" << description_ << "\n\n";
+    printOptions(std::cout, options_);
+    std::cout << '\n';
     return false;
   }
   return true;

@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "core/Error.h"
+#include "core/Log.h"
 #include "core/dictionary/Dictionary.h"
 
 namespace fs = std::filesystem;
@@ -127,6 +128,12 @@ void TimeControl::chooseStartTime(const CaseFolder& caseFolder) {
     state_.value = saved.get<double>("value");
     state_.index = saved.get<long>("index");
     state_.deltaT = saved.get<double>("deltaT");
+  } else if (state_.value != 0.0) {
+    // OpenFOAM takes the folder's name then too; say what that changes.
+    warning(uniformTime.string() + " is missing: starting at time " + chosen +
+            " (the folder's name) with time index 0 and deltaT of controlDict. The run "
+            "continues, but does not reproduce the run that wrote " +
+            chosen + " bit for bit, and writeControl timeStep counts its steps from here.");
   }
   startValue_ = state_.value;
   startName_ = chosen;

@@ -4,6 +4,8 @@
 #include <filesystem>
 
 #include "core/AtomicFile.h"
+#include "core/Error.h"
+#include "core/Log.h"
 #include "io/PvdIndex.h"
 #include "io/VtpCloud.h"
 
@@ -66,6 +68,42 @@ void writeCaseIndex(const CaseFolder& caseFolder) {
     }
   }
   writePvd(caseFolder.pvdFile(), std::move(entries));
+}
+
+std::vector<fs::path> staleCaseIndexes(const CaseFolder& caseFolder) {
+  std::vector<fs::path> stale;
+  for (const auto& entry : fs::directory_iterator(caseFolder.root())) {
+    const fs::path& file = entry.path();
+    if (!entry.is_regular_file() || file.extension() != ".pvd" || file == caseFolder.pvdFile()) {
+      continue;
+    }
+    std::vector<PvdEntry> indexed;
+    try {
+      indexed = readPvd(file);
+    } catch (const Error&) {
+      continue;  // not an index sphCast writes
+    }
+    // "0.05/metal.vtp" or "constant/particles/mold.vtp", as writeCaseIndex writes them.
+    const auto ofThisCase = [](const PvdEntry& dataSet) {
+      const fs::path path(dataSet.file);
+      const std::string folder = path.begin() == path.end() ? "" : path.begin()->string();
+      return path.is_relative() && (folder == dataSet.timeName || folder == "constant") &&
+             dataSet.file.find("..") == std::string::npos;
+    };
+    if (!indexed.empty() && std::all_of(indexed.begin(), indexed.end(), ofThisCase)) {
+      stale.push_back(file);
+    }
+  }
+  std::sort(stale.begin(), stale.end());
+  return stale;
+}
+
+void warnOfStaleCaseIndexes(const CaseFolder& caseFolder) {
+  for (const fs::path& stale : staleCaseIndexes(caseFolder)) {
+    warning(stale.string() + " indexes this case's time folders, but is no longer updated: it " +
+            "is named after another case folder (a copy?). The series is " +
+            caseFolder.pvdFile().string() + "; remove " + stale.filename().string() + ".");
+  }
 }
 
 std::vector<ParticleCloud> readTimeFolderClouds(const CaseFolder& caseFolder,

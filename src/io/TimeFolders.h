@@ -1,5 +1,6 @@
 #pragma once
 
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -16,6 +17,16 @@ void writeTimeFolder(const CaseFolder& caseFolder, const TimeState& time,
 // Rewrites <case>.pvd from what is on disk: every cloud of every time folder, and the static
 // clouds of constant/particles at every time, so ParaView plays the whole series.
 void writeCaseIndex(const CaseFolder& caseFolder);
+
+// The .pvd files of the case folder other than <case>.pvd that index nothing but this case's
+// time folders and constant/particles: left by a copy of the case under another folder name
+// (the index is named after the folder), and no longer updated. Other .pvd files are the
+// user's own and not listed.
+std::vector<std::filesystem::path> staleCaseIndexes(const CaseFolder& caseFolder);
+
+// A warning for each of staleCaseIndexes, naming the index that is kept up to date. They are
+// not removed: a .pvd in the case may be the user's.
+void warnOfStaleCaseIndexes(const CaseFolder& caseFolder);
 
 // Every cloud stored in a time folder (one .vtp each), sorted by name.
 std::vector<ParticleCloud> readTimeFolderClouds(const CaseFolder& caseFolder,

@@ -20,10 +20,12 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <cstdint>
 #include <exception>
 #include <fstream>
 #include <numeric>
+#include <sstream>
 #include <system_error>
 #include <type_traits>
 
@@ -309,6 +311,38 @@ void copyIds(vtkDataArray& array, const std::string& name, std::int64_t* out,
               "; id fields are Int64 or Int32");
 }
 
+// Fields that hold a positive quantity wherever sphCast writes them; zero or less in a file is
+// a damaged or hand-made cloud, which the flow would divide by (rho, mass, the harmonic mean of
+// two viscosities) or weigh with (a wall particle's volume).
+bool mustBePositive(const std::string& fieldName) {
+  for (const char* name : {"mass", "restDensity", "rho", "viscosity", "volume"}) {
+    if (fieldName == name) return true;
+  }
+  return false;
+}
+
+// The first value that breaks the rules, named with its particle: NaN or infinity anywhere (it
+// would surface far from here, in the neighbour grid or as a negative density, without a file
+// to look at), zero or less in a field that holds a positive quantity.
+void checkValues(const Real* values, std::size_t valueCount, int components,
+                 const std::string& fieldName, const ParticleCloud& cloud) {
+  const bool positive = mustBePositive(fieldName);
+  const Real* end = values + valueCount;
+  const Real* bad = std::find_if(values, end, [positive](Real value) {
+    return !std::isfinite(value) || (positive && !(value > 0));
+  });
+  if (bad == end) return;
+  const std::size_t particle =
+      static_cast<std::size_t>(bad - values) / static_cast<std::size_t>(components);
+  std::ostringstream message;
+  message << "cloud '" << cloud.name()
+          << "': " << (fieldName.empty() ? "the position" : "field '" + fieldName + "'")
+          << " of particle " << particle << " is " << *bad
+          << (std::isfinite(*bad) ? "; it must be positive (valid range: > 0)"
+                                  : "; particle positions and fields must be finite");
+  throw Error(message.str());
+}
+
 bool isFloatingPoint(const vtkDataArray& array) {
   return array.GetDataType() == VTK_DOUBLE || array.GetDataType() == VTK_FLOAT;
 }
@@ -328,9 +362,13 @@ void readPointArray(vtkAbstractArray& abstractArray, ParticleCloud& cloud) {
   if (!isFloatingPoint(*array) && components == 1) {
     copyIds(*array, name, cloud.addIdField(name).data(), count);
   } else if (isFloatingPoint(*array) && components == 1) {
-    copyReals(*array, name, cloud.addScalarField(name).data(), count);
+    Real* values = cloud.addScalarField(name).data();
+    copyReals(*array, name, values, count);
+    checkValues(values, count, 1, name, cloud);
   } else if (isFloatingPoint(*array) && components == 3) {
-    copyReals(*array, name, flatXyz(cloud.addVectorField(name)), 3 * count);
+    Real* values = flatXyz(cloud.addVectorField(name));
+    copyReals(*array, name, values, 3 * count);
+    checkValues(values, 3 * count, 3, name, cloud);
   } else {
     throw Error("point data array '" + name + "' (" + array->GetDataTypeAsString() + ") has " +
                 std::to_string(components) +
@@ -346,15 +384,22 @@ void readAttribute(vtkAbstractArray& abstractArray, ParticleCloud& cloud) {
     throw Error("field data array '" + name +
                 "' is not a cloud attribute (a named array of one number)");
   }
-  cloud.attributes()[name] = array->GetComponent(0, 0);
+  const double value = array->GetComponent(0, 0);
+  if (!std::isfinite(value)) {
+    throw Error("cloud '" + cloud.name() + "': attribute '" + name + "' is " +
+                std::to_string(value) + "; it must be finite");
+  }
+  cloud.attributes()[name] = value;
 }
 
 ParticleCloud cloudFrom(vtkPolyData& polyData, const std::string& cloudName) {
   ParticleCloud cloud(cloudName);
   const auto count = static_cast<std::size_t>(polyData.GetNumberOfPoints());
   cloud.resize(count);
-  if (count > 0)
+  if (count > 0) {
     copyReals(*polyData.GetPoints()->GetData(), "Points", flatXyz(cloud.positions()), 3 * count);
+    checkValues(flatXyz(cloud.positions()), 3 * count, 3, "", cloud);
+  }
   vtkPointData& pointData = *polyData.GetPointData();
   for (int i = 0; i < pointData.GetNumberOfArrays(); ++i) {
     readPointArray(*pointData.GetAbstractArray(i), cloud);

@@ -21,7 +21,9 @@ void writeCloudVtp(const ParticleCloud& cloud, const std::filesystem::path& file
 // Reads a cloud written by writeCloudVtp (or any .vtp whose point data arrays are floating-point
 // with 1 or 3 components, or integer with 1). Integer arrays become id fields, 1-component
 // floating-point arrays scalar fields, 3-component ones vector fields. Every problem (missing,
-// truncated or corrupt file, an unsupported array) is an Error naming the file.
+// truncated or corrupt file, an unsupported array, a NaN or infinite position, field value or
+// attribute, a value of mass, restDensity, rho, viscosity or volume that is not positive) is an
+// Error naming the file, and the cloud, field, particle and value where they apply.
 ParticleCloud readCloudVtp(const std::filesystem::path& file, const std::string& cloudName);
 
 }  // namespace sphcast

@@ -2,6 +2,10 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <cstdlib>
+#include <sstream>
+#include <utility>
+#include <vector>
 
 namespace sphcast {
 
@@ -47,6 +51,44 @@ std::string cloudSummaryCsvRow(double time, const CloudSummary& s) {
                 double(s.lower.z()), double(s.upper.x()), double(s.upper.y()),
                 double(s.upper.z()));
   return row;
+}
+
+namespace {
+
+struct CsvRow {
+  double time;
+  std::string text;  // with its newline
+};
+
+// The header line and the rows of a CSV written by cloudSummaryCsvHeader and cloudSummaryCsvRow.
+std::pair<std::string, std::vector<CsvRow>> splitCsv(const std::string& csv) {
+  std::istringstream lines(csv);
+  std::string header;
+  std::getline(lines, header);
+  std::vector<CsvRow> rows;
+  for (std::string line; std::getline(lines, line);) {
+    if (!line.empty()) rows.push_back({std::strtod(line.c_str(), nullptr), line + '\n'});
+  }
+  return {header, rows};
+}
+
+}  // namespace
+
+std::string mergeCloudSummaryCsv(const std::string& existing, const std::string& updated) {
+  auto [header, rows] = splitCsv(updated);
+  const auto [oldHeader, oldRows] = splitCsv(existing);
+  if (oldHeader == header) {
+    for (const CsvRow& row : oldRows) {
+      const bool replaced = std::any_of(
+          rows.begin(), rows.end(), [&](const CsvRow& fresh) { return fresh.time == row.time; });
+      if (!replaced) rows.push_back(row);
+    }
+  }
+  std::stable_sort(rows.begin(), rows.end(),
+                   [](const CsvRow& a, const CsvRow& b) { return a.time < b.time; });
+  std::string csv = header + '\n';
+  for (const CsvRow& row : rows) csv += row.text;
+  return csv;
 }
 
 }  // namespace sphcast

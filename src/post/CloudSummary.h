@@ -23,4 +23,10 @@ CloudSummary summarize(const ParticleCloud& cloud);
 std::string cloudSummaryCsvHeader();
 std::string cloudSummaryCsvRow(double time, const CloudSummary& summary);
 
+// The CSV `existing` updated by the CSV `updated` (both a header and rows, as written above):
+// rows at the times of `updated` replace those at the same times, the other rows stay, all in
+// time order. castPostProcess -time/-latestTime thus updates the times it processed only. An
+// `existing` with another header (an older format) is replaced whole.
+std::string mergeCloudSummaryCsv(const std::string& existing, const std::string& updated);
+
 }  // namespace sphcast

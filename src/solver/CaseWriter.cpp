@@ -10,7 +10,9 @@ namespace fs = std::filesystem;
 namespace sphcast {
 
 CaseWriter::CaseWriter(const CaseFolder& caseFolder, int purgeWrite)
-    : caseFolder_(caseFolder), purgeWrite_(purgeWrite) {}
+    : caseFolder_(caseFolder), purgeWrite_(purgeWrite) {
+  warnOfStaleCaseIndexes(caseFolder_);
+}
 
 void CaseWriter::write(const TimeState& time, const std::vector<const ParticleCloud*>& clouds) {
   writeTimeFolder(caseFolder_, time, clouds);

@@ -16,6 +16,7 @@ namespace sphcast {
 // then the oldest written times beyond purgeWrite are removed and <case>.pvd is rewritten.
 class CaseWriter {
  public:
+  // Warns of a stale <old case name>.pvd left by a copy of the case (warnOfStaleCaseIndexes).
   CaseWriter(const CaseFolder& caseFolder, int purgeWrite);
 
   // Writes <time>/<cloud>.vtp for every cloud and <time>/uniform/time.

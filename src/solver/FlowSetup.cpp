@@ -1,9 +1,11 @@
 #include "solver/FlowSetup.h"
 
 #include <filesystem>
+#include <sstream>
 
 #include "core/Error.h"
 #include "core/dictionary/Dictionary.h"
+#include "sph/EquationOfState.h"
 
 namespace sphcast {
 
@@ -14,11 +16,19 @@ const Dimensions speed{{0, 1, -1, 0, 0, 0, 0}};
 const Dimensions density{{1, -3, 0, 0, 0, 0, 0}};
 const Dimensions dynamicViscosity{{1, -1, -1, 0, 0, 0, 0}};
 
+// The range of h/dx (supportRadius over the particle spacing) a run can trust: below it the
+// kernel reaches hardly a neighbour, above it a step costs (h/dx)^3 pairs for nothing.
+constexpr double lowestSupportRatio = 1.2;
+constexpr double highestSupportRatio = 6.0;
+
 template <class Value>
 Value positive(const Dictionary& dict, const std::string& key, const Dimensions& dimensions) {
   const Value value = dict.get<Value>(key, dimensions);
   if (!(value > 0)) {
-    throw DictionaryError(dict.location(key), "'" + key + "' must be positive in " + dict.name());
+    std::ostringstream message;
+    message << "'" << key << "' is " << value << " in " << dict.name()
+            << "; it must be positive (valid range: > 0)";
+    throw DictionaryError(dict.location(key), message.str());
   }
   return value;
 }
@@ -46,6 +56,28 @@ void readPeriodicAxes(const Dictionary& periodic, FlowSettings& settings) {
   }
 }
 
+// The material that `key` of `models` names must be a sub-dictionary of physicalProperties,
+// which may hold other materials too (setCastFields' clouds may use them). The error is where
+// the name is written: "constant/physicsModels:3:5: 'fluid' names the material 'steel', which
+// is not in constant/physicalProperties; materials there: (water)".
+void requireMaterial(const Dictionary& properties, const Dictionary& models,
+                     const std::string& key) {
+  const auto name = models.get<std::string>(key);
+  if (properties.isDict(name)) return;
+  std::vector<std::string> materials;
+  for (const std::string& candidate : properties.keys()) {
+    if (properties.isDict(candidate)) materials.push_back(candidate);
+  }
+  std::string listed;
+  for (const std::string& material : materials) listed += (listed.empty() ? "" : " ") + material;
+  const std::string nearest = nearestWord(name, materials);
+  throw DictionaryError(models.location(key),
+                        "'" + key + "' names the material '" + name + "', which is not in " +
+                            properties.location().file +
+                            (nearest.empty() ? "" : "; did you mean '" + nearest + "'?") +
+                            (nearest.empty() ? "; " : " ") + "materials there: (" + listed + ")");
+}
+
 }  // namespace
 
 FlowSetup readFlowSetup(const CaseFolder& caseFolder, const Vector& gravity) {
@@ -71,6 +103,7 @@ FlowSetup readFlowSetup(const CaseFolder& caseFolder, const Vector& gravity) {
       schemes.getChoiceOrDefault("kernelCorrection", {"on", "off"}, "off") == "on";
   settings.viscousForm = schemes.getChoice("viscousForm", {"Morris", "Cleary"});
   settings.supportRadius = positive<Real>(schemes, "supportRadius", length);
+  setup.supportRadiusAt = schemes.location("supportRadius");
   settings.soundSpeed = positive<Real>(schemes, "soundSpeed", speed);
   if (schemes.found("deltaSPHCoeffs")) {
     const Dictionary& coeffs = schemes.subDict("deltaSPHCoeffs");
@@ -105,7 +138,7 @@ FlowSetup readFlowSetup(const CaseFolder& caseFolder, const Vector& gravity) {
   if (models.found("periodic")) readPeriodicAxes(models.subDict("periodic"), settings);
 
   const Dictionary properties = Dictionary::read(caseFolder.constantFile("physicalProperties"));
-  properties.checkKeys({setup.fluidCloud});
+  requireMaterial(properties, flow, "fluid");
   const Dictionary& material = properties.subDict(setup.fluidCloud);
   material.checkKeys({"density", "viscosity"});
   setup.restDensity = TemperatureTable::read(material, "density", density);
@@ -114,6 +147,22 @@ FlowSetup readFlowSetup(const CaseFolder& caseFolder, const Vector& gravity) {
 }
 
 std::vector<std::string> prepareFluidFields(const FlowSetup& setup, ParticleCloud& fluid) {
+  const auto spacing = fluid.attributes().find("spacing");
+  if (spacing == fluid.attributes().end() || !(spacing->second > 0)) {
+    throw Error("cloud '" + fluid.name() + "' (" + fluid.name() +
+                ".vtp of the start time) has no positive 'spacing' attribute, the particle "
+                "spacing dx that the flow needs; write the cloud with setCastFields, which "
+                "records it");
+  }
+  const double ratio = static_cast<double>(setup.settings.supportRadius) / spacing->second;
+  if (!(ratio >= lowestSupportRatio && ratio <= highestSupportRatio)) {
+    std::ostringstream message;
+    message << "'supportRadius' " << setup.settings.supportRadius << " m is " << ratio
+            << " times the spacing " << spacing->second << " m of cloud '" << fluid.name()
+            << "'; supportRadius/spacing must lie in [" << lowestSupportRatio << ", "
+            << highestSupportRatio << "] (3 is usual)";
+    throw DictionaryError(setup.supportRadiusAt, message.str());
+  }
   std::vector<std::string> added;
   auto fill = [&](const char* name, Real value) {
     if (fluid.hasScalarField(name)) return;
@@ -161,6 +210,19 @@ std::vector<std::string> prepareFluidFields(const FlowSetup& setup, ParticleClou
     added.emplace_back("U");
   }
   return added;
+}
+
+std::vector<Real> startPressure(const FlowSetup& setup, const ParticleCloud& fluid) {
+  ParticleCloud started = fluid;
+  prepareFluidFields(setup, started);
+  const LinearEquationOfState equationOfState{setup.settings.soundSpeed};
+  const auto& rho = started.scalarField("rho");
+  const auto& restDensity = started.scalarField("restDensity");
+  std::vector<Real> pressure(rho.size());
+  for (std::size_t i = 0; i < rho.size(); ++i) {
+    pressure[i] = equationOfState.pressure(rho[i], restDensity[i]);
+  }
+  return pressure;
 }
 
 }  // namespace sphcast

@@ -36,6 +36,7 @@ struct FlowSetup {
   FlowSettings settings;
   std::optional<TemperatureTable> restDensity;  // rho_s(T), or a constant
   Real viscosity = 0;
+  SourceLocation supportRadiusAt;  // for the check of h against the fluid's spacing
 };
 
 // Reads and checks the three dictionaries (errors name file, line and key).
@@ -44,7 +45,14 @@ FlowSetup readFlowSetup(const CaseFolder& caseFolder, const Vector& gravity);
 // Gives the fluid cloud the fields the flow needs that the start time lacks: restDensity
 // (rho_s, at each particle's T where rho_s is a table: the cloud must have T), rho (rho_s),
 // mass (rho volume), viscosity. Returns what it added, for the log. Until the thermal models
-// move T, rho_s stays what it was at the start.
+// move T, rho_s stays what it was at the start. The cloud must have the attribute spacing
+// (dx), with supportRadius/spacing in [1.2, 6]. (The reader, VtpCloud.h, has refused
+// non-positive rho, mass, volume and viscosity already.)
 std::vector<std::string> prepareFluidFields(const FlowSetup& setup, ParticleCloud& fluid);
+
+// The pressure the flow starts `fluid` with: eq. (3), p = c^2 (rho - rho_s), on the fields
+// prepareFluidFields gives a copy of it. setCastFields writes it to 0/ so that the first frame
+// of the series carries p as the later ones do; the solver computes the same p at its start.
+std::vector<Real> startPressure(const FlowSetup& setup, const ParticleCloud& fluid);
 
 }  // namespace sphcast

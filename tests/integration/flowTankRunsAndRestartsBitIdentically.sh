@@ -8,6 +8,8 @@ coarseWaterTank "$scratch/whole"  # dx = 10 mm (500 water particles), to 0.2 s
 particleizeMold > log.particleizeMold 2>&1 || fail "particleizeMold: $(tail -5 log.particleizeMold)"
 setCastFields > log.setCastFields 2>&1 || fail "setCastFields: $(tail -5 log.setCastFields)"
 cp -r "$scratch/whole" "$scratch/stopped"
+# The first frame carries p, as the later ones: ParaView can colour the whole series by it.
+grep -qa '<DataArray [^>]*Name="p"' 0/water.vtp || fail "0/water.vtp has no p"
 
 sphCastFoam > log.sphCastFoam 2>&1 || fail "sphCastFoam: $(tail -5 log.sphCastFoam)"
 grep -q "^Density range " log.sphCastFoam || fail "no density range in the log"

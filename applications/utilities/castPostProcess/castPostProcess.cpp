@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <sstream>
 
 #include "core/AtomicFile.h"
 #include "core/CaseFolder.h"
@@ -19,7 +20,8 @@ int castPostProcess(int argc, const char* const argv[]) {
   sphcast::CommandLine args(
       "castPostProcess",
       "Writes postProcessing/cloudSummary/<cloud>.csv: per written time, the particle count, "
-      "centroid, mean velocity, maximum speed and bounding box of every cloud.");
+      "centroid, mean velocity, maximum speed and bounding box of every cloud. With -time or "
+      "-latestTime only the rows of those times are replaced or added; the others stay.");
   args.options()("latestTime", "only the latest time")(
       "time", boost::program_options::value<std::string>()->value_name("LIST"),
       "times to process: 0.1,0.2 or 0.1:0.5 (ranges), comma-separated");
@@ -43,9 +45,19 @@ int castPostProcess(int argc, const char* const argv[]) {
   }
   const auto folder = caseFolder.root() / "postProcessing" / "cloudSummary";
   std::filesystem::create_directories(folder);
+  // All times: the files are written afresh. Some times: merged into the rows already there.
+  const bool someTimes = args.has("time") || args.has("latestTime");
   for (const auto& [cloudName, csv] : csvByCloud) {
-    sphcast::writeFileAtomically(folder / (cloudName + ".csv"), csv);
-    sphcast::info() << "Wrote " << (folder / (cloudName + ".csv")).string() << '\n';
+    const auto file = folder / (cloudName + ".csv");
+    if (someTimes && std::filesystem::exists(file)) {
+      std::ostringstream existing;
+      existing << std::ifstream(file).rdbuf();
+      sphcast::writeFileAtomically(file, sphcast::mergeCloudSummaryCsv(existing.str(), csv));
+      sphcast::info() << "Updated " << file.string() << '\n';
+    } else {
+      sphcast::writeFileAtomically(file, csv);
+      sphcast::info() << "Wrote " << file.string() << '\n';
+    }
   }
   sphcast::info() << "\nEnd\n";
   return 0;

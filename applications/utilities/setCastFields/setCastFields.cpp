@@ -5,11 +5,14 @@
 
 #include "core/CaseFolder.h"
 #include "core/CommandLine.h"
+#include "core/Gravity.h"
 #include "core/Log.h"
 #include "core/TimeControl.h"
 #include "geometry/CastFieldsSetup.h"
+#include "io/TimeFolders.h"
 #include "io/VtpCloud.h"
 #include "solver/CaseWriter.h"
+#include "solver/FlowSetup.h"
 
 namespace {
 
@@ -29,6 +32,21 @@ std::vector<sphcast::ParticleCloud> readMoldClouds(const sphcast::CaseFolder& ca
   return clouds;
 }
 
+// The flow's fluid gets the pressure the solver starts it with, so that the first frame of the
+// series carries p as every later one (ParaView colours the whole series by it).
+void addStartPressure(const sphcast::CaseFolder& caseFolder,
+                      std::vector<sphcast::ParticleCloud>& clouds) {
+  if (!std::filesystem::exists(caseFolder.constantFile("physicsModels"))) return;
+  const sphcast::FlowSetup flow =
+      sphcast::readFlowSetup(caseFolder, sphcast::readGravity(caseFolder));
+  if (!flow.enabled) return;
+  for (sphcast::ParticleCloud& cloud : clouds) {
+    if (cloud.name() != flow.fluidCloud) continue;
+    cloud.addScalarField("p") = sphcast::startPressure(flow, cloud);
+    sphcast::info() << "Cloud " << cloud.name() << ": p as the flow starts it, c^2 (rho - rho_s)\n";
+  }
+}
+
 int setCastFields(int argc, const char* const argv[]) {
   sphcast::CommandLine args("setCastFields",
                             "Fills the regions of system/setCastFieldsDict with particles and "
@@ -37,7 +55,8 @@ int setCastFields(int argc, const char* const argv[]) {
   const sphcast::CaseFolder caseFolder(args.casePath());
   sphcast::printBanner(args.application(), caseFolder.root().string());
 
-  const auto clouds = sphcast::buildCastClouds(caseFolder, readMoldClouds(caseFolder));
+  auto clouds = sphcast::buildCastClouds(caseFolder, readMoldClouds(caseFolder));
+  addStartPressure(caseFolder, clouds);
   std::vector<const sphcast::ParticleCloud*> written;
   for (const auto& cloud : clouds) {
     sphcast::info() << "Cloud " << cloud.name() << ": " << cloud.size() << " particles\n";
@@ -46,6 +65,7 @@ int setCastFields(int argc, const char* const argv[]) {
   const sphcast::TimeState zero;  // value 0, name "0", index 0
   sphcast::writeTimeFolder(caseFolder, zero, written);
   sphcast::writeCaseIndex(caseFolder);
+  sphcast::warnOfStaleCaseIndexes(caseFolder);
   sphcast::info() << "Wrote " << (caseFolder.root() / "0").string() << "\n\nEnd\n";
   return 0;
 }

@@ -1,6 +1,7 @@
 #include "core/dictionary/Dictionary.h"
 
 #include <algorithm>
+#include <utility>
 
 #include "core/dictionary/Parser.h"
 
@@ -23,31 +24,43 @@ std::string listed(const std::vector<std::string>& words) {
   return text + ")";
 }
 
+// Optimal string alignment distance: insertions, deletions, substitutions and transpositions
+// of two neighbouring letters ("modle" for "model") each count one edit. Three rows at a time.
 std::size_t editDistance(std::string_view from, std::string_view to) {
-  // Levenshtein distance, one row at a time.
-  std::vector<std::size_t> row(to.size() + 1);
+  std::vector<std::size_t> beforeLast(to.size() + 1), last(to.size() + 1), row(to.size() + 1);
   for (std::size_t j = 0; j <= to.size(); ++j) row[j] = j;
   for (std::size_t i = 1; i <= from.size(); ++i) {
-    std::size_t diagonal = row[0];
+    std::swap(beforeLast, last);
+    std::swap(last, row);
     row[0] = i;
     for (std::size_t j = 1; j <= to.size(); ++j) {
-      const std::size_t above = row[j];
-      const std::size_t substitution = diagonal + (from[i - 1] == to[j - 1] ? 0 : 1);
-      row[j] = std::min({above + 1, row[j - 1] + 1, substitution});
-      diagonal = above;
+      const std::size_t substitution = last[j - 1] + (from[i - 1] == to[j - 1] ? 0 : 1);
+      row[j] = std::min({last[j] + 1, row[j - 1] + 1, substitution});
+      if (i > 1 && j > 1 && from[i - 1] == to[j - 2] && from[i - 2] == to[j - 1]) {
+        row[j] = std::min(row[j], beforeLast[j - 2] + 1);
+      }
     }
   }
   return row[to.size()];
 }
 
-// The valid key a misspelling most likely meant: within a third of its length (at least one
-// edit), the first of equally near ones; empty if none is that near.
-std::string nearestKey(std::string_view misspelt, const std::vector<std::string>& validKeys) {
+// "; did you mean 'endTime'?" when a valid word is near, else "".
+std::string suggestion(std::string_view misspelt, const std::vector<std::string>& validWords) {
+  const std::string nearest = nearestWord(misspelt, validWords);
+  return nearest.empty() ? "" : "; did you mean " + inQuotes(nearest) + "?";
+}
+
+}  // namespace
+
+std::string nearestWord(std::string_view misspelt, const std::vector<std::string>& validWords) {
   std::string nearest;
   std::size_t nearestDistance = 0;
-  for (const std::string& valid : validKeys) {
-    const std::size_t distance = editDistance(misspelt, valid);
+  for (const std::string& valid : validWords) {
     const std::size_t tolerance = std::max<std::size_t>(1, valid.size() / 3);
+    // The distance is at least the difference in length: a long word is not compared at all.
+    const std::size_t shorter = std::min(misspelt.size(), valid.size());
+    if (std::max(misspelt.size(), valid.size()) - shorter > tolerance) continue;
+    const std::size_t distance = editDistance(misspelt, valid);
     if (distance <= tolerance && (nearest.empty() || distance < nearestDistance)) {
       nearest = valid;
       nearestDistance = distance;
@@ -55,8 +68,6 @@ std::string nearestKey(std::string_view misspelt, const std::vector<std::string>
   }
   return nearest;
 }
-
-}  // namespace
 
 Dictionary Dictionary::read(const std::filesystem::path& file) {
   return dictionary::Parser::readFile(file);
@@ -165,9 +176,11 @@ std::string Dictionary::getChoice(std::string_view key,
   }
   cursor.expectEnd();
   if (std::find(choices.begin(), choices.end(), item.text) == choices.end()) {
+    const std::string didYouMean = suggestion(item.text, choices);
     throw DictionaryError(item.location(), "unknown " + std::string(key) + " " +
-                                               inQuotes(item.text) + "; valid " + std::string(key) +
-                                               " are: " + listed(choices));
+                                               inQuotes(item.text) + didYouMean +
+                                               (didYouMean.empty() ? "; " : " ") + "valid " +
+                                               std::string(key) + " are: " + listed(choices));
   }
   return item.text;
 }
@@ -181,12 +194,10 @@ std::string Dictionary::getChoiceOrDefault(std::string_view key,
 void Dictionary::checkKeys(const std::vector<std::string>& validKeys) const {
   for (const Entry& entry : entries_) {
     if (std::find(validKeys.begin(), validKeys.end(), entry.key) != validKeys.end()) continue;
-    std::string message = "unknown key " + inQuotes(entry.key) + " in " + name_;
-    const std::string suggestion = nearestKey(entry.key, validKeys);
-    if (!suggestion.empty()) message += "; did you mean " + inQuotes(suggestion) + "?";
-    message +=
-        (suggestion.empty() ? "; valid keys are: " : " valid keys are: ") + listed(validKeys);
-    throw DictionaryError(entry.where, message);
+    const std::string didYouMean = suggestion(entry.key, validKeys);
+    throw DictionaryError(entry.where, "unknown key " + inQuotes(entry.key) + " in " + name_ +
+                                           didYouMean + (didYouMean.empty() ? "; " : " ") +
+                                           "valid keys are: " + listed(validKeys));
   }
 }
 

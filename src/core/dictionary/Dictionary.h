@@ -40,6 +40,9 @@ class Dictionary {
   const SourceLocation& location() const { return location_; }
 
   // Keys in file order (an overridden key keeps its first place); the FoamFile header excluded.
+  // A key may be given again to override an entry of an #include file or of a $macro merge
+  // (`$defaults`); a value given twice in one file and scope is an error naming both lines. A
+  // sub-dictionary given twice is merged, its entries by the same rule.
   std::vector<std::string> keys() const;
   bool found(std::string_view key) const;
   bool isDict(std::string_view key) const;
@@ -59,8 +62,8 @@ class Dictionary {
   template <class T>
   T getOrDefault(std::string_view key, const T& fallback) const;
 
-  // A word out of `choices`, OpenFOAM style:
-  // "unknown stopAt 'foo'; valid stopAt are: (endTime writeNow noWriteNow)".
+  // A word out of `choices`, OpenFOAM style, suggesting the nearest one:
+  // "unknown stopAt 'wirteNow'; did you mean 'writeNow'? valid stopAt are: (endTime ...)".
   std::string getChoice(std::string_view key, const std::vector<std::string>& choices) const;
   std::string getChoiceOrDefault(std::string_view key, const std::vector<std::string>& choices,
                                  const std::string& fallback) const;
@@ -82,6 +85,7 @@ class Dictionary {
   struct Entry {
     std::string key;
     SourceLocation where;  // of the key
+    bool copied = false;   // brought in by a $macro merge, not written here
     std::vector<dictionary::ValueItem> value;
     SourceLocation valueEnd;              // just after the value, for "found nothing"
     std::shared_ptr<Dictionary> subDict;  // set for a sub-dictionary, which has no value
@@ -125,5 +129,10 @@ template <class T>
 T Dictionary::getOrDefault(std::string_view key, const T& fallback) const {
   return found(key) ? get<T>(key) : fallback;
 }
+
+// The word of validWords that `misspelt` most likely meant, for "did you mean" in messages:
+// within a third of its length (at least one edit; a swap of two neighbouring letters is one),
+// the first of equally near ones; empty if none is that near.
+std::string nearestWord(std::string_view misspelt, const std::vector<std::string>& validWords);
 
 }  // namespace sphcast

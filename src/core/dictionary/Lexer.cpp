@@ -205,12 +205,11 @@ void Lexer::scanWordOrNumber(Token& token) {
     const char* digitsEnd = digits.data() + digits.size();
     const auto [stop, error] = std::from_chars(digits.data(), digitsEnd, token.number);
     if (error == std::errc::result_out_of_range && stop == digitsEnd) {
-      // Overflow is an error; underflow (1e-400) quietly reads as 0 or a subnormal, as in C.
+      // Overflow is an error, reported by the parser with the key; underflow (1e-400) quietly
+      // reads as 0 or a subnormal, as in C.
       const std::string copy(digits);
       const double value = std::strtod(copy.c_str(), nullptr);
-      if (std::isinf(value) || std::fabs(value) >= 1.0) {
-        fail(token.position, "number out of range: " + token.text);
-      }
+      token.outOfRange = std::isinf(value) || std::fabs(value) >= 1.0;
       token.number = value;
     } else if (error != std::errc() || stop != digitsEnd) {
       fail(token.position, "bad number '" + token.text + "'");

@@ -24,6 +24,8 @@ struct Token {
   std::string text;
   double number = 0.0;
   bool isInteger = false;
+  // Beyond the largest double (1e999): an error where the parser knows whose value it is.
+  bool outOfRange = false;
   char punctuation = '\0';
   TextPosition position;  // first byte
   int endLine = 0;        // just after the last byte, for "missing ';' after ..."

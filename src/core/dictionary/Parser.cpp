@@ -47,6 +47,15 @@ void checkNesting(int depth, const Token& where) {
   }
 }
 
+// A number beyond the largest double is named with the key whose value holds it.
+void checkInRange(const Token& number, const std::string& key) {
+  if (number.outOfRange) {
+    throw DictionaryError(locationOf(number), "number " + number.text + " for " + inQuotes(key) +
+                                                  " is out of range: its magnitude exceeds the "
+                                                  "largest double, 1.8e308");
+  }
+}
+
 // `3(a b c)`: an unsigned integer written right against '(' counts the list that follows.
 bool isListCount(const Token& number, const Token& following) {
   return number.kind == Token::Kind::Number && number.isInteger && number.text.front() != '-' &&
@@ -223,6 +232,7 @@ bool Parser::parseItem(Lexer& lexer, const Token& token, std::vector<ValueItem>&
                        const std::string& key, int depth) {
   switch (token.kind) {
     case Token::Kind::Number:
+      checkInRange(token, key);
       if (token.isInteger && lexer.peek().is('{') && !lexer.peek().afterSpace) {
         throw DictionaryError(
             locationOf(token),
@@ -325,6 +335,7 @@ ValueItem Parser::parseDimensions(Lexer& lexer, const Token& opening, const std:
       throw DictionaryError(locationOf(token), "expected a number in the dimension set of " +
                                                    inQuotes(key) + ", found " + describe(token));
     }
+    checkInRange(token, key);
     dimensions.items.push_back(itemFrom(token));
   }
   const std::size_t count = dimensions.items.size();
@@ -461,6 +472,7 @@ std::shared_ptr<Dictionary> Parser::cloneDictionary(const Dictionary& source,
     Entry cloned;
     cloned.key = entry.key;
     cloned.where = entry.where;
+    cloned.copied = true;
     cloned.valueEnd = entry.valueEnd;
     if (entry.subDict) {
       checkNesting(depth + 1, macro);
@@ -479,11 +491,25 @@ void Parser::insertEntry(Dictionary& scope, Entry entry) {
   Entry* existing = scope.findEntry(entry.key);
   if (!existing) {
     scope.appendEntry(std::move(entry));
-  } else if (existing->subDict && entry.subDict) {
-    for (Entry& child : entry.subDict->entries_) insertEntry(*existing->subDict, std::move(child));
-  } else {
-    *existing = std::move(entry);
+    return;
   }
+  if (existing->subDict && entry.subDict) {
+    for (Entry& child : entry.subDict->entries_) insertEntry(*existing->subDict, std::move(child));
+    return;
+  }
+  // The same place read twice is one file included twice, not a key typed twice.
+  const bool samePlace =
+      existing->where.line == entry.where.line && existing->where.column == entry.where.column;
+  if (!existing->copied && !entry.copied && existing->where.file == entry.where.file &&
+      !samePlace) {
+    throw DictionaryError(entry.where, "duplicate key " + inQuotes(entry.key) + " in " +
+                                           scope.name_ + ": given at lines " +
+                                           std::to_string(existing->where.line) + " and " +
+                                           std::to_string(entry.where.line) +
+                                           "; remove one (a key may override only an entry of "
+                                           "an #include file or of a $macro merge)");
+  }
+  *existing = std::move(entry);
 }
 
 }  // namespace sphcast::dictionary

@@ -56,7 +56,9 @@ class Parser {
   void chargeCopy(const Token& macro);
 
   // Adds or overrides `entry`; a sub-dictionary given again is merged into the earlier one
-  // (OpenFOAM's default #inputMode merge).
+  // (OpenFOAM's default #inputMode merge), entry by entry. Unlike OpenFOAM, which overrides
+  // silently, a value written twice in the same file and scope is an error: only an entry of
+  // another file (an #include) or one copied by a $macro merge may be overridden, or override.
   static void insertEntry(Dictionary& scope, Entry entry);
 
   std::vector<Dictionary*> scopes_;                  // outermost first, for $macro lookup

@@ -217,19 +217,52 @@ TEST(Dictionary, CommentsAreSkippedAndLocationsCountThem) {
   EXPECT_EQ(dict.get<double>("deltaT"), 1e-3);
 }
 
-TEST(Dictionary, KeysKeepFileOrderAndLaterDuplicatesOverride) {
-  const Dictionary dict = parse("b 1; a 2;\nb 3;");
-  EXPECT_EQ(dict.keys(), (std::vector<std::string>{"b", "a"}));
+TEST(Dictionary, KeysKeepFileOrderAndAMacroMergeMayOverride) {
+  const Dictionary dict = parse("b 1; a 2;\nlater { b 3; }\n$later");
+  EXPECT_EQ(dict.keys(), (std::vector<std::string>{"b", "a", "later"}));
   EXPECT_EQ(dict.get<int>("b"), 3);
-  EXPECT_EQ(dict.location("b").str(), "controlDict:2:1");
+  EXPECT_EQ(dict.location("b").str(), "controlDict:2:9");
 }
 
+// OpenFOAM overrides a key given twice silently; sphCast takes it for a mistake, unless the
+// earlier or the later entry comes from an #include file or a $macro merge.
+TEST(DictionaryError, KeyGivenTwiceInOneFileNamesBothLines) {
+  EXPECT_EQ(parseError("b 1; a 2;\nb 3;"),
+            "controlDict:2:1: duplicate key 'b' in controlDict: given at lines 1 and 2; remove "
+            "one (a key may override only an entry of an #include file or of a $macro merge)");
+  EXPECT_EQ(
+      parseError("flow\n{\n    model none;\n    fluid metal;\n    model weaklyCompressible;\n}"),
+      "controlDict:5:5: duplicate key 'model' in controlDict/flow: given at lines 3 and 5; "
+      "remove one (a key may override only an entry of an #include file or of a $macro "
+      "merge)");
+  EXPECT_EQ(parseError("d { x 1; }\nd { x 2; }"),
+            "controlDict:2:5: duplicate key 'x' in controlDict/d: given at lines 1 and 2; remove "
+            "one (a key may override only an entry of an #include file or of a $macro merge)");
+  EXPECT_EQ(parseError("e { u 1; }\ne 5;"),
+            "controlDict:2:1: duplicate key 'e' in controlDict: given at lines 1 and 2; remove "
+            "one (a key may override only an entry of an #include file or of a $macro merge)");
+}
+
+// As in OpenFOAM (#inputMode merge): a sub-dictionary given again adds its entries; none of
+// them may repeat a value of the first (KeyGivenTwiceInOneFileNamesBothLines).
 TEST(Dictionary, SubDictionaryGivenTwiceIsMerged) {
-  const Dictionary dict = parse("d { x 1; y 2; } d { y 3; z 4; } e { u 1; } e 5;");
+  const Dictionary dict = parse("d { x 1; y 2; }\nd { z 4; }");
+  EXPECT_EQ(dict.subDict("d").keys(), (std::vector<std::string>{"x", "y", "z"}));
+  EXPECT_EQ(dict.subDict("d").get<int>("z"), 4);
+}
+
+TEST(Dictionary, SubDictionaryGivenAgainByAMacroMergeIsMerged) {
+  const Dictionary dict = parse("d { x 1; y 2; } e { u 1; }\nmore { d { y 3; z 4; } e 5; }\n$more");
   const Dictionary& d = dict.subDict("d");
   EXPECT_EQ(d.keys(), (std::vector<std::string>{"x", "y", "z"}));
   EXPECT_EQ(d.get<int>("y"), 3);
   EXPECT_EQ(dict.get<int>("e"), 5);  // a value replaces a dictionary outright
+}
+
+TEST(Dictionary, SameFileIncludedTwiceOverridesWithoutComplaint) {
+  const Dictionary dict = Dictionary::parse(
+      "m { #include \"common/material\"\n#include \"common/material\"\n }", dataDir + "/main");
+  EXPECT_EQ(dict.subDict("m").keys(), (std::vector<std::string>{"density", "viscosity"}));
 }
 
 TEST(Dictionary, StraySemicolonsAndEmptyValuesAreAccepted) {
@@ -317,7 +350,7 @@ TEST(Dictionary, DictionaryMacroMergesOrCopiesEntries) {
 }
 
 TEST(Dictionary, MacroSeesTheValueAtTheTimeItIsRead) {
-  const Dictionary dict = parse("a 1; b $a; a 2;");
+  const Dictionary dict = parse("later { a 2; }\na 1; b $a;\n$later");
   EXPECT_EQ(dict.get<int>("b"), 1);
   EXPECT_EQ(dict.get<int>("a"), 2);
 }
@@ -437,6 +470,24 @@ TEST(DictionaryError, MisspelledKeySuggestsTheNearestValidKey) {
             }),
             "controlDict:2:1: unknown key 'endTme' in controlDict; did you mean 'endTime'? "
             "valid keys are: (startTime endTime deltaT)");
+}
+
+TEST(DictionaryError, SwappedLettersCountAsOneEditInTheSuggestion) {
+  const Dictionary dict = parse("flow\n{\n    modle weaklyCompressible;\n}\n");
+  EXPECT_EQ(errorOf([&] {
+              dict.subDict("flow").checkKeys({"model", "fluid", "walls"});
+            }),
+            "controlDict:3:5: unknown key 'modle' in controlDict/flow; did you mean 'model'? "
+            "valid keys are: (model fluid walls)");
+}
+
+TEST(DictionaryError, UnknownChoiceSuggestsTheNearestValidOne) {
+  const Dictionary dict = parse("stopAt wirteNow;");
+  EXPECT_EQ(errorOf([&] {
+              dict.getChoice("stopAt", {"endTime", "writeNow", "noWriteNow"});
+            }),
+            "controlDict:1:8: unknown stopAt 'wirteNow'; did you mean 'writeNow'? valid stopAt "
+            "are: (endTime writeNow noWriteNow)");
 }
 
 TEST(DictionaryError, UnknownKeyWithNothingNearListsTheValidKeys) {
@@ -606,8 +657,16 @@ TEST(DictionaryError, BadOrOutOfRangeNumber) {
   EXPECT_EQ(parseError("a 1.2.3;"), "controlDict:1:3: bad number '1.2.3'");
   EXPECT_EQ(parseError("a 0x1F;"), "controlDict:1:3: bad number '0x1F'");
   EXPECT_EQ(parseError("a 12abc;"), "controlDict:1:3: bad number '12abc'");
-  EXPECT_EQ(parseError("a 1e999;"), "controlDict:1:3: number out of range: 1e999");
-  EXPECT_EQ(parseError("a -1e999;"), "controlDict:1:3: number out of range: -1e999");
+}
+
+TEST(DictionaryError, NumberBeyondTheLargestDoubleNamesItsKey) {
+  const std::string beyond = " is out of range: its magnitude exceeds the largest double, 1.8e308";
+  EXPECT_EQ(parseError("a 1e999;"), "controlDict:1:3: number 1e999 for 'a'" + beyond);
+  EXPECT_EQ(parseError("b 1;\ng (0 0 -1e999);"), "controlDict:2:8: number -1e999 for 'g'" + beyond);
+  EXPECT_EQ(parseError("nu [0 2e999 -1 0 0 0 0] 1;"),
+            "controlDict:1:7: number 2e999 for 'nu'" + beyond);
+  EXPECT_EQ(parseError("sub { deep { x 1e400; } }"),
+            "controlDict:1:16: number 1e400 for 'x'" + beyond);
 }
 
 TEST(DictionaryError, UnsupportedDirectives) {

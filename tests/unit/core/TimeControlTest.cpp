@@ -112,6 +112,31 @@ TEST_F(TimeControlTest, RestartFromLatestTimeContinuesFromTheExactSavedState) {
   EXPECT_EQ(time.startTimeName(), "0.3");
 }
 
+// A time folder without uniform/time (copied by hand, or from another tool) starts at its
+// name's value and index 0, as in OpenFOAM, with a warning saying so.
+TEST_F(TimeControlTest, RestartWithoutUniformTimeWarnsWhatItAssumes) {
+  controlDict(
+      "startFrom latestTime; endTime 1; deltaT 0.1; writeControl timeStep; writeInterval 1;");
+  fs::create_directories(tmp.root() / "0.3");
+  const CaseFolder caseFolder(tmp.root());
+  ::testing::internal::CaptureStderr();
+  const TimeControl time(caseFolder);
+  const std::string warning = ::testing::internal::GetCapturedStderr();
+  EXPECT_EQ(time.value(), 0.3);
+  EXPECT_EQ(time.timeIndex(), 0);
+  EXPECT_NE(warning.find((tmp.root() / "0.3/uniform/time").string() +
+                         " is missing: starting at time 0.3 (the folder's name) with time index 0"),
+            std::string::npos)
+      << warning;
+
+  // Time 0 (setCastFields writes uniform/time, but an older 0/ may lack it) is exact anyway.
+  controlDict(
+      "startFrom firstTime; endTime 1; deltaT 0.1; writeControl timeStep; writeInterval 1;");
+  ::testing::internal::CaptureStderr();
+  const TimeControl fromZero(caseFolder);
+  EXPECT_EQ(::testing::internal::GetCapturedStderr(), "");
+}
+
 TEST_F(TimeControlTest, StartFromStartTimeNeedsThatFolder) {
   controlDict("startFrom startTime; startTime 0.5; endTime 1; deltaT 0.1; writeInterval 1;");
   const CaseFolder caseFolder(tmp.root());

@@ -21,23 +21,14 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// Values that a text format or a careless conversion would not keep bit for bit.
+// Values that a text format or a careless conversion would not keep bit for bit (all finite:
+// the reader refuses NaN and infinities, NonFiniteOrNonPositiveValuesAreRefused...).
 std::vector<Real> awkwardValues() {
   using Limits = std::numeric_limits<Real>;
-  return {Real(0),
-          -Real(0),
-          Limits::denorm_min(),
-          -Limits::denorm_min(),
-          Limits::min() / 3,
-          Limits::min(),
-          Limits::max(),
-          Limits::lowest(),
-          Limits::epsilon(),
-          Real(1) / 3,
-          Real(0.1),
-          Limits::infinity(),
-          -Limits::infinity(),
-          Limits::quiet_NaN()};
+  return {
+      Real(0),       -Real(0),      Limits::denorm_min(), -Limits::denorm_min(), Limits::min() / 3,
+      Limits::min(), Limits::max(), Limits::lowest(),     Limits::epsilon(),     Real(1) / 3,
+      Real(0.1)};
 }
 
 // A cloud with random fields, the awkward values sprinkled over the first particles.
@@ -52,7 +43,7 @@ ParticleCloud randomCloud(std::size_t count, unsigned seed) {
   ParticleCloud cloud("metal");
   cloud.resize(count);
   auto& temperature = cloud.addScalarField("T");
-  auto& density = cloud.addScalarField("rho");
+  auto& pressure = cloud.addScalarField("p");  // any sign (rho, mass, ... must be positive)
   auto& velocity = cloud.addVectorField("U");
   auto& force = cloud.addVectorField("force");
   auto& id = cloud.addIdField("id");
@@ -62,7 +53,7 @@ ParticleCloud randomCloud(std::size_t count, unsigned seed) {
     velocity[i] = Vector(value(i, 2), value(i, 0), value(i, 1));
     force[i] = Vector(value(i, 1), value(i, 2), value(i, 0));
     temperature[i] = value(i, 0);
-    density[i] = value(i, 1);
+    pressure[i] = value(i, 1);
     id[i] = static_cast<std::int64_t>(random());
     origin[i] = -static_cast<std::int64_t>(i);
   }
@@ -118,8 +109,58 @@ TEST_F(VtpCloudTest, WriteThenReadIsBitExact) {
   EXPECT_TRUE(read.identicalTo(cloud));
   expectAttributesBitwiseEqual(cloud, read);
   EXPECT_TRUE(std::signbit(read.positions()[0].y()));  // -0.0 kept
-  EXPECT_EQ(read.scalarField("T")[4], -std::numeric_limits<Real>::infinity());
-  EXPECT_TRUE(std::isnan(read.scalarField("rho")[4]));
+  EXPECT_EQ(read.scalarField("T")[2], std::numeric_limits<Real>::max());
+  EXPECT_EQ(read.scalarField("p")[2], std::numeric_limits<Real>::lowest());
+}
+
+// A NaN or infinity in a start time's cloud, or a zero or negative mass, density, viscosity or
+// volume, is refused when read, naming the file, the cloud, the position or field, the particle
+// and the value; not later by the neighbour grid or as 0/0, without a file.
+TEST_F(VtpCloudTest, NonFiniteOrNonPositiveValuesAreRefusedNamingFileCloudFieldAndParticle) {
+  const fs::path file = folder_ / "metal.vtp";
+  auto expectRefused = [&](const ParticleCloud& cloud, const std::string& because) {
+    writeCloudVtp(cloud, file);
+    try {
+      readCloudVtp(file, "metal");
+      ADD_FAILURE() << "no Error for " << because;
+    } catch (const Error& error) {
+      EXPECT_EQ(std::string(error.what()), "cannot read cloud file '" + file.string() +
+                                               "': cloud 'metal': " + because +
+                                               "; particle positions and fields must be finite");
+    }
+  };
+  const Real nan = std::numeric_limits<Real>::quiet_NaN();
+  const Real inf = std::numeric_limits<Real>::infinity();
+  ParticleCloud cloud = randomCloud(20, 9);
+  cloud.positions()[13].z() = nan;
+  expectRefused(cloud, "the position of particle 13 is nan");
+  cloud = randomCloud(20, 9);
+  cloud.scalarField("T")[7] = -inf;
+  expectRefused(cloud, "field 'T' of particle 7 is -inf");
+  cloud = randomCloud(20, 9);
+  cloud.vectorField("U")[19].y() = inf;
+  expectRefused(cloud, "field 'U' of particle 19 is inf");
+
+  // A cloud the flow would divide by zero with (mass, rho, viscosity) or weigh wrongly (volume).
+  const std::string positive = "; it must be positive (valid range: > 0)";
+  for (const char* field : {"mass", "restDensity", "rho", "viscosity", "volume"}) {
+    cloud = randomCloud(20, 9);
+    std::vector<Real>& values =
+        cloud.hasScalarField(field) ? cloud.scalarField(field) : cloud.addScalarField(field);
+    std::fill(values.begin(), values.end(), Real(1));
+    values[11] = Real(0);
+    writeCloudVtp(cloud, file);
+    expectReadErrorNamingFile(
+        file, std::string("cloud 'metal': field '") + field + "' of particle 11 is 0" + positive);
+    values[11] = Real(-2.5);
+    writeCloudVtp(cloud, file);
+    expectReadErrorNamingFile(file, std::string("field '") + field + "' of particle 11 is -2.5");
+  }
+
+  cloud = randomCloud(20, 9);
+  cloud.attributes()["spacing"] = nan;
+  writeCloudVtp(cloud, file);
+  expectReadErrorNamingFile(file, "attribute 'spacing' is nan");
 }
 
 TEST_F(VtpCloudTest, ReadKeepsFieldKinds) {
@@ -127,7 +168,7 @@ TEST_F(VtpCloudTest, ReadKeepsFieldKinds) {
   writeCloudVtp(randomCloud(10, 1), file);
   const ParticleCloud read = readCloudVtp(file, "metal");
   EXPECT_TRUE(read.hasScalarField("T"));
-  EXPECT_TRUE(read.hasScalarField("rho"));
+  EXPECT_TRUE(read.hasScalarField("p"));
   EXPECT_TRUE(read.hasVectorField("U"));
   EXPECT_TRUE(read.hasVectorField("force"));
   EXPECT_TRUE(read.hasIdField("id"));

@@ -44,8 +44,8 @@ class FunctionObjectTest : public testing::TemporaryFolderTest {
 
 TEST_F(FunctionObjectTest, BadEntriesAreErrorsAtTheirKey) {
   EXPECT_EQ(errorOf("P1 { type probe; cloud fluid; }"),
-            "controlDict:1:22: unknown type 'probe'; valid type are: (probes surfaceHeights "
-            "front fieldMinMax)");
+            "controlDict:1:22: unknown type 'probe'; did you mean 'probes'? valid type are: "
+            "(probes surfaceHeights front fieldMinMax)");
   EXPECT_NE(
       errorOf("P1 { type probes; fields (p); probeLocations ((0 0 0)); }").find("controlDict:1:"),
       std::string::npos);

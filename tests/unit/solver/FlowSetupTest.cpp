@@ -5,6 +5,7 @@
 #include <string>
 
 #include "core/CaseFolder.h"
+#include "core/Error.h"
 #include "core/dictionary/SourceLocation.h"
 #include "solver/FlowSetup.h"
 #include "support/TemporaryCase.h"
@@ -70,6 +71,7 @@ TEST(FlowSetup, RestDensityFromATemperatureTable) {
   const FlowSetup setup = flowCase.read();
   ParticleCloud water("water");
   water.resize(3);
+  water.attributes()["spacing"] = 0.01;
   auto& temperature = water.addScalarField("T");
   temperature = {850, 950, 1100};
   water.addScalarField("volume") = {1e-9, 1e-9, 1e-9};
@@ -83,6 +85,7 @@ TEST(FlowSetup, RestDensityFromATemperatureTable) {
 
   ParticleCloud cold("water");
   cold.resize(1);
+  cold.attributes()["spacing"] = 0.01;
   cold.addScalarField("volume") = {1e-9};
   try {
     prepareFluidFields(setup, cold);
@@ -120,6 +123,94 @@ TEST(FlowSetup, BadKeysAreErrorsAtTheirLine) {
               "kernelCorrection");
   expectError(errorOf(FlowCase("", "densityScheme deltaSPH;\ndeltaSPHCoeffs { delta -1; }\n")),
               "sphSchemes:3", "'delta' must not be negative");
+}
+
+// A zero viscosity would make the harmonic mean of two particles' viscosities 0/0.
+TEST(FlowSetup, NonPositiveViscosityIsAnErrorWithItsValueAndRange) {
+  const FlowCase flowCase("", "densityScheme riemann;\n");
+  flowCase.write("constant/physicalProperties",
+                 std::string(header) + "water { density 1000; viscosity 0; }\n");
+  EXPECT_EQ(errorOf(flowCase),
+            (flowCase.root() / "constant/physicalProperties").string() +
+                ":2:23: 'viscosity' is 0 in physicalProperties/water; it must be positive (valid "
+                "range: > 0)");
+}
+
+// The flow needs the fluid's spacing dx (the step limits, h/dx): a cloud not written by
+// setCastFields may lack it, which used to end the run with a bare "map::at".
+TEST(FlowSetup, FluidWithoutSpacingOrWithASupportRadiusOutOfRangeIsAnError) {
+  const FlowSetup setup = FlowCase("", "densityScheme riemann;\n").read();  // h = 0.03 m
+  ParticleCloud water("water");
+  water.resize(2);
+  water.addScalarField("volume") = {1e-6, 1e-6};
+  try {
+    prepareFluidFields(setup, water);
+    ADD_FAILURE() << "a cloud without spacing was accepted";
+  } catch (const Error& error) {
+    EXPECT_EQ(std::string(error.what()),
+              "cloud 'water' (water.vtp of the start time) has no positive 'spacing' attribute, "
+              "the particle spacing dx that the flow needs; write the cloud with setCastFields, "
+              "which records it");
+  }
+
+  for (const double spacing : {0.001, 0.05}) {  // h/dx = 30 and 0.6
+    water.attributes()["spacing"] = spacing;
+    try {
+      prepareFluidFields(setup, water);
+      ADD_FAILURE() << "h/dx = " << 0.03 / spacing << " was accepted";
+    } catch (const DictionaryError& error) {
+      const std::string message = error.what();
+      EXPECT_NE(message.find("sphSchemes:4:1: 'supportRadius' 0.03 m is "), std::string::npos)
+          << message;
+      EXPECT_NE(message.find("supportRadius/spacing must lie in [1.2, 6]"), std::string::npos)
+          << message;
+    }
+  }
+  water.attributes()["spacing"] = 0.01;  // h/dx = 3
+  EXPECT_NO_THROW(prepareFluidFields(setup, water));
+}
+
+// setCastFields writes p to 0/ (the first frame of the series) as the flow starts it: eq. (3)
+// on the start's rho, or on rho = rho_s where the cloud has none.
+TEST(FlowSetup, StartPressureIsTheEquationOfStateOfTheStartDensity) {
+  const FlowSetup setup = FlowCase("", "densityScheme riemann;\n").read();  // c = 10 m/s
+  ParticleCloud water("water");
+  water.resize(3);
+  water.attributes()["spacing"] = 0.01;
+  water.addScalarField("volume") = {1e-6, 1e-6, 1e-6};
+  EXPECT_EQ(startPressure(setup, water), (std::vector<Real>{0, 0, 0}));
+  EXPECT_FALSE(water.hasScalarField("rho"));  // the cloud itself is left as it was
+  water.addScalarField("rho") = {1000, 1001, 999.5};
+  EXPECT_EQ(startPressure(setup, water), (std::vector<Real>{0, 100, -50}));
+}
+
+// `fluid water;` in constant/physicsModels without a material water in
+// constant/physicalProperties: the error is at the 'fluid' entry, names the file that lacks the
+// material and lists the materials it has.
+TEST(FlowSetup, FluidMaterialMissingFromPhysicalPropertiesIsReportedWhereItIsNamed) {
+  const FlowCase flowCase("", "densityScheme riemann;\n");
+  flowCase.write("constant/physicalProperties",
+                 std::string(header) + "steel { density 7000; viscosity 5e-3; }\n");
+  const std::string message = errorOf(flowCase);
+  EXPECT_EQ(message, (flowCase.root() / "constant/physicsModels").string() +
+                         ":2:34: 'fluid' names the material 'water', which is not in " +
+                         (flowCase.root() / "constant/physicalProperties").string() +
+                         "; materials there: (steel)");
+
+  flowCase.write("constant/physicalProperties", std::string(header) +
+                                                    "steel { density 7000; viscosity 5e-3; }\n" +
+                                                    "watr { density 1000; viscosity 1e-3; }\n");
+  EXPECT_NE(errorOf(flowCase).find("; did you mean 'watr'? materials there: (steel watr)"),
+            std::string::npos)
+      << errorOf(flowCase);
+}
+
+TEST(FlowSetup, PhysicalPropertiesMayHoldOtherMaterialsThanTheFluid) {
+  const FlowCase flowCase("", "densityScheme riemann;\n");
+  flowCase.write("constant/physicalProperties", std::string(header) +
+                                                    "steel { density 7000; viscosity 5e-3; }\n" +
+                                                    "water { density 1000; viscosity 1e-3; }\n");
+  EXPECT_EQ(errorOf(flowCase), "");
 }
 
 }  // namespace
