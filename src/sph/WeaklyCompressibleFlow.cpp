@@ -59,6 +59,12 @@ WeaklyCompressibleFlow::WeaklyCompressibleFlow(FlowSettings settings, ParticleCl
     throw Error("unknown viscousForm '" + settings_.viscousForm +
                 "'; valid viscousForm are: (Morris Cleary)");
   }
+  const auto spacing = fluid_.attributes().find("spacing");
+  if (spacing == fluid_.attributes().end() || !(spacing->second > 0)) {
+    throw Error("flow: cloud '" + fluid_.name() +
+                "' has no positive 'spacing' attribute (the particle spacing dx, which "
+                "setCastFields writes)");
+  }
   // Each look-up throws an Error naming the cloud and the fields it has.
   fluid_.vectorField("U");
   for (const char* name : {"rho", "mass", "viscosity", "restDensity"}) fluid_.scalarField(name);
