@@ -47,6 +47,7 @@ struct FlowStepLimits {
   double viscous;       // 0.125 dx^2 / nu_max
   double bodyForce;     // 0.25 sqrt(dx / |g|)
   double acceleration;  // 0.25 sqrt(dx / |a|max), Monaghan's force criterion
+  double densityRate;   // 0.02 min rho / |drho/dt|: no density changes by more than 2 % a step
   double smallest(std::string& limiter) const;
 };
 
