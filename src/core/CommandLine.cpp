@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "core/Error.h"
-#include "core/OpenMPWaitPolicy.h"
+#include "core/OpenMPSettings.h"
 
 namespace po = boost::program_options;
 
@@ -71,6 +71,7 @@ std::filesystem::path CommandLine::casePath() const { return values_["case"].as<
 int runApplication(const std::string& application, int (*body)(int, const char* const[]),
                    int argc, const char* const argv[]) {
   adoptPassiveWaitPolicy(const_cast<char**>(argv));  // execv takes, and keeps, the same strings
+  chooseThreadCount();
   // An exception cannot leave an OpenMP loop (a bad_alloc in one terminates the program): say
   // what it was before the program aborts.
   static std::string name;

@@ -8,12 +8,9 @@
 #include <iostream>
 #include <sstream>
 
-#include "core/OpenMPWaitPolicy.h"
+#include "core/OpenMPSettings.h"
 #include "core/Real.h"
 
-#ifdef _OPENMP
-#include <omp.h>
-#endif
 
 namespace sphcast {
 
@@ -30,10 +27,6 @@ void printBanner(const std::string& application, const std::string& caseRoot) {
   const std::time_t now = std::time(nullptr);
   char date[64];
   std::strftime(date, sizeof date, "%b %d %Y %H:%M:%S", std::localtime(&now));
-  int threads = 1;
-#ifdef _OPENMP
-  threads = omp_get_max_threads();
-#endif
   info() << "/*---------------------------------------------------------------------------*\\\n"
          << "  sphCast: SPH casting simulation                 https://github.com/sphCast\n"
          << "\\*---------------------------------------------------------------------------*/\n"
@@ -44,8 +37,7 @@ void printBanner(const std::string& application, const std::string& caseRoot) {
          << "Host     : " << host << '\n'
          << "PID      : " << getpid() << '\n'
          << "Case     : " << caseRoot << '\n'
-         << "nThreads : " << threads << " (OpenMP, wait policy " << openMPWaitPolicy()
-         << ")\n\n";
+         << "nThreads : " << openMPSummary() << "\n\n";
 }
 
 namespace {
