@@ -247,6 +247,7 @@ std::string CastingSolver::checkHealth() {
     }
     if (!health.hasDensity) continue;
     const double deviation = health.largestDensityDeviation;
+    if (deviation <= health_.warnDensityDeviation) continue;
     const std::string where =
         describeParticle(cloud, health.mostDeviating, health.mostDeviatingPosition);
     if (deviation > health_.maxDensityDeviation) {
@@ -255,8 +256,7 @@ std::string CastingSolver::checkHealth() {
               << 100 * health_.maxDensityDeviation << " %)";
       return problem.str();
     }
-    if (deviation > health_.warnDensityDeviation &&
-        warnings_.shouldPrint("density deviation above " +
+    if (warnings_.shouldPrint("density deviation above " +
                                   std::to_string(std::lround(100 * health_.warnDensityDeviation)) +
                                   " %",
                               deviation)) {
@@ -318,13 +318,18 @@ void CastingSolver::stopWithLastGoodState(const TimeState& good, bool restoreSav
                                           const std::string& what) {
   const std::string badTime = time_.timeName();
   const long badIndex = time_.timeIndex();
-  if (restoreSaved && fluid_ && lastGoodFluid_) *fluid_ = *lastGoodFluid_;
+  logTimeSpent();
+  const std::string failure =
+      "at time " + badTime + " (step " + std::to_string(badIndex) + "): " + what + ". ";
+  // Only the flow keeps the state before the step; ballistic clouds have nothing to go back to.
+  if (restoreSaved && !lastGoodFluid_) {
+    throw Error(failure + "Nothing is written: the last written time is the last good state.");
+  }
+  if (restoreSaved) *fluid_ = *lastGoodFluid_;
   std::vector<const ParticleCloud*> written;
   for (const ParticleCloud& cloud : clouds_) written.push_back(&cloud);
   writer_.write(good, written);
-  logTimeSpent();
-  throw Error("at time " + badTime + " (step " + std::to_string(badIndex) + "): " + what +
-              ". The last good state, time " + good.name +
+  throw Error(failure + "The last good state, time " + good.name +
               ", is written (it passed every check); restart from it with a smaller maxCo or "
               "deltaT, a larger soundSpeed, or look for a gap in the walls there.");
 }

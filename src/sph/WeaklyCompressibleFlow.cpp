@@ -88,9 +88,11 @@ WeaklyCompressibleFlow::WeaklyCompressibleFlow(FlowSettings settings, ParticleCl
   fluid_.addScalarField("p");
   fluid_.addVectorField("acceleration");
   fluid_.addScalarField("densityRate");
-  // A restarted cloud was written in cell order after its last search: searching again moves
-  // no particle, so the restart stays bit for bit, and the log's pair count is right.
-  findNeighbours();
+  // A restarted cloud keeps the order it was written in (the wall clearance may have moved a
+  // particle into another cell after the last reorder; reordering it now would change the
+  // order of the next step's sums): the restart stays bit for bit, and the log's pair count
+  // is right.
+  findNeighbours(restarted ? CloudOrder::keep : CloudOrder::byCell);
   if (!restarted) {
     updatePressure();
     computeRates();
@@ -116,11 +118,11 @@ void WeaklyCompressibleFlow::requirePlane() const {
   for (const ParticleCloud* wall : walls_) check(*wall);
 }
 
-void WeaklyCompressibleFlow::findNeighbours() {
+void WeaklyCompressibleFlow::findNeighbours(CloudOrder order) {
   fluidGrid_.build(fluid_.positions());
   // a cloud still in cell order (no particle changed cell) needs no reorder, which would copy
   // every field
-  if (!fluidGrid_.inCellOrder()) {
+  if (order == CloudOrder::byCell && !fluidGrid_.inCellOrder()) {
     fluid_.reorder(fluidGrid_.sortPermutation());
     fluidGrid_.adoptCellOrder();
   }
@@ -148,12 +150,6 @@ void WeaklyCompressibleFlow::keepClearOfWalls() {
   // The lists stay those of the positions before the move (at most a quarter spacing, most far
   // less): a pair that came within h misses W's last (1 - r/h)^4 sliver, and one that left it
   // adds W = 0. A second search for the few particles moved would cost as much as the first.
-}
-
-WallSurfaceDistance WeaklyCompressibleFlow::wallSurfaceDistanceOf(std::size_t i) const {
-  const Real spacing = static_cast<Real>(fluid_.attributes().at("spacing"));
-  return wallSurfaceDistance(fluid_.positions()[i], i, wallSurfaces(), settings_.periodic,
-                             spacing);
 }
 
 void WeaklyCompressibleFlow::updatePressure() {

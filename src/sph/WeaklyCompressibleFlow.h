@@ -79,10 +79,8 @@ class WeaklyCompressibleFlow {
 
   std::size_t fluidPairCount() const { return fluidNeighbours_.pairCount(); }
 
-  // What the wall clearance did in the last step, and the estimate of one particle's distance
-  // in front of the wall surface (for the run's health checks).
+  // What the wall clearance did in the last step (for the run's health checks).
   const WallClearanceReport& lastWallClearance() const { return lastClearance_; }
-  WallSurfaceDistance wallSurfaceDistanceOf(std::size_t i) const;
 
   const FlowTimings& timings() const { return timings_; }
 
@@ -93,7 +91,8 @@ class WeaklyCompressibleFlow {
   enum class RatePart { both, densityRate, acceleration };
   void requirePlane() const;
   void stepStormerVerlet(Real dt);
-  void findNeighbours();
+  enum class CloudOrder { byCell, keep };
+  void findNeighbours(CloudOrder order = CloudOrder::byCell);
   // Moves fluid particles closer than the clearance back from the walls (WallClearance.h).
   void keepClearOfWalls();
   std::vector<WallSurfaceView> wallSurfaces() const;
