@@ -69,7 +69,9 @@ std::string openMPSummary() {
 #endif
   const char* policy = std::getenv("OMP_WAIT_POLICY");
   text << threads << " (OpenMP, wait policy "
-       << (policy ? policy : std::getenv("GOMP_SPINCOUNT") ? "GOMP_SPINCOUNT" : "default");
+       << (policy                          ? policy
+           : std::getenv("GOMP_SPINCOUNT") ? "GOMP_SPINCOUNT"
+                                           : "default");
   if (threadsChosen) {
     text.precision(2);
     text << "; " << idleAtStart << " of "

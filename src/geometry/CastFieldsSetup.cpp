@@ -381,8 +381,8 @@ ParticleCloud fillCloud(const CloudPlan& plan, double spacing, int dimension,
            << " m to a mold particle\n";
     // Between the particles of a curved wall a lattice point can lie right on the wall surface
     // and still be wallClearance from every mold particle. Such a point is moved back along the
-    // wall normal to the flow's wall clearance (the flow would do it at its first step); it
-    // keeps its mass, which leaving it out would lose (5 % of a column 10 dx across).
+    // wall normal to the flow's default wall clearance (the flow would do it at its first step);
+    // it keeps its mass, which leaving it out would lose (5 % of a column 10 dx across).
     const Real minimumGap = static_cast<Real>(wallClearanceInSpacings * spacing);
     const auto surfaces = mold.wallSurfaceDistances(centres, 1.5 * spacing);
     std::size_t moved = 0;
@@ -432,12 +432,16 @@ ParticleCloud fillCloud(const CloudPlan& plan, double spacing, int dimension,
     CellGrid beyondGrid(static_cast<Real>(mold.clearance()));
     if (!beyond.empty()) beyondGrid.build(beyond);
     NeighbourList nearBeyond;
+    // ... and no move brings a particle nearer a wall surface than the flow's clearance
+    const Real minimumGap = static_cast<Real>(wallClearanceInSpacings * spacing);
     auto allowed = [&](const std::vector<Vector>& trial) {
       std::vector<bool> ok = mold.clear(trial);
       if (!beyond.empty()) nearBeyond.buildBetween(trial, beyond, beyondGrid);
+      const auto surfaces = mold.wallSurfaceDistances(trial, 1.5 * spacing);
       for (std::size_t i = 0; i < trial.size(); ++i) {
         ok[i] = ok[i] && (beyond.empty() || nearBeyond.of(i).empty()) &&
-                insideAnyRegion(plan, trial[i]);
+                insideAnyRegion(plan, trial[i]) &&
+                (!surfaces[i].found || surfaces[i].distance >= minimumGap);
       }
       return ok;
     };

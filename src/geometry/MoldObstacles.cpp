@@ -1,6 +1,5 @@
 #include "geometry/MoldObstacles.h"
 
-
 namespace sphcast {
 
 MoldObstacles::MoldObstacles(const std::vector<ParticleCloud>& moldClouds, double spacing,
@@ -67,10 +66,10 @@ std::vector<WallSurfaceDistance> MoldObstacles::wallSurfaceDistances(
   grid.build(particles_.positions);
   NeighbourList list;
   list.buildBetween(points, particles_.positions, grid);
-  const std::vector<WallSurfaceView> walls{
-      {particles_.positions, normals_, wallDistances_, &list}};
+  const std::vector<WallSurfaceView> walls{{particles_.positions, normals_, wallDistances_, &list}};
   for (std::size_t i = 0; i < points.size(); ++i) {
-    distances[i] = wallSurfaceDistance(points[i], i, walls, PeriodicBox{}, static_cast<Real>(spacing_));
+    distances[i] =
+        wallSurfaceDistance(points[i], i, walls, PeriodicBox{}, static_cast<Real>(spacing_));
   }
   return distances;
 }

@@ -6,6 +6,7 @@
 #include <array>
 #include <cmath>
 #include <cstring>
+#include <exception>
 #include <limits>
 #include <string>
 #include <utility>
@@ -260,15 +261,25 @@ void NeighbourList::build(const std::vector<Vector>& positionsA,
   const SearchFunction search = searchFor(periodic, imagesByCell, gridB.inCellOrder());
   const Vector* xB = positionsB.data();
 
+  // A block's buffer grows inside the parallel loop, where an exception (bad_alloc, when the
+  // particles pile up) cannot leave: it is kept and thrown after the loop, for the solver to stop
+  // the run with its last good state.
+  std::exception_ptr failure;
 #pragma omp parallel for schedule(dynamic, 1) if (blocks > 1)
   for (std::size_t b = 0; b < blocks; ++b) {
-    PairSink sink{blockStorage_[b], 0};
-    for (std::size_t i = blockBegin_[b]; i < blockBegin_[b + 1]; ++i) {
-      const std::uint32_t self = sameCloud ? static_cast<std::uint32_t>(i) : noSelf;
-      counts_[i] = search(positionsA[i], self, xB, gridB, sink);
+    try {
+      PairSink sink{blockStorage_[b], 0};
+      for (std::size_t i = blockBegin_[b]; i < blockBegin_[b + 1]; ++i) {
+        const std::uint32_t self = sameCloud ? static_cast<std::uint32_t>(i) : noSelf;
+        counts_[i] = search(positionsA[i], self, xB, gridB, sink);
+      }
+      blockUsed_[b] = sink.used;
+    } catch (...) {
+#pragma omp critical(neighbourListFailure)
+      if (!failure) failure = std::current_exception();
     }
-    blockUsed_[b] = sink.used;
   }
+  if (failure) std::rethrow_exception(failure);
   gatherBlocks();
 }
 

@@ -27,16 +27,25 @@ struct WallSurfaceView {
 };
 
 // The wall surface seen from fluid particle i, estimated from its wall neighbours: each wall
-// particle k carries the tangent plane of the surface at its foot, so
-//   d_ik = (x_i - x_k) . n_k - depth_k
-// is i's distance in front of that plane. The planes of the wall particles laterally within one
-// spacing of i are taken, and the smallest d_ik wins: at a concave corner this is the nearer of
-// the two walls; on a curved wall of radius R the lateral offset s <= dx errs by at most
-// s^2 / (2 R) (0.05 dx at R = 10 dx). Without such a neighbour the nearest wall particle's plane
-// is used. `found` is false when i has no wall neighbour at all.
+// particle k marks the surface point s_k = x_k + d_k n_k (its foot: depth d_k along the normal
+// n_k) and the tangent plane there, on a patch of the surface about one spacing across. The
+// feet whose patch i lies over (i's projection on the plane within 0.75 dx of the foot: the
+// farthest a point lies from its nearest foot on the lattice of a flat wall is dx/sqrt(2)) give
+//   d_ik = (x_i - s_k) . n_k,
+// and the smallest is i's distance in front of the surface: at a concave corner, the nearer
+// wall. Two kinds of plane are left out, each of which i can lie behind without being in the
+// body: the other face's at a convex edge (its patches do not lie under i), and the far face's
+// of a thin body, which puts i more than a spacing behind it (no particle gets so deep: a step
+// moves it by at most maxCo dx, and the health checks stop a run at 0.5 dx). Without them, the
+// smallest plane distance of the wall particles within dx put a particle flowing past the
+// one-layer obstacle of SPHERIC Test 2 2.9 spacings "behind" a wall, and one above a convex
+// ledge a spacing behind it. On a curved wall of radius R the estimate errs by at most
+// (0.75 dx)^2 / (2 R); inside a concave wall it never underestimates. `found` is false when no
+// wall neighbour's patch lies under i (no wall near, or i beyond a convex edge whose particles
+// all face the other way): the clearance then leaves i alone.
 struct WallSurfaceDistance {
   bool found = false;
-  Real distance = 0;             // in front of the surface (negative: behind it)
+  Real distance = 0;  // in front of the surface (negative: behind it)
   Vector normal = Vector::Zero();
 };
 

@@ -10,9 +10,9 @@
 #include <sstream>
 
 #include "core/Error.h"
+#include "core/Gravity.h"
 #include "core/dictionary/Dictionary.h"
 #include "io/VtpCloud.h"
-#include "core/Gravity.h"
 
 namespace sphcast {
 
@@ -121,7 +121,8 @@ void CastingSolver::setUpFlow() {
   }
   for (int axis = 0; axis < 3; ++axis) {
     if (!settings.periodic.isPeriodic(axis)) continue;
-    info() << "    periodic " << "xyz"[axis] << ": [" << settings.periodic.lower(axis) << ", "
+    info() << "    periodic "
+           << "xyz"[axis] << ": [" << settings.periodic.lower(axis) << ", "
            << settings.periodic.lower(axis) + settings.periodic.period(axis) << ")\n";
   }
   const Eigen::IOFormat plain(Eigen::StreamPrecision, Eigen::DontAlignCols, " ", " ");
@@ -130,9 +131,9 @@ void CastingSolver::setUpFlow() {
          << "): a particle outside it, or not finite, stops the run\n"
          << "    health checks: density deviation warned above "
          << 100 * health_.warnDensityDeviation << " %, stops above "
-         << 100 * health_.maxDensityDeviation << " %; a particle "
-         << health_.maxWallPenetration << " dx behind a wall surface, or a stable step below "
-         << health_.minDeltaTFraction << " of its running mean, stops the run\n"
+         << 100 * health_.maxDensityDeviation << " %; a particle " << health_.maxWallPenetration
+         << " dx behind a wall surface, or a stable step below " << health_.minDeltaTFraction
+         << " of its running mean, stops the run\n"
          << "    wall clearance " << settings.wallClearance
          << " dx: fluid particles closer to a wall surface are moved back to it\n";
   // Everything else stays where it is: only the fluid moves.
@@ -191,20 +192,19 @@ void CastingSolver::logStep(bool printBlock) {
     const FluidSummary summary = summarizeFluid(*fluid_);
     const FlowSettings& settings = flowSetup_.settings;
     const double spacing = fluid_->attributes().at("spacing");
-    const double courant =
-        (static_cast<double>(settings.soundSpeed) + summary.largestSpeed) * time_.deltaT() / spacing;
+    const double courant = (static_cast<double>(settings.soundSpeed) + summary.largestSpeed) *
+                           time_.deltaT() / spacing;
     std::ostringstream line;
     line.precision(6);
     line << "Step " << time_.timeIndex() << "  Courant " << courant << "  max|U| "
          << summary.largestSpeed << " m/s  Mach "
          << summary.largestSpeed / static_cast<double>(settings.soundSpeed) << '\n'
          << "Density range " << summary.lowestDensity << " .. " << summary.highestDensity
-         << " kg/m^3 (" << 100 * summary.lowestDeviation << " .. "
-         << 100 * summary.highestDeviation << " % of rho_s)  p " << summary.lowestPressure
-         << " .. " << summary.highestPressure << " Pa\n"
+         << " kg/m^3 (" << 100 * summary.lowestDeviation << " .. " << 100 * summary.highestDeviation
+         << " % of rho_s)  p " << summary.lowestPressure << " .. " << summary.highestPressure
+         << " Pa\n"
          << "Mass " << summary.mass << " kg  kinetic energy " << summary.kineticEnergy
-         << " J  particles lost 0  moved back from walls "
-         << flow_->lastWallClearance().corrected << '\n';
+         << " J  moved back from walls " << flow_->lastWallClearance().corrected << '\n';
     info() << line.str();
   }
   info() << clock_.timesLine() << '\n'
@@ -219,8 +219,7 @@ void CastingSolver::logTimeSpent() {
   if (flow_) {
     const FlowTimings& t = flow_->timings();
     line << " neighbour search " << t.neighbourSearch << ", wall clearance " << t.wallClearance
-         << ", rates " << t.rates
-         << ", integration " << t.integration << ",";
+         << ", rates " << t.rates << ", integration " << t.integration << ",";
   }
   line << " health checks " << checkSeconds_ << ", function objects " << functionSeconds_
        << ", output " << outputSeconds_;
@@ -240,12 +239,12 @@ std::string CastingSolver::checkHealth() {
     const CloudHealth health = measureCloudHealth(cloud, domain_);
     if (!health.finiteAndInside()) {
       problem << health.outside << " particle(s) of cloud '" << cloud.name()
-              << "' left the domain and " << health.nonFinite
-              << " went non-finite; the first, "
+              << "' left the domain and " << health.nonFinite << " went non-finite; the first, "
               << describeParticle(cloud, health.firstBad, health.firstBadPosition);
       return problem.str();
     }
-    if (!health.hasDensity) continue;
+    // only the flow evolves the density (a ballistic cloud carries its start value)
+    if (!health.hasDensity || &cloud != fluid_) continue;
     const double deviation = health.largestDensityDeviation;
     if (deviation <= health_.warnDensityDeviation) continue;
     const std::string where =
@@ -284,8 +283,9 @@ std::string CastingSolver::checkHealth() {
       if (warnings_.shouldPrint("fluid pushed back out of a wall", depth)) {
         std::ostringstream message;
         message.precision(4);
-        message << "time " << time_.timeName() << " (step " << time_.timeIndex() << "): "
-                << clearance.beyondSurface << " fluid particle(s) reached behind a wall surface"
+        message << "time " << time_.timeName() << " (step " << time_.timeIndex()
+                << "): " << clearance.beyondSurface
+                << " fluid particle(s) reached behind a wall surface"
                 << " and were moved back in front of it; the deepest, " << where << ", " << depth
                 << " dx behind";
         warning(message.str());

@@ -118,7 +118,7 @@ FlowSetup readFlowSetup(const CaseFolder& caseFolder, const Vector& gravity) {
       }
     }
   }
-  // in spacings; 0 leaves the walls to their pressure alone (for studies, not for casting)
+  // in spacings; at 0 a particle is still moved back when it is behind the surface, onto it
   settings.wallClearance = schemes.getOrDefault<Real>("wallClearance", settings.wallClearance);
   if (!(settings.wallClearance >= 0 && settings.wallClearance <= Real(0.5))) {
     throw DictionaryError(schemes.location("wallClearance"),

@@ -18,8 +18,8 @@ bool isBad(const Vector& x, const Vector& u, Real rho, const Domain& domain) {
 
 void requirePositive(const Dictionary& dict, const std::string& key, double value) {
   if (!(value > 0) || !std::isfinite(value)) {
-    throw DictionaryError(dict.location(key), "'" + key + "' must be a positive number in " +
-                                                  dict.name());
+    throw DictionaryError(dict.location(key),
+                          "'" + key + "' must be a positive number in " + dict.name());
   }
 }
 
@@ -29,15 +29,20 @@ HealthSettings HealthSettings::read(const Dictionary& controlDict) {
   HealthSettings s;
   if (!controlDict.found("healthChecks")) return s;
   const Dictionary& dict = controlDict.subDict("healthChecks");
-  dict.checkKeys({"warnDensityDeviation", "maxDensityDeviation", "maxWallPenetration",
-                  "minDeltaTFraction"});
-  s.warnDensityDeviation = dict.getOrDefault<double>("warnDensityDeviation", s.warnDensityDeviation);
+  dict.checkKeys(
+      {"warnDensityDeviation", "maxDensityDeviation", "maxWallPenetration", "minDeltaTFraction"});
+  s.warnDensityDeviation =
+      dict.getOrDefault<double>("warnDensityDeviation", s.warnDensityDeviation);
   s.maxDensityDeviation = dict.getOrDefault<double>("maxDensityDeviation", s.maxDensityDeviation);
   s.maxWallPenetration = dict.getOrDefault<double>("maxWallPenetration", s.maxWallPenetration);
   s.minDeltaTFraction = dict.getOrDefault<double>("minDeltaTFraction", s.minDeltaTFraction);
-  for (const char* key : {"warnDensityDeviation", "maxDensityDeviation", "maxWallPenetration",
-                          "minDeltaTFraction"}) {
+  for (const char* key :
+       {"warnDensityDeviation", "maxDensityDeviation", "maxWallPenetration", "minDeltaTFraction"}) {
     if (dict.found(key)) requirePositive(dict, key, dict.get<double>(key));
+  }
+  if (s.minDeltaTFraction >= 1) {
+    throw DictionaryError(dict.location("minDeltaTFraction"),
+                          "'minDeltaTFraction' must lie below 1 in " + dict.name());
   }
   if (s.warnDensityDeviation >= s.maxDensityDeviation) {
     throw DictionaryError(dict.location("warnDensityDeviation"),
@@ -117,8 +122,13 @@ std::string describeParticle(const ParticleCloud& cloud, std::size_t index, cons
   const Eigen::IOFormat plain(Eigen::StreamPrecision, Eigen::DontAlignCols, " ", " ");
   std::ostringstream text;
   text.precision(6);
-  text << "particle " << index;
-  if (cloud.hasIdField("id") && index < cloud.size()) text << " (id " << cloud.idField("id")[index] << ")";
+  // the id first: the index is the particle's place after the step's reorder, which the
+  // written state (from before the step) need not share
+  if (cloud.hasIdField("id") && index < cloud.size()) {
+    text << "particle id " << cloud.idField("id")[index] << " (index " << index << ")";
+  } else {
+    text << "particle " << index;
+  }
   text << " of cloud '" << cloud.name() << "' at (" << x.transpose().format(plain) << ")";
   return text.str();
 }

@@ -50,7 +50,7 @@ struct CloudHealth {
   std::size_t outside = 0;    // finite but outside the domain
   std::size_t firstBad = 0;   // index of the first of either
   Vector firstBadPosition = Vector::Zero();
-  bool hasDensity = false;    // the cloud has rho and restDensity
+  bool hasDensity = false;             // the cloud has rho and restDensity
   double largestDensityDeviation = 0;  // max |rho / rho_s - 1|, fraction
   std::size_t mostDeviating = 0;
   Vector mostDeviatingPosition = Vector::Zero();
@@ -60,7 +60,8 @@ struct CloudHealth {
 
 CloudHealth measureCloudHealth(const ParticleCloud& cloud, const Domain& domain);
 
-// The particle's place in a message: "particle 12 (id 345) at (0.2 0.05 0.01)".
+// The particle's place in a message: "particle id 345 (index 12) of cloud 'metal' at (0.2 0.05
+// 0.01)".
 std::string describeParticle(const ParticleCloud& cloud, std::size_t index, const Vector& x);
 
 // Keeps the count of each kind of warning and decides which to print: the first of a kind, then
@@ -87,12 +88,12 @@ namespace sphcast {
 // What the log prints of a fluid cloud at a printed step: sums in particle order (the same on
 // any number of threads).
 struct FluidSummary {
-  double largestSpeed = 0;                        // m/s
-  double lowestDensity = 0, highestDensity = 0;   // kg/m^3
+  double largestSpeed = 0;                           // m/s
+  double lowestDensity = 0, highestDensity = 0;      // kg/m^3
   double lowestDeviation = 0, highestDeviation = 0;  // rho / rho_s - 1
   double lowestPressure = 0, highestPressure = 0;    // Pa
-  double mass = 0;                                // kg
-  double kineticEnergy = 0;                       // J
+  double mass = 0;                                   // kg
+  double kineticEnergy = 0;                          // J
 };
 
 FluidSummary summarizeFluid(const ParticleCloud& fluid);

@@ -1,8 +1,5 @@
 #include "sph/WallClearance.h"
 
-#include <algorithm>
-#include <limits>
-
 namespace sphcast {
 
 WallClearanceReport enforceWallClearance(std::span<Vector> positions, std::span<Vector> velocities,
@@ -16,7 +13,8 @@ WallClearanceReport enforceWallClearance(std::span<Vector> positions, std::span<
   std::size_t beyondSurface = 0;
 #pragma omp parallel for schedule(static) reduction(+ : corrected, beyondSurface)
   for (std::size_t i = 0; i < count; ++i) {
-    const WallSurfaceDistance surface = wallSurfaceDistance(positions[i], i, walls, periodic, spacing);
+    const WallSurfaceDistance surface =
+        wallSurfaceDistance(positions[i], i, walls, periodic, spacing);
     if (!surface.found || surface.distance >= clearance) continue;
     ++corrected;
     if (surface.distance < 0) {

@@ -30,7 +30,6 @@ struct WallClearanceReport {
 // only its own position and velocity, the result does not depend on the thread count.
 WallClearanceReport enforceWallClearance(std::span<Vector> positions, std::span<Vector> velocities,
                                          const std::vector<WallSurfaceView>& walls,
-                                         const PeriodicBox& periodic, Real spacing,
-                                         Real clearance);
+                                         const PeriodicBox& periodic, Real spacing, Real clearance);
 
 }  // namespace sphcast

@@ -14,9 +14,9 @@ namespace sphcast {
 // Numerics and constants of the flow (system/sphSchemes and constant/ once the solver reads
 // them; set directly by tests).
 struct FlowSettings {
-  int dimension = 3;           // 2 or 3
-  Real supportRadius = 0;      // h of the kernel, m
-  Real soundSpeed = 0;         // c of eq. (3), m/s
+  int dimension = 3;       // 2 or 3
+  Real supportRadius = 0;  // h of the kernel, m
+  Real soundSpeed = 0;     // c of eq. (3), m/s
   Vector gravity = Vector::Zero();
   std::string densityScheme = "riemann";  // riemann | standard | deltaSPH
   // Kernel-gradient normalisation (KernelCorrection.h) of the pair gradients.
@@ -26,7 +26,7 @@ struct FlowSettings {
   // break's thin front runs 0.54 a ahead of Martin & Moyce's (0.22 a with 0.02).
   Real deltaSPHDiffusion = Real(0.1);
   Real deltaSPHViscosity = Real(0.02);
-  std::string viscousForm = "Morris";     // Morris | Cleary (FlowRates.h says why Morris)
+  std::string viscousForm = "Morris";  // Morris | Cleary (FlowRates.h says why Morris)
   PeriodicBox periodic;
   // The least distance, in particle spacings, a fluid particle keeps from a wall surface
   // (WallClearance.h, WallSurfaceDistance.h).
@@ -74,9 +74,6 @@ class WeaklyCompressibleFlow {
   // One kick-drift-kick step of deltaT.
   void step(double deltaT);
 
-  // The extremes of the fluid density, for the log.
-  std::pair<Real, Real> densityRange() const;
-
   std::size_t fluidPairCount() const { return fluidNeighbours_.pairCount(); }
 
   // What the wall clearance did in the last step (for the run's health checks).
@@ -119,11 +116,11 @@ class WeaklyCompressibleFlow {
   CellGrid fluidGrid_;
   std::vector<CellGrid> wallGrids_;
   NeighbourList fluidNeighbours_;
-  std::vector<NeighbourList> wallNeighbours_;       // fluid particles' wall neighbours
-  std::vector<NeighbourList> fluidAroundWall_;      // wall particles' fluid neighbours
-  std::vector<std::vector<Real>> wallPressure_;     // per wall cloud, per particle
-  std::vector<Matrix> correction_;                  // L_i, with kernelCorrection or deltaSPH
-  std::vector<Vector> densityGradient_;             // renormalised grad rho (deltaSPH)
+  std::vector<NeighbourList> wallNeighbours_;    // fluid particles' wall neighbours
+  std::vector<NeighbourList> fluidAroundWall_;   // wall particles' fluid neighbours
+  std::vector<std::vector<Real>> wallPressure_;  // per wall cloud, per particle
+  std::vector<Matrix> correction_;               // L_i, with kernelCorrection or deltaSPH
+  std::vector<Vector> densityGradient_;          // renormalised grad rho (deltaSPH)
   WallClearanceReport lastClearance_;
   FlowTimings timings_;
 };
