@@ -298,7 +298,9 @@ std::string CastingSolver::checkHealth() {
 std::string CastingSolver::checkStepCollapse(double stableDeltaT, const std::string& limiter) {
   if (!time_.settings().adjustTimeStep) return "";
   if (!(stableDeltaT > 0) || !std::isfinite(stableDeltaT)) {
-    return "the stable time step (" + limiter + ") is " + std::to_string(stableDeltaT);
+    std::ostringstream problem;
+    problem << "the stable time step (" << limiter << ") is " << stableDeltaT;
+    return problem.str();
   }
   if (meanStableDeltaT_ > 0 && stableDeltaT < health_.minDeltaTFraction * meanStableDeltaT_) {
     std::ostringstream problem;
@@ -324,6 +326,12 @@ void CastingSolver::stopWithLastGoodState(const TimeState& good, bool restoreSav
   // Only the flow keeps the state before the step; ballistic clouds have nothing to go back to.
   if (restoreSaved && !lastGoodFluid_) {
     throw Error(failure + "Nothing is written: the last written time is the last good state.");
+  }
+  // The start time is on disk as it was read: rewriting it would store the rates of this run's
+  // settings in it, and a rerun with other settings would start from them.
+  if (good.name == time_.startTimeName()) {
+    throw Error(failure + "The last good state is the start time " + good.name +
+                ", left as it was; change maxCo, deltaT or soundSpeed and run again.");
   }
   if (restoreSaved) *fluid_ = *lastGoodFluid_;
   std::vector<const ParticleCloud*> written;
