@@ -353,6 +353,15 @@ void CastingSolver::run() {
       stopWithLastGoodState(time_.state(), false, collapse);  // this state passed every check
     }
     time_.adjustDeltaT(stable, limiter);
+    if (!time_.settings().adjustTimeStep && flow_ && time_.deltaT() > stable &&
+        warnings_.shouldPrint("a fixed deltaT above the stable step", time_.deltaT() / stable)) {
+      std::ostringstream message;
+      message.precision(4);
+      message << "time " << time_.timeName() << ": the fixed deltaT " << time_.deltaT()
+              << " s is " << time_.deltaT() / stable << " times the stable step " << stable
+              << " s (" << limiter << "); set adjustTimeStep yes, or a smaller deltaT";
+      warning(message.str());
+    }
     const TimeState before = time_.state();
     if (flow_) *lastGoodFluid_ = *fluid_;  // reuses its storage: no allocation per step
     time_.advance();
