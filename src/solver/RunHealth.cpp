@@ -155,9 +155,6 @@ std::string HealthWarnings::summary() const {
   return text.str();
 }
 
-}  // namespace sphcast
-
-namespace sphcast {
 
 FluidSummary summarizeFluid(const ParticleCloud& fluid) {
   FluidSummary s;

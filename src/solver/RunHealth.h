@@ -81,9 +81,6 @@ class HealthWarnings {
   std::map<std::string, Kind> kinds_;
 };
 
-}  // namespace sphcast
-
-namespace sphcast {
 
 // What the log prints of a fluid cloud at a printed step: sums in particle order (the same on
 // any number of threads).
