@@ -40,7 +40,9 @@ struct WallParticles {
 // lattice) and dx (so that the thinning leaves no hole wider than a particle).
 // Wall points whose nearest wall point is on the free border of the wall (an edge used by one
 // triangle: the rim of an open mold) are left out, so the shell ends flush with the rim instead
-// of curling around it.
+// of curling around it; so are points on the cavity's side of the face they are nearest to
+// (over the opening of an open mold, outside the closed cavity: they made a lip into the
+// opening), the side being the one the cavity's own lattice points near that face lie on.
 // A particle of a flat face's lattice (below) has the volume dx^3 of its lattice cell. Any
 // other particle's volume is the volume of its layer band [k dx, (k+1) dx) behind the curved
 // walls of its patch (counted on the lattice) shared among that layer's projected particles:

@@ -69,4 +69,16 @@ Physical Surface("moldWall") = wall();' \
     'column { type cylinder; point1 (0 0 0.03); point2 (0 0 0.07); radius 0.015; }' '(0 0 -0.5)' \
     12 0.3
 runMoldCase cone cone 0.02 0.04 0.08 --max-deviation 0.116
+# and its shell ends flush with the open rim: no mold particle above z = 0.08 (a lip of 72 wall
+# particles up to 0.58 dx above it, into the opening, before the side test of particleizeMold)
+"$python" - "$scratch/cone/constant/particles/mold.vtp" <<'PYTHON' || fail "cone: wall particles above the open rim"
+import sys, vtk
+reader = vtk.vtkXMLPolyDataReader()
+reader.SetFileName(sys.argv[1])
+reader.Update()
+data = reader.GetOutput()
+above = [data.GetPoint(i)[2] for i in range(data.GetNumberOfPoints()) if data.GetPoint(i)[2] > 0.08]
+print(f"cone: {data.GetNumberOfPoints()} wall particles, {len(above)} above the open rim")
+sys.exit(1 if above else 0)
+PYTHON
 pass "metal stays in front of curved, concave and open walls"
