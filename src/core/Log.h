@@ -31,6 +31,20 @@ class RunClock {
   double cpuStart_;
 };
 
+// Runs `work`, adds its wall time to `total` (seconds) and returns what `work` returns: the
+// solver's and the flow's time per part of the step.
+template <class Work>
+auto addWallTime(double& total, Work&& work) {
+  struct AddOnExit {
+    double& total;
+    std::chrono::steady_clock::time_point start;
+    ~AddOnExit() {
+      total += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    }
+  } add{total, std::chrono::steady_clock::now()};
+  return work();
+}
+
 // Seconds as h:mm:ss.
 std::string formatDuration(double seconds);
 

@@ -1,7 +1,6 @@
 #include "solver/CastingSolver.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <filesystem>
 #include <limits>
@@ -15,24 +14,6 @@
 #include "io/VtpCloud.h"
 
 namespace sphcast {
-
-namespace {
-
-// Runs `work` and adds its wall time to `total` (seconds).
-template <class Work>
-auto timed(double& total, Work&& work) {
-  const auto start = std::chrono::steady_clock::now();
-  struct AddOnExit {
-    double& total;
-    std::chrono::steady_clock::time_point start;
-    ~AddOnExit() {
-      total += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    }
-  } add{total, start};
-  return work();
-}
-
-}  // namespace
 
 CastingSolver::CastingSolver(const CaseFolder& caseFolder)
     : caseFolder_(caseFolder),
@@ -357,9 +338,9 @@ void CastingSolver::run() {
         warnings_.shouldPrint("a fixed deltaT above the stable step", time_.deltaT() / stable)) {
       std::ostringstream message;
       message.precision(4);
-      message << "time " << time_.timeName() << ": the fixed deltaT " << time_.deltaT()
-              << " s is " << time_.deltaT() / stable << " times the stable step " << stable
-              << " s (" << limiter << "); set adjustTimeStep yes, or a smaller deltaT";
+      message << "time " << time_.timeName() << ": the fixed deltaT " << time_.deltaT() << " s is "
+              << time_.deltaT() / stable << " times the stable step " << stable << " s (" << limiter
+              << "); set adjustTimeStep yes, or a smaller deltaT";
       warning(message.str());
     }
     const TimeState before = time_.state();
@@ -376,16 +357,16 @@ void CastingSolver::run() {
     } catch (const std::exception& error) {
       failure = std::string("the step failed: ") + error.what();
     }
-    if (failure.empty()) failure = timed(checkSeconds_, [&] { return checkHealth(); });
+    if (failure.empty()) failure = addWallTime(checkSeconds_, [&] { return checkHealth(); });
     if (!failure.empty()) stopWithLastGoodState(before, true, failure);
     const bool printBlock = stepsTaken_ % time_.settings().logInterval == 0 || time_.writeTime();
     logStep(printBlock);
-    if (time_.writeTime()) timed(outputSeconds_, [&] { writeResults(); });
-    timed(functionSeconds_, [&] { functions_.execute(time_.state(), time_.writeTime()); });
+    if (time_.writeTime()) addWallTime(outputSeconds_, [&] { writeResults(); });
+    addWallTime(functionSeconds_, [&] { functions_.execute(time_.state(), time_.writeTime()); });
   }
   logRereadMessage();
   info() << "Stopping: " << time_.stopReason() << " at time " << time_.timeName() << '\n';
-  if (time_.finalWriteWanted()) timed(outputSeconds_, [&] { writeResults(); });
+  if (time_.finalWriteWanted()) addWallTime(outputSeconds_, [&] { writeResults(); });
   logTimeSpent();
   info() << clock_.timesLine() << "\n\nEnd\n\n";
 }

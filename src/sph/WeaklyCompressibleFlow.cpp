@@ -1,27 +1,15 @@
 #include "sph/WeaklyCompressibleFlow.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <limits>
 
 #include "core/Error.h"
+#include "core/Log.h"
 #include "sph/EquationOfState.h"
 #include "sph/FlowRates.h"
 
 namespace sphcast {
-
-namespace {
-
-// Runs `work` and adds its wall time to `total` (seconds).
-template <class Work>
-void timed(double& total, Work&& work) {
-  const auto start = std::chrono::steady_clock::now();
-  work();
-  total += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
-}  // namespace
 
 double FlowStepLimits::smallest(std::string& limiter) const {
   double step = acoustic;
@@ -463,7 +451,7 @@ void WeaklyCompressibleFlow::step(double deltaT) {
   const auto& acceleration = fluid_.vectorField("acceleration");
   const PeriodicBox periodic = settings_.periodic;
   // Kick and drift with the rates of the current state ...
-  timed(timings_.integration, [&] {
+  addWallTime(timings_.integration, [&] {
 #pragma omp parallel for
     for (std::size_t i = 0; i < x.size(); ++i) {
       v[i] += halfDt * acceleration[i];
@@ -473,13 +461,13 @@ void WeaklyCompressibleFlow::step(double deltaT) {
   });
   // ... then the second kick with the rates at the new positions (the reorder inside
   // findNeighbours permutes the same vectors, so the references above stay valid).
-  timed(timings_.neighbourSearch, [&] { findNeighbours(); });
-  timed(timings_.wallClearance, [&] { keepClearOfWalls(); });
-  timed(timings_.rates, [&] {
+  addWallTime(timings_.neighbourSearch, [&] { findNeighbours(); });
+  addWallTime(timings_.wallClearance, [&] { keepClearOfWalls(); });
+  addWallTime(timings_.rates, [&] {
     updatePressure();
     computeRates();
   });
-  timed(timings_.integration, [&] {
+  addWallTime(timings_.integration, [&] {
 #pragma omp parallel for
     for (std::size_t i = 0; i < v.size(); ++i) {
       v[i] += halfDt * acceleration[i];
@@ -511,23 +499,23 @@ void WeaklyCompressibleFlow::stepStormerVerlet(Real dt) {
   const auto& densityRate = fluid_.scalarField("densityRate");
   const auto& acceleration = fluid_.vectorField("acceleration");
   const PeriodicBox periodic = settings_.periodic;
-  timed(timings_.integration, [&] {
+  addWallTime(timings_.integration, [&] {
 #pragma omp parallel for
     for (std::size_t i = 0; i < x.size(); ++i) {
       v[i] += halfDt * acceleration[i];
       x[i] = periodic.wrap(x[i] + dt * v[i]);
     }
   });
-  timed(timings_.neighbourSearch, [&] { findNeighbours(); });
-  timed(timings_.wallClearance, [&] { keepClearOfWalls(); });
-  timed(timings_.rates, [&] { computeRates(RatePart::densityRate); });  // p is still of rho^n
-  timed(timings_.integration, [&] {
+  addWallTime(timings_.neighbourSearch, [&] { findNeighbours(); });
+  addWallTime(timings_.wallClearance, [&] { keepClearOfWalls(); });
+  addWallTime(timings_.rates, [&] { computeRates(RatePart::densityRate); });  // p is still of rho^n
+  addWallTime(timings_.integration, [&] {
 #pragma omp parallel for
     for (std::size_t i = 0; i < rho.size(); ++i) rho[i] += dt * densityRate[i];
     updatePressure();
   });
-  timed(timings_.rates, [&] { computeRates(RatePart::acceleration); });
-  timed(timings_.integration, [&] {
+  addWallTime(timings_.rates, [&] { computeRates(RatePart::acceleration); });
+  addWallTime(timings_.integration, [&] {
 #pragma omp parallel for
     for (std::size_t i = 0; i < v.size(); ++i) v[i] += halfDt * acceleration[i];
   });
