@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <limits>
+#include <utility>
 
 #include "core/Error.h"
 #include "core/Log.h"
@@ -12,25 +14,16 @@
 namespace sphcast {
 
 double FlowStepLimits::smallest(std::string& limiter) const {
-  double step = acoustic;
-  limiter = "acoustic CFL";
-  if (viscous < step) {
-    step = viscous;
-    limiter = "viscous";
-  }
-  if (bodyForce < step) {
-    step = bodyForce;
-    limiter = "body force";
-  }
-  if (acceleration < step) {
-    step = acceleration;
-    limiter = "acceleration";
-  }
-  if (densityRate < step) {
-    step = densityRate;
-    limiter = "density rate";
-  }
-  return step;
+  const std::pair<double, const char*> limits[] = {{acoustic, "acoustic CFL"},
+                                                   {viscous, "viscous"},
+                                                   {bodyForce, "body force"},
+                                                   {acceleration, "acceleration"},
+                                                   {densityRate, "density rate"}};
+  const auto* smallest = std::min_element(  // of equal limits the first, as before
+      std::begin(limits), std::end(limits),
+      [](const auto& a, const auto& b) { return a.first < b.first; });
+  limiter = smallest->second;
+  return smallest->first;
 }
 
 WeaklyCompressibleFlow::WeaklyCompressibleFlow(FlowSettings settings, ParticleCloud& fluid,
