@@ -33,7 +33,9 @@ CastingSolver::CastingSolver(const CaseFolder& caseFolder)
     throw Error("time folder " + (caseFolder_.root() / time_.startTimeName()).string() +
                 " holds no cloud (.vtp) to run");
   }
-  health_ = HealthSettings::read(Dictionary::read(caseFolder_.systemFile("controlDict")));
+  // controlDict's entries beyond run control (TimeControl's), read once
+  const Dictionary controlDict = Dictionary::read(caseFolder_.systemFile("controlDict"));
+  health_ = HealthSettings::read(controlDict);
   if (flowSetup_.enabled) {
     setUpFlow();
   } else {
@@ -46,7 +48,7 @@ CastingSolver::CastingSolver(const CaseFolder& caseFolder)
       }
     }
   }
-  setUpFunctionObjects();
+  setUpFunctionObjects(controlDict);
   info() << std::endl;
 }
 
@@ -120,7 +122,7 @@ void CastingSolver::setUpFlow() {
   // Everything else stays where it is: only the fluid moves.
 }
 
-void CastingSolver::setUpFunctionObjects() {
+void CastingSolver::setUpFunctionObjects(const Dictionary& controlDict) {
   FunctionObjectContext context;
   context.caseRoot = caseFolder_.root();
   context.startTimeName = time_.startTimeName();
@@ -128,7 +130,7 @@ void CastingSolver::setUpFunctionObjects() {
   context.supportRadius = flowSetup_.enabled ? flowSetup_.settings.supportRadius : Real(0);
   context.gravity = gravity_;
   for (const ParticleCloud& cloud : clouds_) context.clouds.push_back(&cloud);
-  functions_ = FunctionObjectList(Dictionary::read(caseFolder_.systemFile("controlDict")), context);
+  functions_ = FunctionObjectList(controlDict, context);
   for (const auto& object : functions_.objects()) {
     info() << "Function object " << object->name() << ": postProcessing/" << object->name() << '/'
            << time_.startTimeName() << '\n';

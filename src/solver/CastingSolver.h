@@ -17,6 +17,8 @@
 
 namespace sphcast {
 
+class Dictionary;
+
 // The casting time loop of sphCastFoam. With a flow model in constant/physicsModels the fluid
 // cloud runs weakly compressible SPH among the wall clouds; without one the clouds move
 // ballistically under constant/g (BallisticMotion). Heat and solidification plug in as later
@@ -34,7 +36,7 @@ class CastingSolver {
 
  private:
   void setUpFlow();
-  void setUpFunctionObjects();
+  void setUpFunctionObjects(const Dictionary& controlDict);
   ParticleCloud* findCloud(const std::string& name);   // nullptr when absent
   ParticleCloud& cloudNamed(const std::string& name);  // throws, listing the clouds present
   double stableDeltaT(std::string& limiter) const;
