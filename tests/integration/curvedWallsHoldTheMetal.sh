@@ -31,11 +31,7 @@ runMoldCase() {
 # The closed sphere of radius 40 mm, half full, the metal thrown sideways at 0.6 m/s: it runs up
 # the wall and falls back: |U| <= 0.9 m/s (0.6 m/s, and the fall of the surface), c = 12 m/s,
 # so 1.5 v / c = 11 %.
-makeMoldCase "$scratch/sphere" 'SetFactory("OpenCASCADE");
-Sphere(1) = {0, 0, 0, 0.04};
-Physical Surface("moldWall") = Surface{:};' \
-    'half { type intersection; regions { s { type sphere; centre (0 0 0); radius 0.04; }
-            b { type box; min (-0.05 -0.05 -0.05); max (0.05 0.05 0); } } }' '(0.6 0 0)' 12 0.3
+makeSloshingSphereCase "$scratch/sphere" 0.3
 runMoldCase sphere sphere 0.04 --max-deviation 0.11
 
 # A horizontal cylinder (radius 40 mm, 40 mm long, axis y), half full, sloshing across its axis:

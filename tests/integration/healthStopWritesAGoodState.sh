@@ -7,11 +7,7 @@
 here=$(cd "$(dirname "$0")" && pwd)
 python=python3
 python3 -c 'import vtk' 2>/dev/null || python=/usr/bin/python3
-makeMoldCase "$scratch/case" 'SetFactory("OpenCASCADE");
-Sphere(1) = {0, 0, 0, 0.04};
-Physical Surface("moldWall") = Surface{:};' \
-    'half { type intersection; regions { s { type sphere; centre (0 0 0); radius 0.04; }
-            b { type box; min (-0.05 -0.05 -0.05); max (0.05 0.05 0); } } }' '(0.6 0 0)' 12 0.3
+makeSloshingSphereCase "$scratch/case" 0.3
 cd "$scratch/case"
 cat >> system/controlDict <<DICT
 healthChecks { warnDensityDeviation 0.01; maxDensityDeviation 0.02; }

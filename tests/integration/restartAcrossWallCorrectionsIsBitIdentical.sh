@@ -3,11 +3,7 @@
 # particles every step (metal sloshing in a sphere): the restarted cloud keeps the order it was
 # written in, although a moved particle may have changed cell since the last reorder.
 . "$SPHCAST_TEST_TOOLS"
-makeMoldCase "$scratch/a" 'SetFactory("OpenCASCADE");
-Sphere(1) = {0, 0, 0, 0.04};
-Physical Surface("moldWall") = Surface{:};' \
-    'half { type intersection; regions { s { type sphere; centre (0 0 0); radius 0.04; }
-            b { type box; min (-0.05 -0.05 -0.05); max (0.05 0.05 0); } } }' '(0.6 0 0)' 12 0.06
+makeSloshingSphereCase "$scratch/a" 0.06
 cd "$scratch/a"
 particleizeMold > log.particleizeMold 2>&1 || fail "particleizeMold"
 setCastFields > log.setCastFields 2>&1 || fail "setCastFields"

@@ -123,3 +123,13 @@ dimensions [0 1 -2 0 0 0 0];
 value (0 0 -9.81);
 DICT
 }
+
+# makeSloshingSphereCase DIR ENDTIME: makeMoldCase's closed sphere of radius 40 mm, its lower
+# half full of metal thrown sideways at 0.6 m/s (c = 12 m/s): curved walls all round.
+makeSloshingSphereCase() {
+    makeMoldCase "$1" 'SetFactory("OpenCASCADE");
+Sphere(1) = {0, 0, 0, 0.04};
+Physical Surface("moldWall") = Surface{:};' \
+    'half { type intersection; regions { s { type sphere; centre (0 0 0); radius 0.04; }
+            b { type box; min (-0.05 -0.05 -0.05); max (0.05 0.05 0); } } }' '(0.6 0 0)' 12 "$2"
+}
