@@ -1,6 +1,8 @@
 #include "core/dictionary/Parser.h"
 
+#include <algorithm>
 #include <charconv>
+#include <cstdlib>
 #include <fstream>
 #include <system_error>
 
@@ -349,10 +351,26 @@ ValueItem Parser::parseDimensions(Lexer& lexer, const Token& opening, const std:
   return dimensions;
 }
 
+std::vector<fs::path> Parser::etcFolders() {
+  std::vector<fs::path> folders;
+  if (const char* variable = std::getenv("SPHCAST_ETC"); variable && *variable) {
+    folders.emplace_back(variable);
+  }
+#ifdef SPHCAST_ETC_DIR
+  folders.emplace_back(SPHCAST_ETC_DIR);
+#endif
+  // An install puts the executables in <repo>/platforms/bin.
+  std::error_code error;
+  const fs::path executable = fs::read_symlink("/proc/self/exe", error);
+  if (!error) folders.push_back((executable.parent_path() / "../../etc").lexically_normal());
+  return folders;
+}
+
 void Parser::parseDirective(Lexer& lexer, Dictionary& scope, int depth) {
   const Token directive = lexer.next();
   const bool optional = directive.text == "#includeIfPresent";
-  if (directive.text != "#include" && !optional) {
+  const bool etc = directive.text == "#includeEtc";
+  if (directive.text != "#include" && !optional && !etc) {
     throw DictionaryError(locationOf(directive), "unsupported directive '" + directive.text + "'");
   }
   const Token fileToken = lexer.next();
@@ -360,7 +378,25 @@ void Parser::parseDirective(Lexer& lexer, Dictionary& scope, int depth) {
     throw DictionaryError(locationOf(fileToken), "expected a file name after " + directive.text +
                                                      ", found " + describe(fileToken));
   }
-  const fs::path path = fs::path(*lexer.fileName()).parent_path() / fileToken.text;
+  fs::path path = fs::path(*lexer.fileName()).parent_path() / fileToken.text;
+  if (etc) {
+    // As OpenFOAM's #includeEtc: the first of the etc folders that holds the file.
+    const std::vector<fs::path> folders = etcFolders();
+    const auto holder = std::find_if(folders.begin(), folders.end(), [&](const fs::path& folder) {
+      std::error_code error;
+      return fs::is_regular_file(folder / fileToken.text, error);
+    });
+    if (holder == folders.end()) {
+      std::string searched;
+      for (const fs::path& folder : folders) searched += " " + folder.string();
+      throw DictionaryError(locationOf(directive),
+                            "#includeEtc file '" + fileToken.text +
+                                "' is in none of the sphCast etc folders ($SPHCAST_ETC, the "
+                                "source tree's etc/, ../../etc of the executable); searched (" +
+                                searched + " )");
+    }
+    path = *holder / fileToken.text;
+  }
   const std::string what = directive.text + " file '" + path.string() + "'";
 
   const fs::path identity = identityOf(path);

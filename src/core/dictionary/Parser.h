@@ -13,7 +13,7 @@
 namespace sphcast::dictionary {
 
 // Builds a Dictionary from tokens: entries, sub-dictionaries, lists, dimension sets, and the
-// #include and $macro substitutions, which are resolved while reading, as OpenFOAM does (a
+// #include (#includeIfPresent, #includeEtc) and $macro substitutions, which are resolved while reading, as OpenFOAM does (a
 // macro sees the entries written before it). Input is untrusted: nesting, include depth, file
 // size and macro copying are bounded, so no input can exhaust the stack or the memory.
 class Parser {
@@ -38,7 +38,12 @@ class Parser {
                     const std::string& scopeKey);
   void parseEntry(Lexer& lexer, Dictionary& scope, const Token& key, int depth);
   void parseValue(Lexer& lexer, Entry& entry, int depth);
+  // #include "file" (relative to the including file's folder), #includeIfPresent "file" (the
+  // same, nothing if it is missing) and #includeEtc "file" (in the sphCast etc folders).
   void parseDirective(Lexer& lexer, Dictionary& scope, int depth);
+  // Where #includeEtc looks, in order: $SPHCAST_ETC when set, the source tree's etc/ (fixed at
+  // build time), and ../../etc of the running executable (an install's <repo>/platforms/bin).
+  static std::vector<std::filesystem::path> etcFolders();
   void mergeMacroDictionary(Lexer& lexer, Dictionary& scope, int depth);
 
   // Appends the item(s) that `token` starts inside a value or list at `depth`; false if the

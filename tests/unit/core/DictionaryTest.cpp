@@ -1,6 +1,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <cstdlib>
 #include <fstream>
 #include <functional>
 #include <string>
@@ -408,6 +409,34 @@ TEST(Dictionary, MissingIncludeNamesTheIncludingFileAndTheMissingPath) {
   EXPECT_EQ(
       errorOf([] { Dictionary::parse("a 1;\n  #include \"missingFile\"\n", dataDir + "/main"); }),
       dataDir + "/main:2:3: cannot open #include file '" + dataDir + "/missingFile'");
+}
+
+// #includeEtc looks in $SPHCAST_ETC first, then in the source tree's etc/ (where
+// etc/materials/iron is), and may stand inside a sub-dictionary's braces.
+TEST(Dictionary, IncludeEtcReadsFromTheEtcFoldersInOrder) {
+  const fs::path etc = fs::temp_directory_path() / "sphCastDictionaryIncludeEtc";
+  fs::create_directories(etc / "materials");
+  std::ofstream(etc / "materials" / "testOnly") << "density 1234;\n";
+  ASSERT_EQ(setenv("SPHCAST_ETC", etc.c_str(), 1), 0);
+  const Dictionary dict = Dictionary::parse(
+      "a { #includeEtc \"materials/testOnly\" }\nmold { #includeEtc \"materials/iron\" }\n",
+      "physicalProperties");
+  EXPECT_EQ(dict.subDict("a").get<double>("density"), 1234);
+  EXPECT_EQ(dict.subDict("a").location("density").file,
+            (etc / "materials" / "testOnly").string());
+  EXPECT_EQ(dict.subDict("mold").get<double>("density"), 7874);  // from the source tree
+  unsetenv("SPHCAST_ETC");
+  fs::remove_all(etc);
+}
+
+TEST(Dictionary, MissingIncludeEtcNamesTheDirectiveAndTheFoldersSearched) {
+  const std::string message = errorOf(
+      [] { Dictionary::parse("a 1;\n  #includeEtc \"materials/noSuchMaterial\"\n", "main"); });
+  EXPECT_NE(message.find("main:2:3: #includeEtc file 'materials/noSuchMaterial' is in none of "
+                         "the sphCast etc folders"),
+            std::string::npos)
+      << message;
+  EXPECT_NE(message.find(std::string(SPHCAST_SOURCE_ETC_DIR)), std::string::npos) << message;
 }
 
 TEST(Dictionary, IncludeCycleIsAnError) {
