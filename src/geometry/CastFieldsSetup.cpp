@@ -10,7 +10,7 @@
 #include "core/Error.h"
 #include "core/Gravity.h"
 #include "core/Log.h"
-#include "core/TemperatureTable.h"
+#include "materials/MaterialLibrary.h"
 #include "core/dictionary/Dictionary.h"
 #include "geometry/FillRegion.h"
 #include "geometry/InitialDensity.h"
@@ -88,10 +88,10 @@ class CaseSettings {
  public:
   explicit CaseSettings(const CaseFolder& caseFolder) : caseFolder_(caseFolder) {}
 
-  const Dictionary& physicalProperties() {
-    if (!properties_)
-      properties_ = Dictionary::read(caseFolder_.constantFile("physicalProperties"));
-    return *properties_;
+  const MaterialLibrary& materials() {
+    if (!materials_)
+      materials_ = MaterialLibrary::read(caseFolder_.constantFile("physicalProperties"));
+    return *materials_;
   }
   Vector gravity() { return readGravity(caseFolder_); }
   const Dictionary& schemes() {
@@ -124,7 +124,8 @@ class CaseSettings {
 
  private:
   const CaseFolder& caseFolder_;
-  std::optional<Dictionary> properties_, schemes_;
+  std::optional<MaterialLibrary> materials_;
+  std::optional<Dictionary> schemes_;
 };
 
 // Points of the shared lattice inside the region's bounding box grown by `margin` cells.
@@ -224,19 +225,19 @@ std::optional<DensityStart> readDensityStart(const Dictionary& cloudDict,
   const auto choice = fields.get<DensityChoice>("rho", densityDimensions);
   if (choice.value) return std::nullopt;
 
-  const Dictionary& properties = settings.physicalProperties();
+  const MaterialLibrary& materials = settings.materials();
   const std::string materialName = cloudDict.getOrDefault<std::string>("material", cloudName);
-  if (!properties.isDict(materialName)) {
-    const SourceLocation where =
-        cloudDict.found("material") ? cloudDict.location("material") : fields.location("rho");
+  const SourceLocation namedAt =
+      cloudDict.found("material") ? cloudDict.location("material") : fields.location("rho");
+  if (!materials.has(materialName)) {
     std::string present;
-    for (const auto& key : properties.keys()) present += " " + key;
-    throw DictionaryError(where, "rho " + choice.model + " needs the material '" + materialName +
-                                     "' in " + properties.location().file + ", which has (" +
-                                     present + " )");
+    for (const auto& name : materials.names()) present += " " + name;
+    throw DictionaryError(namedAt, "rho " + choice.model + " needs the material '" +
+                                       materialName + "' in " + materials.file() +
+                                       ", which has (" + present + " )");
   }
-  const TemperatureTable restDensity =
-      TemperatureTable::read(properties.subDict(materialName), "density", densityDimensions);
+  const TemperatureTable& restDensity =
+      materials.get(materialName, namedAt, "material").requireDensity("rho " + choice.model);
   double temperature = 0.0;
   if (!restDensity.isConstant()) {
     if (!fields.found("T")) {

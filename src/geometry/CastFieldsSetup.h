@@ -34,7 +34,7 @@ namespace sphcast {
 // `hydrostatic` (rho_s (1 + |g| d / c^2) at depth d below the cloud's free surface,
 // InitialDensity.h; c is soundSpeed of system/sphSchemes, g is constant/g). rho_s is the
 // material's `density` in constant/physicalProperties, a number or a table in T
-// (core/TemperatureTable.h); with a table, T must be given and lie inside it. Without `rho`
+// (materials/TemperatureTable.h); with a table, T must be given and lie inside it. Without `rho`
 // none is written (the solver then starts at its rest density).
 //
 // Regions of a cloud are filled one after the other; a lattice point that an earlier region of

@@ -5,6 +5,7 @@
 
 #include "core/Error.h"
 #include "core/dictionary/Dictionary.h"
+#include "materials/MaterialLibrary.h"
 #include "sph/EquationOfState.h"
 
 namespace sphcast {
@@ -13,8 +14,6 @@ namespace {
 
 const Dimensions length{{0, 1, 0, 0, 0, 0, 0}};
 const Dimensions speed{{0, 1, -1, 0, 0, 0, 0}};
-const Dimensions density{{1, -3, 0, 0, 0, 0, 0}};
-const Dimensions dynamicViscosity{{1, -1, -1, 0, 0, 0, 0}};
 
 // The range of h/dx (supportRadius over the particle spacing) a run can trust: below it the
 // kernel reaches hardly a neighbour, above it a step costs (h/dx)^3 pairs for nothing.
@@ -54,28 +53,6 @@ void readPeriodicAxes(const Dictionary& periodic, FlowSettings& settings) {
     }
     settings.periodic.setPeriodic(axis, static_cast<Real>(interval[0]), static_cast<Real>(period));
   }
-}
-
-// The material that `key` of `models` names must be a sub-dictionary of physicalProperties,
-// which may hold other materials too (setCastFields' clouds may use them). The error is where
-// the name is written: "constant/physicsModels:3:5: 'fluid' names the material 'steel', which
-// is not in constant/physicalProperties; materials there: (water)".
-void requireMaterial(const Dictionary& properties, const Dictionary& models,
-                     const std::string& key) {
-  const auto name = models.get<std::string>(key);
-  if (properties.isDict(name)) return;
-  std::vector<std::string> materials;
-  for (const std::string& candidate : properties.keys()) {
-    if (properties.isDict(candidate)) materials.push_back(candidate);
-  }
-  std::string listed;
-  for (const std::string& material : materials) listed += (listed.empty() ? "" : " ") + material;
-  const std::string nearest = nearestWord(name, materials);
-  throw DictionaryError(models.location(key),
-                        "'" + key + "' names the material '" + name + "', which is not in " +
-                            properties.location().file +
-                            (nearest.empty() ? "" : "; did you mean '" + nearest + "'?") +
-                            (nearest.empty() ? "; " : " ") + "materials there: (" + listed + ")");
 }
 
 }  // namespace
@@ -137,12 +114,14 @@ FlowSetup readFlowSetup(const CaseFolder& caseFolder, const Vector& gravity) {
   }
   if (models.found("periodic")) readPeriodicAxes(models.subDict("periodic"), settings);
 
-  const Dictionary properties = Dictionary::read(caseFolder.constantFile("physicalProperties"));
-  requireMaterial(properties, flow, "fluid");
-  const Dictionary& material = properties.subDict(setup.fluidCloud);
-  material.checkKeys({"density", "viscosity"});
-  setup.restDensity = TemperatureTable::read(material, "density", density);
-  setup.viscosity = positive<Real>(material, "viscosity", dynamicViscosity);
+  // The fluid's material must be in physicalProperties, which may hold other materials too
+  // (setCastFields' clouds may use them); the error is where the name is written.
+  const MaterialLibrary materials =
+      MaterialLibrary::read(caseFolder.constantFile("physicalProperties"));
+  const Material& fluid =
+      materials.get(setup.fluidCloud, flow.location("fluid"), "fluid");
+  setup.restDensity = fluid.requireDensity("the flow");
+  setup.viscosity = fluid.requireViscosity("the flow");
   return setup;
 }
 
@@ -169,25 +148,29 @@ std::vector<std::string> prepareFluidFields(const FlowSetup& setup, ParticleClou
     for (Real& x : fluid.addScalarField(name)) x = value;
     added.emplace_back(name);
   };
-  const TemperatureTable& restDensity = *setup.restDensity;
-  if (!fluid.hasScalarField("restDensity")) {
-    auto& rest = fluid.addScalarField("restDensity");
-    if (restDensity.isConstant()) {
-      for (Real& value : rest) value = static_cast<Real>(restDensity(0));
-    } else {
-      if (!fluid.hasScalarField("T")) {
-        throw DictionaryError(restDensity.location(),
-                              restDensity.description() + " is a table in T, but cloud '" +
-                                  fluid.name() + "' has no T (set it with setCastFields)");
-      }
-      const auto& temperature = fluid.scalarField("T");
-      for (std::size_t i = 0; i < rest.size(); ++i) {
-        rest[i] = static_cast<Real>(restDensity(static_cast<double>(temperature[i])));
-      }
+  // A property of the material as a field: its value, or its value at each particle's T.
+  auto fillFromTable = [&](const char* name, const TemperatureTable& table) {
+    if (fluid.hasScalarField(name)) return;
+    if (table.isConstant()) {
+      fill(name, static_cast<Real>(table(0)));
+      return;
     }
-    added.emplace_back("restDensity");
-  }
-  fill("viscosity", setup.viscosity);
+    if (!fluid.hasScalarField("T")) {
+      throw DictionaryError(table.location(), table.description() +
+                                                  " is a table in T, but cloud '" +
+                                                  fluid.name() +
+                                                  "' has no T (set it with setCastFields)");
+    }
+    // a copy: adding a field may move the others
+    const std::vector<Real> temperature = fluid.scalarField("T");
+    auto& field = fluid.addScalarField(name);
+    for (std::size_t i = 0; i < field.size(); ++i) {
+      field[i] = static_cast<Real>(table(static_cast<double>(temperature[i])));
+    }
+    added.emplace_back(name);
+  };
+  fillFromTable("restDensity", *setup.restDensity);
+  fillFromTable("viscosity", *setup.viscosity);
   if (!fluid.hasScalarField("rho")) {
     // a copy: adding a field may move the others
     const std::vector<Real> restValues = fluid.scalarField("restDensity");

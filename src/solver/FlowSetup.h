@@ -7,7 +7,7 @@
 
 #include "core/CaseFolder.h"
 #include "core/Real.h"
-#include "core/TemperatureTable.h"
+#include "materials/TemperatureTable.h"
 #include "sph/WeaklyCompressibleFlow.h"
 
 namespace sphcast {
@@ -27,26 +27,27 @@ namespace sphcast {
 //                            supportRadius 0.0045;       // h, m
 //                            soundSpeed    50;           // c of eq. (3), m/s
 //   constant/physicalProperties:  metal { density 2400; viscosity 1.28e-3; }
-//                            (rho_s in kg/m^3, or a table in T: density table ((T rho) ...);
-//                            dynamic viscosity in Pa s)
+//                            (a material of materials/MaterialLibrary.h: rho_s in kg/m^3,
+//                            dynamic viscosity in Pa s, each a constant or a table in T;
+//                            e.g. metal { #includeEtc "materials/AC4CH" })
 struct FlowSetup {
   bool enabled = false;
   std::string fluidCloud;
   std::vector<std::string> wallClouds;
   FlowSettings settings;
   std::optional<TemperatureTable> restDensity;  // rho_s(T), or a constant
-  Real viscosity = 0;
+  std::optional<TemperatureTable> viscosity;    // dynamic mu(T), log-linear, or a constant
   SourceLocation supportRadiusAt;  // for the check of h against the fluid's spacing
 };
 
 // Reads and checks the three dictionaries (errors name file, line and key).
 FlowSetup readFlowSetup(const CaseFolder& caseFolder, const Vector& gravity);
 
-// Gives the fluid cloud the fields the flow needs that the start time lacks: restDensity
-// (rho_s, at each particle's T where rho_s is a table: the cloud must have T), rho (rho_s),
-// mass (rho volume), viscosity. Returns what it added, for the log. Until the thermal models
-// move T, rho_s stays what it was at the start. The cloud must have the attribute spacing
-// (dx), with supportRadius/spacing in [1.2, 6]. (The reader, VtpCloud.h, has refused
+// Gives the fluid cloud the fields the flow needs that the start time lacks: restDensity and
+// viscosity (rho_s and mu, at each particle's T where they are tables: the cloud must then
+// have T), rho (rho_s), mass (rho volume). Returns what it added, for the log. Until the
+// thermal models move T, rho_s and mu stay what they were at the start. The cloud must have
+// the attribute spacing (dx), with supportRadius/spacing in [1.2, 6]. (The reader, VtpCloud.h, has refused
 // non-positive rho, mass, volume and viscosity already.)
 std::vector<std::string> prepareFluidFields(const FlowSetup& setup, ParticleCloud& fluid);
 

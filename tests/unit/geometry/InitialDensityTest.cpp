@@ -6,7 +6,7 @@
 #include <map>
 #include <string>
 
-#include "core/TemperatureTable.h"
+#include "materials/TemperatureTable.h"
 #include "geometry/CastFieldsSetup.h"
 #include "geometry/InitialDensity.h"
 #include "support/TemporaryCase.h"
