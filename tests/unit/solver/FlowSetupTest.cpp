@@ -97,6 +97,26 @@ TEST(FlowSetup, RestDensityFromATemperatureTable) {
   }
 }
 
+// mu as a table in T (Table 1 spans eight decades): each particle's viscosity is mu at its T,
+// interpolated log-linearly; the AC4CH material of etc/materials reads through #includeEtc.
+TEST(FlowSetup, ViscosityFromATemperatureTableIsInterpolatedLogLinearly) {
+  const FlowCase flowCase("", "densityScheme riemann;\n");
+  flowCase.write("constant/physicalProperties",
+                 std::string(header) + "water { density 1000; viscosity table ((800 100) (900 "
+                                       "1e-2)); }\nalloy { #includeEtc \"materials/AC4CH\" }\n");
+  const FlowSetup setup = flowCase.read();
+  ParticleCloud water("water");
+  water.resize(3);
+  water.attributes()["spacing"] = 0.01;
+  water.addScalarField("T") = {850, 700, 1000};
+  water.addScalarField("volume") = {1e-9, 1e-9, 1e-9};
+  prepareFluidFields(setup, water);
+  const auto& mu = water.scalarField("viscosity");
+  EXPECT_NEAR(mu[0], 1.0, 1e-12);  // sqrt(100 * 1e-2), the geometric mean
+  EXPECT_DOUBLE_EQ(mu[1], 100);    // clamped
+  EXPECT_DOUBLE_EQ(mu[2], 1e-2);
+}
+
 // Each error names the file and line (the header is line 1, the first entry line 2) and says
 // what is wrong.
 TEST(FlowSetup, BadKeysAreErrorsAtTheirLine) {
