@@ -102,8 +102,9 @@ TEST(FlowSetup, RestDensityFromATemperatureTable) {
 TEST(FlowSetup, ViscosityFromATemperatureTableIsInterpolatedLogLinearly) {
   const FlowCase flowCase("", "densityScheme riemann;\n");
   flowCase.write("constant/physicalProperties",
-                 std::string(header) + "water { density 1000; viscosity table ((800 100) (900 "
-                                       "1e-2)); }\nalloy { #includeEtc \"materials/AC4CH\" }\n");
+                 std::string(header) +
+                     "water { density 1000; viscosity table ((800 100) (900 "
+                     "1e-2)); }\nalloy { #includeEtc \"materials/AC4CH\" }\n");
   const FlowSetup setup = flowCase.read();
   ParticleCloud water("water");
   water.resize(3);
