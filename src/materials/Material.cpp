@@ -8,9 +8,9 @@ namespace {
 
 const Dimensions densityDimensions{{1, -3, 0, 0, 0, 0, 0}};
 const Dimensions dynamicViscosityDimensions{{1, -1, -1, 0, 0, 0, 0}};
-const Dimensions conductivityDimensions{{1, 1, -3, 0, -1, 0, 0}};
+const Dimensions conductivityDimensions{{1, 1, -3, -1, 0, 0, 0}};
 const Dimensions specificEnergyDimensions{{0, 2, -2, 0, 0, 0, 0}};
-const Dimensions specificHeatDimensions{{0, 2, -2, 0, -1, 0, 0}};
+const Dimensions specificHeatDimensions{{0, 2, -2, -1, 0, 0, 0}};
 const Dimensions surfaceTensionDimensions{{1, 0, -2, 0, 0, 0, 0}};
 const Dimensions dimensionless{{0, 0, 0, 0, 0, 0, 0}};
 

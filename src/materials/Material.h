@@ -24,7 +24,7 @@ namespace sphcast {
 //   }
 //
 // density [1 -3 0 0 0 0 0], viscosity (dynamic) [1 -1 -1 0 0 0 0], conductivity
-// [1 1 -3 0 -1 0 0], internalEnergy [0 2 -2 0 0 0 0] or specificHeat [0 2 -2 0 -1 0 0] (not
+// [1 1 -3 -1 0 0 0], internalEnergy [0 2 -2 0 0 0 0] or specificHeat [0 2 -2 -1 0 0 0] (not
 // both), surfaceTension [1 0 -2 0 0 0 0] (may be 0), emissivity (a number in [0, 1]).
 struct Material {
   std::string name;

@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "core/Error.h"
+#include "post/EnergyBalance.h"
 #include "post/FieldMinMax.h"
 #include "post/SamplingFunctionObjects.h"
 
@@ -23,13 +24,16 @@ const std::vector<std::string> commonKeys = {"type", "cloud", "writeControl", "w
 
 FunctionObject::FunctionObject(const std::string& name, const Dictionary& dict,
                                const FunctionObjectContext& context,
-                               const std::vector<std::string>& extraKeys)
+                               const std::vector<std::string>& extraKeys, Clouds clouds)
     : outputFolder_(context.caseRoot / "postProcessing" / name / context.startTimeName),
       name_(name),
       startTime_(context.startTime) {
   std::vector<std::string> valid = commonKeys;
+  if (clouds == Clouds::many) valid.erase(std::find(valid.begin(), valid.end(), "cloud"));
   valid.insert(valid.end(), extraKeys.begin(), extraKeys.end());
   dict.checkKeys(valid);
+  readWriteControl(dict);
+  if (clouds == Clouds::many) return;
 
   const auto cloudName = dict.get<std::string>("cloud");
   for (const ParticleCloud* cloud : context.clouds) {
@@ -42,7 +46,9 @@ FunctionObject::FunctionObject(const std::string& name, const Dictionary& dict,
                                                       dict.name() + "; the run has: (" + present +
                                                       " )");
   }
+}
 
+void FunctionObject::readWriteControl(const Dictionary& dict) {
   const std::string control =
       dict.getChoiceOrDefault("writeControl", {"timeStep", "writeTime", "runTime"}, "timeStep");
   control_ = control == "timeStep"    ? Control::timeStep
@@ -131,7 +137,8 @@ FunctionObjectList::FunctionObjectList(const Dictionary& controlDict,
                                        const FunctionObjectContext& context) {
   if (!controlDict.found("functions")) return;
   const Dictionary& functions = controlDict.subDict("functions");
-  const std::vector<std::string> types = {"probes", "surfaceHeights", "front", "fieldMinMax"};
+  const std::vector<std::string> types = {"probes", "surfaceHeights", "front", "fieldMinMax",
+                                          "energyBalance"};
   for (const std::string& name : functions.keys()) {
     const Dictionary& dict = functions.subDict(name);
     // Explicit registration: one line per type.
@@ -142,6 +149,8 @@ FunctionObjectList::FunctionObjectList(const Dictionary& controlDict,
       objects_.push_back(std::make_unique<SurfaceHeights>(name, dict, context));
     } else if (type == "front") {
       objects_.push_back(std::make_unique<FluidFront>(name, dict, context));
+    } else if (type == "energyBalance") {
+      objects_.push_back(std::make_unique<EnergyBalance>(name, dict, context));
     } else {
       objects_.push_back(std::make_unique<FieldMinMax>(name, dict, context));
     }

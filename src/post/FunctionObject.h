@@ -54,9 +54,12 @@ class FunctionObject {
 
  protected:
   // Reads the keys every function object has (type, cloud, writeControl, writeInterval) and
-  // checks the cloud exists; extraKeys are the type's own, for the unknown-key check.
+  // checks the cloud exists; extraKeys are the type's own, for the unknown-key check. A type
+  // that spans several clouds (Clouds::many) reads its own `clouds` instead of `cloud`.
+  enum class Clouds { one, many };
   FunctionObject(const std::string& name, const Dictionary& dict,
-                 const FunctionObjectContext& context, const std::vector<std::string>& extraKeys);
+                 const FunctionObjectContext& context, const std::vector<std::string>& extraKeys,
+                 Clouds clouds = Clouds::one);
 
   const ParticleCloud& cloud() const { return *cloud_; }
 
@@ -72,6 +75,7 @@ class FunctionObject {
 
  private:
   enum class Control { timeStep, writeTime, runTime };
+  void readWriteControl(const Dictionary& dict);
   bool wanted(const TimeState& time, bool caseWriteTime);
 
   std::string name_;
@@ -92,7 +96,7 @@ std::string formatSample(const Vector& value);  // "(x y z)"
 class FunctionObjectList {
  public:
   FunctionObjectList() = default;
-  // Types: probes, surfaceHeights, front, fieldMinMax. An unknown type, a missing or unknown cloud or field,
+  // Types: probes, surfaceHeights, front, fieldMinMax, energyBalance. An unknown type, a missing or unknown cloud or field,
   // a bad location: DictionaryError naming file, line and key.
   FunctionObjectList(const Dictionary& controlDict, const FunctionObjectContext& context);
 

@@ -22,6 +22,7 @@ CastingSolver::CastingSolver(const CaseFolder& caseFolder)
       gravity_(readGravity(caseFolder)),
       motion_(gravity_),
       flowSetup_(readFlowSetup(caseFolder, gravity_)),
+      heatSetup_(readHeatSetup(caseFolder)),
       writer_(caseFolder, time_.settings().purgeWrite) {
   for (const std::string& repaired : repairedWrites_) {
     info() << "Repaired interrupted write: " << repaired << std::endl;
@@ -36,8 +37,13 @@ CastingSolver::CastingSolver(const CaseFolder& caseFolder)
   // controlDict's entries beyond run control (TimeControl's), read once
   const Dictionary controlDict = Dictionary::read(caseFolder_.systemFile("controlDict"));
   health_ = HealthSettings::read(controlDict);
-  if (flowSetup_.enabled) {
-    setUpFlow();
+  // Clouds join clouds_ before any model holds a pointer into it.
+  if (heatSetup_.enabled) loadHeatClouds();
+  if (flowSetup_.enabled || heatSetup_.enabled) {
+    setUpNeighbourhood();
+    if (flowSetup_.enabled) setUpFlow();
+    if (heatSetup_.enabled) setUpHeat();
+    startModels();
   } else {
     for (const ParticleCloud& cloud : clouds_) {
       info() << "Cloud " << cloud.name() << ": " << cloud.size() << " particles"
@@ -67,38 +73,85 @@ ParticleCloud& CastingSolver::cloudNamed(const std::string& name) {
               time_.startTimeName() + " holds only (" + present + " )");
 }
 
+// A heat cloud is taken from the start time when it is there, else from constant/particles
+// (a mold as particleizeMold wrote it): from then on it is written to every time folder, since
+// its temperature changes.
+void CastingSolver::loadHeatClouds() {
+  for (const std::string& name : heatSetup_.clouds) {
+    if (findCloud(name)) continue;
+    const auto file = caseFolder_.constant() / "particles" / (name + ".vtp");
+    if (!std::filesystem::exists(file)) {
+      std::string present;
+      for (const ParticleCloud& cloud : clouds_) present += " " + cloud.name();
+      throw DictionaryError(heatSetup_.cloudsAt,
+                            "heat cloud '" + name + "' is neither in time " +
+                                time_.startTimeName() + " (which holds (" + present +
+                                " )) nor in constant/particles");
+    }
+    clouds_.push_back(readCloudVtp(file, name));
+    info() << "Cloud " << name << ": from constant/particles (carries heat: written from now on)\n";
+  }
+}
+
+// Every cloud a model works on, registered once: the flow's fluid moves, everything else is
+// at rest (moving molds arrive with the rigid bodies).
+void CastingSolver::setUpNeighbourhood() {
+  const Real radius = flowSetup_.enabled ? flowSetup_.settings.supportRadius
+                                         : heatSetup_.supportRadius;
+  const PeriodicBox periodic = flowSetup_.enabled ? flowSetup_.settings.periodic : PeriodicBox();
+  if (flowSetup_.enabled && heatSetup_.enabled &&
+      heatSetup_.supportRadius != flowSetup_.settings.supportRadius) {
+    throw Error("internal: flow and heat read different supportRadius");
+  }
+  neighbourhood_ = std::make_unique<Neighbourhood>(radius, periodic);
+  if (flowSetup_.enabled) {
+    ParticleCloud& fluid = cloudNamed(flowSetup_.fluidCloud);
+    neighbourhood_->addCloud(fluid, Neighbourhood::Motion::moving);
+    evolving_.push_back(&fluid);
+    // A wall cloud is taken from the start time when it is there (setCastFields may have set
+    // its fields, or it carries heat), else from constant/particles, where particleizeMold
+    // wrote it.
+    for (const std::string& wallName : flowSetup_.wallClouds) {
+      if (const ParticleCloud* inTime = findCloud(wallName)) {
+        wallClouds_.push_back(inTime);
+        continue;
+      }
+      const auto file = caseFolder_.constant() / "particles" / (wallName + ".vtp");
+      if (!std::filesystem::exists(file)) {
+        throw Error("wall cloud '" + wallName + "' is neither in time " + time_.startTimeName() +
+                    " nor in constant/particles (run particleizeMold)");
+      }
+      staticClouds_.push_back(readCloudVtp(file, wallName));
+    }
+    for (const ParticleCloud& wall : staticClouds_) wallClouds_.push_back(&wall);
+    for (const ParticleCloud* wall : wallClouds_) neighbourhood_->addFixedCloud(*wall);
+  }
+  for (const std::string& name : heatSetup_.clouds) {
+    ParticleCloud& cloud = cloudNamed(name);
+    neighbourhood_->addCloud(cloud, Neighbourhood::Motion::fixed);  // no-op for the fluid
+    if (std::find(evolving_.begin(), evolving_.end(), &cloud) == evolving_.end()) {
+      evolving_.push_back(&cloud);
+    }
+  }
+  for (ParticleCloud* cloud : evolving_) lastGood_.push_back(*cloud);
+}
+
 void CastingSolver::setUpFlow() {
   ParticleCloud& fluid = cloudNamed(flowSetup_.fluidCloud);
   for (const std::string& added : prepareFluidFields(flowSetup_, fluid)) {
     info() << "Cloud " << fluid.name() << ": initial " << added << " from constant/\n";
   }
-  // A wall cloud is taken from the start time when it is there (setCastFields may have set its
-  // fields), else from constant/particles, where particleizeMold wrote it.
-  std::vector<const ParticleCloud*> walls;
-  for (const std::string& wallName : flowSetup_.wallClouds) {
-    if (const ParticleCloud* inTime = findCloud(wallName)) {
-      walls.push_back(inTime);
-      continue;
-    }
-    const auto file = caseFolder_.constant() / "particles" / (wallName + ".vtp");
-    if (!std::filesystem::exists(file)) {
-      throw Error("wall cloud '" + wallName + "' is neither in time " + time_.startTimeName() +
-                  " nor in constant/particles (run particleizeMold)");
-    }
-    staticClouds_.push_back(readCloudVtp(file, wallName));
-  }
-  for (const ParticleCloud& wall : staticClouds_) walls.push_back(&wall);
-  flow_ = std::make_unique<WeaklyCompressibleFlow>(flowSetup_.settings, fluid, walls);
+  const std::vector<const ParticleCloud*>& walls = wallClouds_;
+  flow_ = std::make_unique<WeaklyCompressibleFlow>(flowSetup_.settings, fluid, walls,
+                                                   *neighbourhood_);
   fluid_ = &fluid;
-  lastGoodFluid_ = std::make_unique<ParticleCloud>(fluid);
   domain_ = walls.empty() ? defaultDomain({&fluid}) : defaultDomain(walls);
   const FlowSettings& settings = flowSetup_.settings;
   info() << "Flow: weakly compressible SPH (" << settings.dimension << "D), densityScheme "
          << settings.densityScheme << ", kernelCorrection "
          << (settings.kernelCorrection ? "on" : "off") << ", viscousForm " << settings.viscousForm
          << ", h = " << settings.supportRadius << " m, c = " << settings.soundSpeed << " m/s\n"
-         << "    fluid " << fluid.name() << ": " << fluid.size() << " particles, "
-         << flow_->fluidPairCount() << " pairs\n";
+         << "    fluid " << fluid.name() << ": " << fluid.size() << " particles\n";
   for (const ParticleCloud* wall : walls) {
     info() << "    wall " << wall->name() << ": " << wall->size() << " particles\n";
   }
@@ -122,6 +175,75 @@ void CastingSolver::setUpFlow() {
   // Everything else stays where it is: only the fluid moves.
 }
 
+void CastingSolver::setUpHeat() {
+  HeatTransferContext context;
+  context.dimension = flowSetup_.enabled ? flowSetup_.settings.dimension : heatSetup_.dimension;
+  context.supportRadius = neighbourhood_->radius();
+  context.neighbourhood = neighbourhood_.get();
+  double spacing = 0;
+  for (const std::string& name : heatSetup_.clouds) {
+    ParticleCloud& cloud = cloudNamed(name);
+    HeatCloud heat{&cloud, &heatSetup_.materialOf(name)};
+    if (const auto held = heatSetup_.fixedTemperature.find(name);
+        held != heatSetup_.fixedTemperature.end()) {
+      heat.fixedTemperature = true;
+      heat.heldTemperature = held->second;
+    }
+    const auto attribute = cloud.attributes().find("spacing");
+    if (attribute == cloud.attributes().end() || !(attribute->second > 0)) {
+      throw Error("heat cloud '" + name +
+                  "' has no positive 'spacing' attribute (the particle spacing, which "
+                  "particleizeMold and setCastFields write)");
+    }
+    // the finest cloud sets the regularisation and the step limits
+    spacing = spacing == 0 ? attribute->second : std::min(spacing, attribute->second);
+    context.clouds.push_back(heat);
+  }
+  context.spacing = static_cast<Real>(spacing);
+  energy_ = std::make_unique<EnergyEquation>(context, heatSetup_.heatTransfer);
+  if (energy_->needsExposedArea()) {
+    std::vector<ParticleCloud*> exposed;
+    std::vector<const ParticleCloud*> covering;
+    for (const HeatCloud& heat : energy_->context().clouds) {
+      exposed.push_back(heat.cloud);
+      covering.push_back(heat.cloud);
+    }
+    for (const ParticleCloud* wall : wallClouds_) {
+      if (std::find(covering.begin(), covering.end(), wall) == covering.end()) {
+        covering.push_back(wall);
+      }
+    }
+    exposedArea_ = std::make_unique<ExposedArea>(context.dimension, context.supportRadius,
+                                                 context.spacing, exposed, covering,
+                                                 *neighbourhood_);
+  }
+  info() << "Heat transfer: energy equation (17) on";
+  for (const HeatCloud& heat : energy_->context().clouds) {
+    info() << ' ' << heat.cloud->name() << " (" << heat.material->name;
+    if (heat.fixedTemperature) info() << ", held at " << heat.heldTemperature << " K";
+    info() << ')';
+  }
+  info() << '\n';
+  for (const std::string& line : energy_->descriptions()) info() << "    " << line << '\n';
+  if (exposedArea_) {
+    info() << "    exposed area (eq. 11) with R_A = " << exposedArea_->areaFactor()
+           << " (a flat surface counts its area)\n";
+  }
+  if (!flowSetup_.enabled) info() << "    no flow: the particles stay where they are\n";
+}
+
+// The first search and the rates of the start state (a restart keeps the order and the rates
+// it was written with).
+void CastingSolver::startModels() {
+  const bool restarted = (flow_ && flow_->restarted()) || (energy_ && energy_->restarted());
+  addWallTime(searchSeconds_,
+              [&] { neighbourhood_->update(restarted ? CloudOrder::keep : CloudOrder::byCell); });
+  if (exposedArea_) exposedArea_->compute();
+  if (flow_) flow_->start();
+  if (energy_) energy_->start();
+  info() << "    neighbourhood: " << neighbourhood_->pairCount() << " pairs\n";
+}
+
 void CastingSolver::setUpFunctionObjects(const Dictionary& controlDict) {
   FunctionObjectContext context;
   context.caseRoot = caseFolder_.root();
@@ -138,7 +260,19 @@ void CastingSolver::setUpFunctionObjects(const Dictionary& controlDict) {
 }
 
 double CastingSolver::stableDeltaT(std::string& limiter) const {
-  if (flow_) return flow_->stepLimits(time_.settings().maxCo).smallest(limiter);
+  if (flow_ || energy_) {
+    double stable = std::numeric_limits<double>::infinity();
+    if (flow_) stable = flow_->stepLimits(time_.settings().maxCo).smallest(limiter);
+    if (energy_) {
+      std::string heatLimiter;
+      const double heat = energy_->stableDeltaT(heatLimiter);
+      if (heat < stable) {
+        stable = heat;
+        limiter = heatLimiter;
+      }
+    }
+    return stable;
+  }
   limiter = "maxCo on particle travel";
   double stable = std::numeric_limits<double>::max();
   for (const ParticleCloud& cloud : clouds_) {
@@ -149,13 +283,30 @@ double CastingSolver::stableDeltaT(std::string& limiter) const {
   return stable;
 }
 
+// One step: the models' passes over one neighbourhood search, kick-drift-kick.
 void CastingSolver::evolve(double deltaT) {
-  if (flow_) {
-    flow_->step(deltaT);
+  if (!flow_ && !energy_) {
+    for (ParticleCloud& cloud : clouds_) {
+      if (cloud.hasVectorField("U")) motion_.step(cloud, deltaT);
+    }
     return;
   }
-  for (ParticleCloud& cloud : clouds_) {
-    if (cloud.hasVectorField("U")) motion_.step(cloud, deltaT);
+  // the first kicks with the rates of the current state, and the drift
+  if (flow_) flow_->kickAndDrift(deltaT);
+  if (energy_) addWallTime(heatSeconds_, [&] { energy_->halfKick(deltaT); });
+  // the search at the new positions (nothing moves without a flow), the quantities models share
+  if (flow_) {
+    addWallTime(searchSeconds_, [&] { neighbourhood_->update(); });
+    flow_->keepClearOfWalls();
+    if (exposedArea_) addWallTime(heatSeconds_, [&] { exposedArea_->compute(); });
+  }
+  // the rates at the new positions and the second kicks
+  if (flow_) flow_->computeRatesAndKick(deltaT);
+  if (energy_) {
+    addWallTime(heatSeconds_, [&] {
+      energy_->computeRates();
+      energy_->halfKick(deltaT);
+    });
   }
 }
 
@@ -190,20 +341,43 @@ void CastingSolver::logStep(bool printBlock) {
          << " J  moved back from walls " << flow_->lastWallClearance().corrected << '\n';
     info() << line.str();
   }
+  if (energy_) logHeat();
   info() << clock_.timesLine() << '\n'
          << clock_.progressLine(time_.progress(), stepsTaken_) << '\n'
          << std::endl;  // flushed: a killed run's log ends at its last step
+}
+
+void CastingSolver::logHeat() {
+  std::ostringstream line;
+  line.precision(6);
+  for (const HeatCloud& heat : energy_->context().clouds) {
+    if (heat.fixedTemperature) continue;
+    const auto& T = heat.cloud->scalarField("T");
+    const auto& u = heat.cloud->scalarField("u");
+    const auto& mass = heat.cloud->scalarField("mass");
+    double lowest = std::numeric_limits<double>::infinity(), highest = -lowest, energy = 0;
+    for (std::size_t i = 0; i < T.size(); ++i) {
+      lowest = std::min(lowest, double(T[i]));
+      highest = std::max(highest, double(T[i]));
+      energy += double(mass[i]) * double(u[i]);
+    }
+    line << "T " << heat.cloud->name() << ' ' << lowest << " .. " << highest
+         << " K  internal energy " << energy << " J\n";
+  }
+  info() << line.str();
 }
 
 void CastingSolver::logTimeSpent() {
   std::ostringstream line;
   line.precision(3);
   line << "Time spent (wall, s):";
+  if (neighbourhood_) line << " neighbour search " << searchSeconds_ << ",";
   if (flow_) {
     const FlowTimings& t = flow_->timings();
-    line << " neighbour search " << t.neighbourSearch << ", wall clearance " << t.wallClearance
-         << ", rates " << t.rates << ", integration " << t.integration << ",";
+    line << " wall clearance " << t.wallClearance << ", flow rates " << t.rates
+         << ", flow integration " << t.integration << ",";
   }
+  if (energy_) line << " heat " << heatSeconds_ << ",";
   line << " health checks " << checkSeconds_ << ", function objects " << functionSeconds_
        << ", output " << outputSeconds_;
   info() << line.str() << '\n' << "Run health: " << warnings_.summary() << '\n';
@@ -250,6 +424,10 @@ std::string CastingSolver::checkHealth() {
       warning(message.str());
     }
   }
+  if (energy_) {
+    const std::string bad = checkTemperatures();
+    if (!bad.empty()) return bad;
+  }
   if (flow_) {
     const WallClearanceReport& clearance = flow_->lastWallClearance();
     const double spacing = fluid_->attributes().at("spacing");
@@ -273,6 +451,23 @@ std::string CastingSolver::checkHealth() {
                 << " dx behind";
         warning(message.str());
       }
+    }
+  }
+  return "";
+}
+
+// A temperature that is not finite or not above 0 K: the energy equation went unstable (a step
+// past its limits) or a table was extrapolated far beyond its range.
+std::string CastingSolver::checkTemperatures() const {
+  for (const HeatCloud& heat : energy_->context().clouds) {
+    const auto& T = heat.cloud->scalarField("T");
+    for (std::size_t i = 0; i < T.size(); ++i) {
+      if (T[i] > 0 && std::isfinite(T[i])) continue;
+      std::ostringstream problem;
+      problem << "the temperature of "
+              << describeParticle(*heat.cloud, i, heat.cloud->positions()[i]) << " is " << T[i]
+              << " K";
+      return problem.str();
     }
   }
   return "";
@@ -306,8 +501,9 @@ void CastingSolver::stopWithLastGoodState(const TimeState& good, bool restoreSav
   logTimeSpent();
   const std::string failure =
       "at time " + badTime + " (step " + std::to_string(badIndex) + "): " + what + ". ";
-  // Only the flow keeps the state before the step; ballistic clouds have nothing to go back to.
-  if (restoreSaved && !lastGoodFluid_) {
+  // Only the models keep the state before the step; ballistic clouds have nothing to go back
+  // to.
+  if (restoreSaved && evolving_.empty()) {
     throw Error(failure + "Nothing is written: the last written time is the last good state.");
   }
   // The start time is on disk as it was read: rewriting it would store the rates of this run's
@@ -316,7 +512,9 @@ void CastingSolver::stopWithLastGoodState(const TimeState& good, bool restoreSav
     throw Error(failure + "The last good state is the start time " + good.name +
                 ", left as it was; change maxCo, deltaT or soundSpeed and run again.");
   }
-  if (restoreSaved) *fluid_ = *lastGoodFluid_;
+  if (restoreSaved) {
+    for (std::size_t c = 0; c < evolving_.size(); ++c) *evolving_[c] = lastGood_[c];
+  }
   std::vector<const ParticleCloud*> written;
   for (const ParticleCloud& cloud : clouds_) written.push_back(&cloud);
   writer_.write(good, written);
@@ -336,7 +534,7 @@ void CastingSolver::run() {
       stopWithLastGoodState(time_.state(), false, collapse);  // this state passed every check
     }
     time_.adjustDeltaT(stable, limiter);
-    if (!time_.settings().adjustTimeStep && flow_ && time_.deltaT() > stable &&
+    if (!time_.settings().adjustTimeStep && (flow_ || energy_) && time_.deltaT() > stable &&
         warnings_.shouldPrint("a fixed deltaT above the stable step", time_.deltaT() / stable)) {
       std::ostringstream message;
       message.precision(4);
@@ -346,7 +544,8 @@ void CastingSolver::run() {
       warning(message.str());
     }
     const TimeState before = time_.state();
-    if (flow_) *lastGoodFluid_ = *fluid_;  // reuses its storage: no allocation per step
+    // reuses their storage: no allocation per step
+    for (std::size_t c = 0; c < evolving_.size(); ++c) lastGood_[c] = *evolving_[c];
     time_.advance();
     ++stepsTaken_;
     // A step that throws (a far-flung particle the cell grid cannot place, memory exhausted)

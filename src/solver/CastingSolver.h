@@ -12,17 +12,22 @@
 #include "solver/BallisticMotion.h"
 #include "solver/CaseWriter.h"
 #include "solver/FlowSetup.h"
+#include "solver/HeatSetup.h"
 #include "solver/RunHealth.h"
+#include "sph/ExposedArea.h"
 #include "sph/WeaklyCompressibleFlow.h"
+#include "thermal/EnergyEquation.h"
 
 namespace sphcast {
 
 class Dictionary;
 
-// The casting time loop of sphCastFoam. With a flow model in constant/physicsModels the fluid
-// cloud runs weakly compressible SPH among the wall clouds; without one the clouds move
-// ballistically under constant/g (BallisticMotion). Heat and solidification plug in as later
-// passes.
+// The casting time loop of sphCastFoam: builds the models constant/physicsModels names over one
+// shared neighbourhood, and steps them (evolve() spells out the order of the passes). With a
+// flow model the fluid cloud runs weakly compressible SPH among the wall clouds; with
+// heatTransfer the heat clouds carry the energy equation (17), with or without a flow (without
+// one the particles stay where they are); with neither, the clouds move ballistically under
+// constant/g (BallisticMotion).
 class CastingSolver {
  public:
   // Reads and checks everything the run needs (controlDict, constant/g, the start time's
@@ -35,7 +40,11 @@ class CastingSolver {
   const std::vector<ParticleCloud>& clouds() const { return clouds_; }
 
  private:
+  void loadHeatClouds();
+  void setUpNeighbourhood();
   void setUpFlow();
+  void setUpHeat();
+  void startModels();
   void setUpFunctionObjects(const Dictionary& controlDict);
   ParticleCloud* findCloud(const std::string& name);   // nullptr when absent
   ParticleCloud& cloudNamed(const std::string& name);  // throws, listing the clouds present
@@ -45,9 +54,11 @@ class CastingSolver {
   void logStep(bool printBlock);
   void logRereadMessage();
   void logTimeSpent();
+  void logHeat();
   // Why the run must stop after the step just taken, or "" when every check passed; warns in
   // the log about what is bad but not yet fatal.
   std::string checkHealth();
+  std::string checkTemperatures() const;
   // Why the run must stop before the next step, from the models' stable step: "" when it is not
   // far below its running mean.
   std::string checkStepCollapse(double stableDeltaT, const std::string& limiter);
@@ -64,12 +75,21 @@ class CastingSolver {
   Vector gravity_;
   BallisticMotion motion_;
   FlowSetup flowSetup_;
+  HeatSetup heatSetup_;
   std::vector<ParticleCloud> clouds_;        // of the time folders: read, stepped, written
   std::vector<ParticleCloud> staticClouds_;  // of constant/particles: read only
+  // The cell grids and pair lists of every model, built once per step (with flow or heat).
+  std::unique_ptr<Neighbourhood> neighbourhood_;
   std::unique_ptr<WeaklyCompressibleFlow> flow_;
   ParticleCloud* fluid_ = nullptr;
+  std::unique_ptr<EnergyEquation> energy_;
+  std::unique_ptr<ExposedArea> exposedArea_;  // A_i, when a model reads it
+  std::vector<const ParticleCloud*> wallClouds_;  // the flow's walls
   Domain domain_;
-  std::unique_ptr<ParticleCloud> lastGoodFluid_;  // the fluid before the step being taken
+  // The clouds before the step being taken (those that change: the fluid, the heat clouds)
+  std::vector<ParticleCloud> lastGood_;
+  std::vector<ParticleCloud*> evolving_;
+  double searchSeconds_ = 0, heatSeconds_ = 0;
   HealthSettings health_;
   HealthWarnings warnings_;
   double meanStableDeltaT_ = 0;  // running mean of the models' stable step

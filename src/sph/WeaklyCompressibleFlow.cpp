@@ -31,7 +31,32 @@ WeaklyCompressibleFlow::WeaklyCompressibleFlow(FlowSettings settings, ParticleCl
     : settings_(std::move(settings)),
       fluid_(fluid),
       walls_(std::move(walls)),
-      fluidGrid_(settings_.supportRadius, settings_.periodic) {
+      ownNeighbourhood_(
+          std::make_unique<Neighbourhood>(settings_.supportRadius, settings_.periodic)),
+      neighbourhood_(*ownNeighbourhood_) {
+  checkInput();
+  // A restarted cloud keeps the order it was written in (the wall clearance may have moved a
+  // particle into another cell after the last reorder; reordering it now would change the
+  // order of the next step's sums): the restart stays bit for bit, and the log's pair count
+  // is right.
+  neighbourhood_.update(restarted_ ? CloudOrder::keep : CloudOrder::byCell);
+  start();
+}
+
+WeaklyCompressibleFlow::WeaklyCompressibleFlow(FlowSettings settings, ParticleCloud& fluid,
+                                               std::vector<const ParticleCloud*> walls,
+                                               Neighbourhood& shared)
+    : settings_(std::move(settings)),
+      fluid_(fluid),
+      walls_(std::move(walls)),
+      neighbourhood_(shared) {
+  if (shared.radius() != settings_.supportRadius) {
+    throw Error("flow: the shared neighbourhood's radius differs from the supportRadius");
+  }
+  checkInput();
+}
+
+void WeaklyCompressibleFlow::checkInput() {
   if (settings_.dimension != 2 && settings_.dimension != 3) {
     throw Error("flow: dimension must be 2 or 3, not " + std::to_string(settings_.dimension));
   }
@@ -57,27 +82,26 @@ WeaklyCompressibleFlow::WeaklyCompressibleFlow(FlowSettings settings, ParticleCl
     wall->scalarField("volume");
     wall->vectorField("normal");
     wall->scalarField("wallDistance");
-    wallGrids_.emplace_back(settings_.supportRadius, settings_.periodic);
-    wallGrids_.back().build(wall->positions());
   }
   if (settings_.dimension == 2) requirePlane();
-  wallNeighbours_.resize(walls_.size());
-  fluidAroundWall_.resize(walls_.size());
   for (const ParticleCloud* wall : walls_) wallPressure_.emplace_back(wall->size(), Real(0));
-  const bool restarted =
-      fluid_.hasVectorField("acceleration") && fluid_.hasScalarField("densityRate");
+  restarted_ = fluid_.hasVectorField("acceleration") && fluid_.hasScalarField("densityRate");
   fluid_.addScalarField("p");
   fluid_.addVectorField("acceleration");
   fluid_.addScalarField("densityRate");
-  // A restarted cloud keeps the order it was written in (the wall clearance may have moved a
-  // particle into another cell after the last reorder; reordering it now would change the
-  // order of the next step's sums): the restart stays bit for bit, and the log's pair count
-  // is right.
-  findNeighbours(restarted ? CloudOrder::keep : CloudOrder::byCell);
-  if (!restarted) {
-    updatePressure();
-    computeRates();
+  neighbourhood_.addCloud(fluid_, Neighbourhood::Motion::moving);
+  neighbourhood_.requestPairs(fluid_, fluid_);
+  for (const ParticleCloud* wall : walls_) {
+    neighbourhood_.addFixedCloud(*wall);
+    neighbourhood_.requestPairs(fluid_, *wall);
+    neighbourhood_.requestPairs(*wall, fluid_);
   }
+}
+
+void WeaklyCompressibleFlow::start() {
+  if (restarted_) return;
+  updatePressure();
+  computeRates();
 }
 
 // A 2D case keeps every particle, fluid and wall, at the z of the first fluid particle: the 2D
@@ -99,35 +123,22 @@ void WeaklyCompressibleFlow::requirePlane() const {
   for (const ParticleCloud* wall : walls_) check(*wall);
 }
 
-void WeaklyCompressibleFlow::findNeighbours(CloudOrder order) {
-  fluidGrid_.build(fluid_.positions());
-  // a cloud still in cell order (no particle changed cell) needs no reorder, which would copy
-  // every field
-  if (order == CloudOrder::byCell && !fluidGrid_.inCellOrder()) {
-    fluid_.reorder(fluidGrid_.sortPermutation());
-    fluidGrid_.adoptCellOrder();
-  }
-  fluidNeighbours_.buildWithin(fluid_.positions(), fluidGrid_);
-  for (std::size_t w = 0; w < walls_.size(); ++w) {
-    wallNeighbours_[w].buildBetween(fluid_.positions(), walls_[w]->positions(), wallGrids_[w]);
-    fluidAroundWall_[w].buildBetween(walls_[w]->positions(), fluid_.positions(), fluidGrid_);
-  }
-}
-
 std::vector<WallSurfaceView> WeaklyCompressibleFlow::wallSurfaces() const {
   std::vector<WallSurfaceView> surfaces;
   for (std::size_t w = 0; w < walls_.size(); ++w) {
     surfaces.push_back({walls_[w]->positions(), walls_[w]->vectorField("normal"),
-                        walls_[w]->scalarField("wallDistance"), &wallNeighbours_[w]});
+                        walls_[w]->scalarField("wallDistance"), &wallPairs(w)});
   }
   return surfaces;
 }
 
 void WeaklyCompressibleFlow::keepClearOfWalls() {
   const Real spacing = static_cast<Real>(fluid_.attributes().at("spacing"));
-  lastClearance_ =
-      enforceWallClearance(fluid_.positions(), fluid_.vectorField("U"), wallSurfaces(),
-                           settings_.periodic, spacing, settings_.wallClearance * spacing);
+  addWallTime(timings_.wallClearance, [&] {
+    lastClearance_ =
+        enforceWallClearance(fluid_.positions(), fluid_.vectorField("U"), wallSurfaces(),
+                             settings_.periodic, spacing, settings_.wallClearance * spacing);
+  });
   // The lists stay those of the positions before the move (by the clearance plus the depth it
   // had reached, under 0.75 dx unless the run then stops; most moves are far smaller): a pair
   // that came within h misses W's last (1 - r/h)^4 sliver, and one that left it adds W = 0. A
@@ -157,7 +168,7 @@ void WeaklyCompressibleFlow::extrapolateWallPressure() {
   auto extrapolateWith = [&](auto separation) {
     for (std::size_t w = 0; w < walls_.size(); ++w) {
       const auto& wallX = walls_[w]->positions();
-      const NeighbourList& fluidAround = fluidAroundWall_[w];
+      const NeighbourList& fluidAround = fluidAroundWall(w);
       Real* wallPressure = wallPressure_[w].data();
 #pragma omp parallel for schedule(static)
       for (std::size_t k = 0; k < wallX.size(); ++k) {
@@ -196,13 +207,16 @@ void WeaklyCompressibleFlow::computeCorrection() {
   densityGradient_.resize(densityGradient ? x.size() : 0);
   std::vector<const Real*> wallVolume;  // looked up once, not per particle
   for (const ParticleCloud* wall : walls_) wallVolume.push_back(wall->scalarField("volume").data());
+  const NeighbourList& fluidList = fluidPairs();
+  std::vector<const NeighbourList*> wallLists;
+  for (std::size_t w = 0; w < walls_.size(); ++w) wallLists.push_back(&wallPairs(w));
   // as in computeRatesFor: the minimum image only when an axis is periodic, chosen once
   auto correctWith = [&](auto separation) {
 #pragma omp parallel for schedule(static)
     for (std::size_t i = 0; i < x.size(); ++i) {
       CorrectionMoment moment;
       Vector gradientSum = Vector::Zero();
-      for (const std::uint32_t j : fluidNeighbours_.of(i)) {
+      for (const std::uint32_t j : fluidList.of(i)) {
         const Vector xij = separation(x[i], x[j]);
         const Real factor = kernel.derivativeOverDistance(xij.norm());
         const Real volumeJ = mass[j] / rho[j];
@@ -212,7 +226,7 @@ void WeaklyCompressibleFlow::computeCorrection() {
       for (std::size_t w = 0; w < walls_.size(); ++w) {
         const auto& wallX = walls_[w]->positions();
         const Real* volume = wallVolume[w];
-        for (const std::uint32_t k : wallNeighbours_[w].of(i)) {
+        for (const std::uint32_t k : wallLists[w]->of(i)) {
           const Vector xik = separation(x[i], wallX[k]);
           const Real factor = kernel.derivativeOverDistance(xik.norm());
           moment.add(volume[k], factor, xik);
@@ -265,7 +279,7 @@ void WeaklyCompressibleFlow::computeRatesFor() {
     walls.push_back({walls_[w]->positions().data(), walls_[w]->scalarField("volume").data(),
                      walls_[w]->vectorField("normal").data(),
                      walls_[w]->scalarField("wallDistance").data(), wallPressure_[w].data(),
-                     &wallNeighbours_[w]});
+                     &wallPairs(w)});
   }
   const Real halfSpacing = Real(0.5) * spacing;
   const Vector gravity = settings_.gravity;
@@ -281,8 +295,8 @@ void WeaklyCompressibleFlow::computeRatesFor() {
   const Real artificialViscosity =
       diffusive ? settings_.deltaSPHViscosity * smoothingLength * settings_.soundSpeed : Real(0);
   const Vector* densityGradient = densityGradient_.data();
-  const std::uint64_t* fluidOffsets = fluidNeighbours_.offsets().data();
-  const std::uint32_t* fluidNeighbours = fluidNeighbours_.neighbours().data();
+  const std::uint64_t* fluidOffsets = fluidPairs().offsets().data();
+  const std::uint32_t* fluidNeighbours = fluidPairs().neighbours().data();
 
   // The pair loop, given how it takes x_i - x_j: the minimum image only when an axis is
   // periodic, chosen once per pass (with no periodic axis separation() is x_i - x_j).
@@ -296,7 +310,7 @@ void WeaklyCompressibleFlow::computeRatesFor() {
   // in the periodic box (the grid checked it: imagesByCell), has no neighbour across a face:
   // for each of its neighbours |x_i - x_j| < h < period / 2, where separation() subtracts
   // nothing. Its pairs take the plain difference, chosen once per particle.
-  const bool inBox = periodic.anyPeriodic() && fluidGrid_.imagesByCell();
+  const bool inBox = periodic.anyPeriodic() && neighbourhood_.grid(fluid_).imagesByCell();
   Vector interiorLower = Vector::Constant(-std::numeric_limits<Real>::max());
   Vector interiorUpper = Vector::Constant(std::numeric_limits<Real>::max());
   for (int a = 0; a < 3; ++a) {
@@ -431,31 +445,59 @@ void WeaklyCompressibleFlow::computeRates(RatePart part) {
 }
 
 void WeaklyCompressibleFlow::step(double deltaT) {
-  const Real dt = static_cast<Real>(deltaT);
-  if (settings_.densityScheme == "deltaSPH") {
-    stepStormerVerlet(dt);
-    return;
+  if (!ownNeighbourhood_) {
+    throw Error("flow: step() is for a flow with its own neighbourhood; in a shared one the "
+                "solver calls the phases");
   }
+  kickAndDrift(deltaT);
+  addWallTime(timings_.neighbourSearch, [&] { neighbourhood_.update(); });
+  keepClearOfWalls();
+  computeRatesAndKick(deltaT);
+}
+
+// Kick and drift with the rates of the current state (kick-drift-kick); deltaSPH's
+// Stormer-Verlet kicks only the velocity here (computeRatesAndKickStormerVerlet says why).
+void WeaklyCompressibleFlow::kickAndDrift(double deltaT) {
+  const Real dt = static_cast<Real>(deltaT);
   const Real halfDt = Real(0.5) * dt;
+  const bool kickDensity = settings_.densityScheme != "deltaSPH";
   auto& x = fluid_.positions();
   auto& v = fluid_.vectorField("U");
   auto& rho = fluid_.scalarField("rho");
   const auto& densityRate = fluid_.scalarField("densityRate");
   const auto& acceleration = fluid_.vectorField("acceleration");
   const PeriodicBox periodic = settings_.periodic;
-  // Kick and drift with the rates of the current state ...
   addWallTime(timings_.integration, [&] {
+    if (kickDensity) {
 #pragma omp parallel for
-    for (std::size_t i = 0; i < x.size(); ++i) {
-      v[i] += halfDt * acceleration[i];
-      rho[i] += halfDt * densityRate[i];
-      x[i] = periodic.wrap(x[i] + dt * v[i]);
+      for (std::size_t i = 0; i < x.size(); ++i) {
+        v[i] += halfDt * acceleration[i];
+        rho[i] += halfDt * densityRate[i];
+        x[i] = periodic.wrap(x[i] + dt * v[i]);
+      }
+    } else {
+#pragma omp parallel for
+      for (std::size_t i = 0; i < x.size(); ++i) {
+        v[i] += halfDt * acceleration[i];
+        x[i] = periodic.wrap(x[i] + dt * v[i]);
+      }
     }
   });
-  // ... then the second kick with the rates at the new positions (the reorder inside
-  // findNeighbours permutes the same vectors, so the references above stay valid).
-  addWallTime(timings_.neighbourSearch, [&] { findNeighbours(); });
-  addWallTime(timings_.wallClearance, [&] { keepClearOfWalls(); });
+}
+
+// The second kick with the rates at the new positions (the neighbourhood's reorder permutes
+// the fields in place, so references taken before it stay valid).
+void WeaklyCompressibleFlow::computeRatesAndKick(double deltaT) {
+  const Real dt = static_cast<Real>(deltaT);
+  if (settings_.densityScheme == "deltaSPH") {
+    computeRatesAndKickStormerVerlet(dt);
+    return;
+  }
+  const Real halfDt = Real(0.5) * dt;
+  auto& v = fluid_.vectorField("U");
+  auto& rho = fluid_.scalarField("rho");
+  const auto& densityRate = fluid_.scalarField("densityRate");
+  const auto& acceleration = fluid_.vectorField("acceleration");
   addWallTime(timings_.rates, [&] {
     updatePressure();
     computeRates();
@@ -484,23 +526,12 @@ void WeaklyCompressibleFlow::step(double deltaT) {
 // t sqrt(g/H) = 1.6; at maxCo 0.1 it survives, at 0.05 it stays at rest; the 2D dam break loses
 // particles at a/dx = 10 and 20). This step is neutral for w dt < 2 and costs a second pass over
 // the pairs (the 2D dam break at a/dx = 20: 4.2 s against riemann's 2.8 s).
-void WeaklyCompressibleFlow::stepStormerVerlet(Real dt) {
+void WeaklyCompressibleFlow::computeRatesAndKickStormerVerlet(Real dt) {
   const Real halfDt = Real(0.5) * dt;
-  auto& x = fluid_.positions();
   auto& v = fluid_.vectorField("U");
   auto& rho = fluid_.scalarField("rho");
   const auto& densityRate = fluid_.scalarField("densityRate");
   const auto& acceleration = fluid_.vectorField("acceleration");
-  const PeriodicBox periodic = settings_.periodic;
-  addWallTime(timings_.integration, [&] {
-#pragma omp parallel for
-    for (std::size_t i = 0; i < x.size(); ++i) {
-      v[i] += halfDt * acceleration[i];
-      x[i] = periodic.wrap(x[i] + dt * v[i]);
-    }
-  });
-  addWallTime(timings_.neighbourSearch, [&] { findNeighbours(); });
-  addWallTime(timings_.wallClearance, [&] { keepClearOfWalls(); });
   addWallTime(timings_.rates, [&] { computeRates(RatePart::densityRate); });  // p is still of rho^n
   addWallTime(timings_.integration, [&] {
 #pragma omp parallel for

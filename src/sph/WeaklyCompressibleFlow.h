@@ -1,10 +1,10 @@
 #pragma once
 
+#include <memory>
 #include <string>
 #include <vector>
 
-#include "particles/CellGrid.h"
-#include "particles/NeighbourList.h"
+#include "particles/Neighbourhood.h"
 #include "particles/ParticleCloud.h"
 #include "sph/KernelCorrection.h"
 #include "sph/WallClearance.h"
@@ -35,7 +35,7 @@ struct FlowSettings {
 
 // Wall time spent in each part of the flow's steps, seconds since construction.
 struct FlowTimings {
-  double neighbourSearch = 0;  // grids, reorder, pair lists
+  double neighbourSearch = 0;  // grids, reorder, pair lists (a flow with its own neighbourhood)
   double wallClearance = 0;    // keepClearOfWalls
   double rates = 0;            // wall pressure, correction, the pair loops
   double integration = 0;      // kicks and drifts
@@ -57,24 +57,48 @@ struct FlowStepLimits {
 // artificial viscosity of Antuono et al. 2010: deltaSPH), optionally with the normalised kernel
 // gradient (KernelCorrection.h), the viscous term with dynamic viscosity, and gravity;
 // integrated kick-drift-kick (deltaSPH: Stormer-Verlet with the density updated like the
-// positions, stepStormerVerlet says why). The cloud is reordered along the cell grid every step.
+// positions, stepStormerVerlet says why).
 //
 // Fluid fields read: U, rho, mass, viscosity (mu, Pa s), restDensity (rho_s); written: p,
 // acceleration, densityRate (kept in the cloud, so a restart continues bit for bit). Cloud
 // attribute spacing (dx) for the step limits. Wall fields read (as particleizeMold writes them):
 // volume, normal (unit, out of the wall into the fluid), wallDistance (depth behind the wall
 // surface); walls are at rest (moving walls arrive with the rigid bodies).
+//
+// The pairs come from a Neighbourhood: the solver's, shared with the other models of the step
+// (the solver then calls the phases of a step in order, with its own search between them), or
+// one the flow owns (tests and benchmarks: step() is then a whole step):
+//   kickAndDrift(dt)  -> neighbourhood.update() -> keepClearOfWalls() -> computeRatesAndKick(dt)
 class WeaklyCompressibleFlow {
  public:
+  // With a neighbourhood of its own (the fluid is reordered along its grid every step).
   WeaklyCompressibleFlow(FlowSettings settings, ParticleCloud& fluid,
                          std::vector<const ParticleCloud*> walls);
+  // In a shared neighbourhood: registers the fluid (moving) and the walls (fixed) and asks for
+  // the fluid-fluid, fluid-wall and wall-fluid pairs. The owner updates the neighbourhood
+  // (CloudOrder::keep when restarted()), then calls start().
+  WeaklyCompressibleFlow(FlowSettings settings, ParticleCloud& fluid,
+                         std::vector<const ParticleCloud*> walls, Neighbourhood& shared);
+
+  // The fluid came with the rates of its last step (a restart): start() keeps them.
+  bool restarted() const { return restarted_; }
+  // The pressure and rates of the start state (after the first neighbourhood update).
+  void start();
 
   FlowStepLimits stepLimits(double maxCo) const;
 
-  // One kick-drift-kick step of deltaT.
+  // One whole kick-drift-kick step of deltaT (a flow with its own neighbourhood).
   void step(double deltaT);
 
-  std::size_t fluidPairCount() const { return fluidNeighbours_.pairCount(); }
+  // The phases of a step, for a solver that searches once for several models:
+  // the first kick and the drift (deltaSPH: the velocity's half kick and the drift) ...
+  void kickAndDrift(double deltaT);
+  // ... after the search, fluid particles too close to a wall moved back (WallClearance.h) ...
+  void keepClearOfWalls();
+  // ... the rates at the new positions and the second kick.
+  void computeRatesAndKick(double deltaT);
+
+  std::size_t fluidPairCount() const { return fluidPairs().pairCount(); }
 
   // What the wall clearance did in the last step (for the run's health checks).
   const WallClearanceReport& lastWallClearance() const { return lastClearance_; }
@@ -86,12 +110,16 @@ class WeaklyCompressibleFlow {
   // Stormer-Verlet step (stepStormerVerlet), the density rate and the acceleration in separate
   // passes.
   enum class RatePart { both, densityRate, acceleration };
+  void checkInput();
   void requirePlane() const;
-  void stepStormerVerlet(Real dt);
-  enum class CloudOrder { byCell, keep };
-  void findNeighbours(CloudOrder order = CloudOrder::byCell);
-  // Moves fluid particles closer than the clearance back from the walls (WallClearance.h).
-  void keepClearOfWalls();
+  void computeRatesAndKickStormerVerlet(Real dt);
+  const NeighbourList& fluidPairs() const { return neighbourhood_.pairs(fluid_, fluid_); }
+  const NeighbourList& wallPairs(std::size_t w) const {  // fluid particles' wall neighbours
+    return neighbourhood_.pairs(fluid_, *walls_[w]);
+  }
+  const NeighbourList& fluidAroundWall(std::size_t w) const {  // wall particles' fluid ones
+    return neighbourhood_.pairs(*walls_[w], fluid_);
+  }
   std::vector<WallSurfaceView> wallSurfaces() const;
   void updatePressure();
   template <int Dim>
@@ -113,11 +141,9 @@ class WeaklyCompressibleFlow {
   FlowSettings settings_;
   ParticleCloud& fluid_;
   std::vector<const ParticleCloud*> walls_;
-  CellGrid fluidGrid_;
-  std::vector<CellGrid> wallGrids_;
-  NeighbourList fluidNeighbours_;
-  std::vector<NeighbourList> wallNeighbours_;    // fluid particles' wall neighbours
-  std::vector<NeighbourList> fluidAroundWall_;   // wall particles' fluid neighbours
+  std::unique_ptr<Neighbourhood> ownNeighbourhood_;  // null in a shared one
+  Neighbourhood& neighbourhood_;
+  bool restarted_ = false;
   std::vector<std::vector<Real>> wallPressure_;  // per wall cloud, per particle
   std::vector<Matrix> correction_;               // L_i, with kernelCorrection or deltaSPH
   std::vector<Vector> densityGradient_;          // renormalised grad rho (deltaSPH)

@@ -11,7 +11,7 @@ namespace sphcast {
 namespace {
 
 const Dimensions energyDimensions{{0, 2, -2, 0, 0, 0, 0}};
-const Dimensions specificHeatDimensions{{0, 2, -2, 0, -1, 0, 0}};
+const Dimensions specificHeatDimensions{{0, 2, -2, -1, 0, 0, 0}};
 
 PropertyEntry readEntry(const std::string& text, const std::string& key,
                         const Dimensions& dimensions) {

@@ -1,0 +1,33 @@
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "post/FunctionObject.h"
+
+namespace sphcast {
+
+// type energyBalance: the heat budget of the heat clouds over time (thermal/EnergyEquation.h
+// keeps the accounts), one file `energyBalance`:
+//
+//   time  E_<cloud>...  lost_atmosphere  lost_radiation  lost_fixedTemperature  imbalance
+//         relativeImbalance
+//
+// E_c = sum m_i u_i of cloud c (J); lost_<path> the heat that left all clouds through the path
+// since the run's first start (J); imbalance = sum_c (E_c - E_c(start)) + sum of lost (J),
+// round-off when the paths conserve energy; relativeImbalance = imbalance / the heat the clouds
+// have exchanged so far (sum_c |E_c - E_c(start)| + sum of lost), 0 before any.
+// Keys: clouds (metal mold ...), clouds that carry heat (their u, mass and accounts).
+class EnergyBalance : public FunctionObject {
+ public:
+  EnergyBalance(const std::string& name, const Dictionary& dict,
+                const FunctionObjectContext& context);
+
+ private:
+  void sample(double time) override;
+
+  std::vector<const ParticleCloud*> clouds_;
+  std::string header_;
+};
+
+}  // namespace sphcast

@@ -1,0 +1,51 @@
+#pragma once
+
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/CaseFolder.h"
+#include "core/Real.h"
+#include "core/dictionary/Dictionary.h"
+#include "materials/MaterialLibrary.h"
+
+namespace sphcast {
+
+// What constant/physicsModels asks of the heat transfer (thermal/HeatTransferRegistration.h
+// lists the paths), and the clouds' materials:
+//
+//   materials    { metal AC4CH; mold iron; }   // optional: cloud -> material of
+//                                              // constant/physicalProperties (default: a cloud's
+//                                              // material is the one named like the cloud)
+//   heatTransfer
+//   {
+//       clouds           (metal mold);        // the clouds that carry heat: of the start time,
+//                                             // or mold clouds of constant/particles (then
+//                                             // written to every time folder from now on)
+//       fixedTemperature { mold 300; }        // optional: clouds held at T (K)
+//       conduction on;  moldContact {...}  atmosphere {...}  radiation {...}
+//   }
+//
+// system/sphSchemes gives supportRadius (h) to a case with heat and no flow.
+struct HeatSetup {
+  bool enabled = false;
+  Dictionary heatTransfer;  // the sub-dictionary, for the paths to read
+  std::vector<std::string> clouds;
+  SourceLocation cloudsAt;
+  std::map<std::string, double> fixedTemperature;  // cloud -> K
+  std::map<std::string, std::string> materialOfCloud;
+  std::map<std::string, SourceLocation> materialNamedAt;  // where each cloud's material is named
+  int dimension = 3;
+  Real supportRadius = 0;
+  std::optional<MaterialLibrary> materials;
+
+  // The material of a heat cloud (error at the place it is named, listing the materials).
+  const Material& materialOf(const std::string& cloud) const;
+};
+
+// Reads and checks physicsModels (and physicalProperties, sphSchemes when heat is on);
+// errors name file, line and key.
+HeatSetup readHeatSetup(const CaseFolder& caseFolder);
+
+}  // namespace sphcast

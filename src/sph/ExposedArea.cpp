@@ -1,0 +1,119 @@
+#include "sph/ExposedArea.h"
+
+#include <cmath>
+#include <string>
+
+#include "core/Error.h"
+#include "particles/WendlandKernel.h"
+
+namespace sphcast {
+
+std::vector<Real> particleVolumes(const ParticleCloud& cloud) {
+  std::vector<Real> volume(cloud.size());
+  if (cloud.hasScalarField("mass") && cloud.hasScalarField("rho")) {
+    const auto& mass = cloud.scalarField("mass");
+    const auto& rho = cloud.scalarField("rho");
+    for (std::size_t i = 0; i < volume.size(); ++i) volume[i] = mass[i] / rho[i];
+  } else {
+    volume = cloud.scalarField("volume");  // throws, listing the fields the cloud has
+  }
+  return volume;
+}
+
+namespace {
+
+template <int Dim>
+Real calibratedFactorIn(Real supportRadius, Real spacing) {
+  const WendlandC2Kernel<Dim> kernel(supportRadius);
+  const Real cell = std::pow(spacing, Dim);  // V = dx^d
+  const int reach = static_cast<int>(std::ceil(supportRadius / spacing)) + 1;
+  const Real q = Real(1) - cell * kernel.value(0);
+  // Layers k = 0, 1, ... below the free surface z = 0: s_k sums over the half lattice z <= 0.
+  Real columnSum = 0;
+  for (int layer = 0; layer <= reach; ++layer) {
+    Real s = 0;
+    for (int dz = -reach; dz <= reach; ++dz) {
+      if (layer + dz < 0) continue;  // above the surface: no particle
+      const int dyRange = Dim == 3 ? reach : 0;
+      for (int dy = -dyRange; dy <= dyRange; ++dy) {
+        for (int dx = -reach; dx <= reach; ++dx) {
+          const Real r = spacing * std::sqrt(Real(dx * dx + dy * dy + dz * dz));
+          s += cell * kernel.value(r);
+        }
+      }
+    }
+    columnSum += exposureWeight(Real(1) - s, q);
+  }
+  if (!(columnSum > 0)) {
+    throw Error("exposed area: a flat surface has no exposed particle at supportRadius/spacing " +
+                std::to_string(supportRadius / spacing) + " (the kernel is too narrow)");
+  }
+  // sum_k R_A g_k dx^(d-1) = dx^(d-1)
+  return Real(1) / columnSum;
+}
+
+}  // namespace
+
+Real ExposedArea::calibratedAreaFactor(int dimension, Real supportRadius, Real spacing) {
+  return dimension == 2 ? calibratedFactorIn<2>(supportRadius, spacing)
+                        : calibratedFactorIn<3>(supportRadius, spacing);
+}
+
+ExposedArea::ExposedArea(int dimension, Real supportRadius, Real spacing,
+                         std::vector<ParticleCloud*> exposed,
+                         std::vector<const ParticleCloud*> covering, Neighbourhood& neighbourhood)
+    : dimension_(dimension),
+      supportRadius_(supportRadius),
+      areaFactor_(calibratedAreaFactor(dimension, supportRadius, spacing)),
+      exposed_(std::move(exposed)),
+      covering_(std::move(covering)),
+      neighbourhood_(neighbourhood) {
+  for (ParticleCloud* cloud : exposed_) {
+    cloud->addScalarField("exposedArea");
+    cloud->addScalarField("granularity");
+    for (const ParticleCloud* other : covering_) neighbourhood.requestPairs(*cloud, *other);
+  }
+}
+
+void ExposedArea::compute() {
+  if (dimension_ == 2) {
+    computeIn<2>();
+  } else {
+    computeIn<3>();
+  }
+}
+
+template <int Dim>
+void ExposedArea::computeIn() {
+  const WendlandC2Kernel<Dim> kernel(supportRadius_);
+  const PeriodicBox periodic = neighbourhood_.periodicBox();
+  const Real selfKernel = kernel.value(0);
+  const Real areaFactor = areaFactor_;
+  constexpr Real areaExponent = Real(Dim - 1) / Real(Dim);
+  std::vector<std::vector<Real>> coveringVolume;
+  for (const ParticleCloud* other : covering_) coveringVolume.push_back(particleVolumes(*other));
+  for (ParticleCloud* cloud : exposed_) {
+    const std::vector<Real> volume = particleVolumes(*cloud);
+    const auto& x = cloud->positions();
+    auto& granularity = cloud->scalarField("granularity");
+    auto& area = cloud->scalarField("exposedArea");
+    std::vector<const NeighbourList*> lists;
+    for (const ParticleCloud* other : covering_) lists.push_back(&neighbourhood_.pairs(*cloud, *other));
+#pragma omp parallel for schedule(static)
+    for (std::size_t i = 0; i < x.size(); ++i) {
+      Real s = volume[i] * selfKernel;
+      for (std::size_t c = 0; c < covering_.size(); ++c) {
+        const auto& otherX = covering_[c]->positions();
+        const Real* otherVolume = coveringVolume[c].data();
+        for (const std::uint32_t j : lists[c]->of(i)) {
+          s += otherVolume[j] * kernel.value(periodic.separation(x[i], otherX[j]).norm());
+        }
+      }
+      granularity[i] = s;
+      const Real q = Real(1) - volume[i] * selfKernel;
+      area[i] = areaFactor * exposureWeight(Real(1) - s, q) * std::pow(volume[i], areaExponent);
+    }
+  }
+}
+
+}  // namespace sphcast

@@ -1,0 +1,188 @@
+#include "thermal/EnergyEquation.h"
+
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+#include "core/Error.h"
+#include "thermal/HeatTransferRegistration.h"
+
+namespace sphcast {
+
+namespace {
+
+const char* const lossPaths[] = {"atmosphere", "radiation", "fixedTemperature"};
+
+std::string lostKey(const std::string& path) { return "heatLost." + path; }
+std::string rateKey(const std::string& path) { return "heatLossRate." + path; }
+
+}  // namespace
+
+EnergyEquation::EnergyEquation(HeatTransferContext context, const Dictionary& heatTransfer)
+    : context_(std::move(context)) {
+  if (context_.clouds.empty()) throw Error("heatTransfer: no heat cloud");
+  restarted_ = true;
+  for (HeatCloud& heat : context_.clouds) {
+    const ParticleCloud& cloud = *heat.cloud;
+    restarted_ = restarted_ && cloud.hasScalarField("u") && cloud.hasScalarField("energyRate");
+  }
+  for (HeatCloud& heat : context_.clouds) prepareFields(heat);
+  paths_ = buildHeatTransferPaths(context_, heatTransfer, needsExposedArea_);
+  if (paths_.empty()) {
+    throw DictionaryError(heatTransfer.location(),
+                          "heatTransfer in " + heatTransfer.name() +
+                              " switches no heat path on (conduction, moldContact, atmosphere, "
+                              "radiation)");
+  }
+}
+
+EnergyEquation::~EnergyEquation() = default;
+
+void EnergyEquation::prepareFields(HeatCloud& heat) {
+  ParticleCloud& cloud = *heat.cloud;
+  const Material& material = *heat.material;
+  const InternalEnergyTable& energy = material.requireInternalEnergy("heatTransfer");
+  if (heat.fixedTemperature) {
+    auto& T = cloud.addScalarField("T");
+    for (Real& value : T) value = static_cast<Real>(heat.heldTemperature);
+  } else if (!cloud.hasScalarField("T")) {
+    throw Error("heat cloud '" + cloud.name() +
+                "' has no temperature field T: set it with setCastFields (fields { T ...; }, or "
+                "setFields for a mold cloud), or hold the cloud with heatTransfer "
+                "fixedTemperature");
+  }
+  const auto& T = cloud.scalarField("T");
+  for (std::size_t i = 0; i < T.size(); ++i) {
+    if (!(T[i] > 0) || !std::isfinite(T[i])) {
+      throw Error("particle " + std::to_string(i) + " of heat cloud '" + cloud.name() +
+                  "' has T = " + std::to_string(T[i]) + " K; temperatures are in kelvin, > 0");
+    }
+  }
+  if (!cloud.hasScalarField("rho")) {
+    const TemperatureTable& density = material.requireDensity("heatTransfer");
+    const std::vector<Real> temperature = cloud.scalarField("T");  // adding fields may move it
+    auto& rho = cloud.addScalarField("rho");
+    for (std::size_t i = 0; i < rho.size(); ++i) {
+      rho[i] = static_cast<Real>(density(static_cast<double>(temperature[i])));
+    }
+  }
+  if (!cloud.hasScalarField("mass")) {
+    const std::vector<Real> volume = cloud.scalarField("volume");  // throws, listing fields
+    const std::vector<Real> rho = cloud.scalarField("rho");
+    auto& mass = cloud.addScalarField("mass");
+    for (std::size_t i = 0; i < mass.size(); ++i) mass[i] = rho[i] * volume[i];
+  }
+  if (!restarted_) {
+    const std::vector<Real> temperature = cloud.scalarField("T");
+    auto& u = cloud.addScalarField("u");
+    for (std::size_t i = 0; i < u.size(); ++i) u[i] = energy.energy(temperature[i]);
+    cloud.addScalarField("energyRate");
+    for (const char* path : lossPaths) {
+      cloud.attributes()[lostKey(path)] = 0;
+      cloud.attributes()[rateKey(path)] = 0;
+    }
+    const auto& mass = cloud.scalarField("mass");
+    double total = 0;
+    for (std::size_t i = 0; i < u.size(); ++i) total += double(mass[i]) * double(u[i]);
+    cloud.attributes()["internalEnergyAtStart"] = total;
+  }
+  cloud.addScalarField("conductivity");
+}
+
+void EnergyEquation::start() {
+  updateTemperatures();
+  if (!restarted_) computeRates();
+}
+
+void EnergyEquation::halfKick(double deltaT) {
+  kickEnergy(deltaT);
+  updateTemperatures();
+}
+
+void EnergyEquation::kickEnergy(double deltaT) {
+  const Real halfDt = static_cast<Real>(0.5 * deltaT);
+  for (HeatCloud& heat : context_.clouds) {
+    if (heat.fixedTemperature) continue;
+    auto& u = heat.cloud->scalarField("u");
+    const auto& rate = heat.cloud->scalarField("energyRate");
+#pragma omp parallel for schedule(static)
+    for (std::size_t i = 0; i < u.size(); ++i) u[i] += halfDt * rate[i];
+  }
+  accountLosses(0.5 * deltaT);
+}
+
+void EnergyEquation::accountLosses(double duration) {
+  for (HeatCloud& heat : context_.clouds) {
+    auto& attributes = heat.cloud->attributes();
+    for (const char* path : lossPaths) attributes[lostKey(path)] += duration * attributes[rateKey(path)];
+  }
+}
+
+void EnergyEquation::computeRates() {
+  for (HeatCloud& heat : context_.clouds) {
+    auto& rate = heat.cloud->scalarField("energyRate");
+#pragma omp parallel for schedule(static)
+    for (std::size_t i = 0; i < rate.size(); ++i) rate[i] = 0;
+  }
+  for (auto& path : paths_) path->addEnergyRates();
+  for (HeatCloud& heat : context_.clouds) {
+    for (const char* name : lossPaths) heat.cloud->attributes()[rateKey(name)] = 0;
+  }
+  for (auto& path : paths_) {
+    const std::vector<double> power = path->powerLeaving();
+    for (std::size_t c = 0; c < power.size(); ++c) {
+      context_.clouds[c].cloud->attributes()[rateKey(path->name())] = power[c];
+    }
+  }
+  // The heat the held particles take in left the system through them (summed in particle
+  // order: the same bits on any thread count).
+  for (HeatCloud& heat : context_.clouds) {
+    if (!heat.fixedTemperature) continue;
+    const auto& mass = heat.cloud->scalarField("mass");
+    const auto& rate = heat.cloud->scalarField("energyRate");
+    double absorbed = 0;
+    for (std::size_t i = 0; i < rate.size(); ++i) absorbed += double(mass[i]) * double(rate[i]);
+    heat.cloud->attributes()[rateKey("fixedTemperature")] = absorbed;
+  }
+}
+
+void EnergyEquation::updateTemperatures() {
+  for (HeatCloud& heat : context_.clouds) {
+    ParticleCloud& cloud = *heat.cloud;
+    const Material& material = *heat.material;
+    auto& T = cloud.scalarField("T");
+    auto& kappa = cloud.scalarField("conductivity");
+    const auto& u = cloud.scalarField("u");
+    const InternalEnergyTable& energy = *material.internalEnergy;
+    const TemperatureTable* conductivity =
+        material.conductivity ? &*material.conductivity : nullptr;
+    const bool held = heat.fixedTemperature;
+#pragma omp parallel for schedule(static)
+    for (std::size_t i = 0; i < T.size(); ++i) {
+      if (!held) T[i] = energy.temperature(u[i]);
+      kappa[i] = conductivity ? static_cast<Real>((*conductivity)(static_cast<double>(T[i])))
+                              : Real(0);
+    }
+  }
+}
+
+double EnergyEquation::stableDeltaT(std::string& limiter) const {
+  double shortest = std::numeric_limits<double>::infinity();
+  limiter = "heat";
+  for (const auto& path : paths_) {
+    const double limit = path->stableDeltaT();
+    if (limit < shortest) {
+      shortest = limit;
+      limiter = std::string("heat ") + path->name();
+    }
+  }
+  return shortest;
+}
+
+std::vector<std::string> EnergyEquation::descriptions() const {
+  std::vector<std::string> lines;
+  for (const auto& path : paths_) lines.push_back(path->description());
+  return lines;
+}
+
+}  // namespace sphcast

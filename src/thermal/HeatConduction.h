@@ -1,0 +1,53 @@
+#pragma once
+
+#include <set>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "thermal/HeatTransferModel.h"
+
+namespace sphcast {
+
+// Heat conduction within and between the heat clouds, eq. (13) of the paper in the form of
+// Cleary & Monaghan (1999, J. Comput. Phys. 148:227):
+//
+//   du_i/dt = 1/rho_i sum_j V_j 4 kappa_i kappa_j / (kappa_i + kappa_j) (T_i - T_j) F_ij,
+//   F_ij = (x_ij . grad_i W_ij) / (|x_ij|^2 + eta^2),   eta^2 = 0.01 dx^2,
+//
+// V_j = m_j / rho_j. The printed (13) lacks the factor x_ij / (|x_ij|^2 + eta^2) that turns
+// the kernel gradient into a second derivative; without it the sum is not a Laplacian (doc/
+// physics.md §5.1). The harmonic mean of the conductivities keeps the flux continuous across a
+// jump of kappa (metal against mold). The pair term is antisymmetric: heat moves between
+// particles, sum_i m_i du_i/dt = 0 to round-off.
+//
+// Between two clouds whose materials have a contact coefficient (moldContact), this model
+// leaves the exchange to MoldContactTransfer: the coefficient is the interface's conductance.
+//
+// Step limit: the diffusion number, dt <= 0.1 dx^2 / alpha_max, alpha = kappa / (rho c) with
+// c = du/dT, the largest over each material's tables.
+class HeatConduction : public HeatTransferModel {
+ public:
+  // contactPairs: material pairs (both orders) whose exchange is MoldContactTransfer's.
+  HeatConduction(const HeatTransferContext& context,
+                 std::set<std::pair<std::string, std::string>> contactPairs);
+
+  const char* name() const override { return "conduction"; }
+  std::string description() const override;
+  void addEnergyRates() override;
+  double stableDeltaT() const override { return stableDeltaT_; }
+
+  // The largest kappa / (rho du/dT) of a material over its tables (m^2/s).
+  static double largestDiffusivity(const Material& material);
+
+ private:
+  template <int Dim>
+  void addRatesIn();
+  bool conducts(std::size_t a, std::size_t b) const;
+
+  const HeatTransferContext& context_;
+  std::set<std::pair<std::string, std::string>> contactPairs_;
+  double stableDeltaT_;
+};
+
+}  // namespace sphcast

@@ -1,0 +1,59 @@
+#pragma once
+
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "materials/Material.h"
+#include "particles/Neighbourhood.h"
+#include "particles/ParticleCloud.h"
+
+namespace sphcast {
+
+// A cloud that carries heat: its material and, for a Dirichlet boundary (a mold surface held
+// at 300 K), the temperature it is held at. Fields (EnergyEquation.h): T (K), u (specific
+// internal energy, J/kg), energyRate (du/dt, W/kg), conductivity (kappa(T), W/m/K), rho and
+// mass (a mold's from its material's density and its particles' volume).
+struct HeatCloud {
+  ParticleCloud* cloud;
+  const Material* material;
+  bool fixedTemperature = false;  // T held; the heat it takes in is counted as leaving
+  double heldTemperature = 0;     // K, when fixedTemperature
+};
+
+// What every heat path sees: the heat clouds, the shared neighbourhood, the kernel.
+struct HeatTransferContext {
+  int dimension = 3;
+  Real supportRadius = 0;  // h
+  Real spacing = 0;        // dx, of the regularisation eta^2 = 0.01 dx^2 and the step limits
+  std::vector<HeatCloud> clouds;
+  Neighbourhood* neighbourhood = nullptr;
+};
+
+// One heat path of eq. (17), rho du/dt = Q_hc + Q_ht + Q_ha + Q_hr (doc/physics.md §5): a
+// model reads its own sub-dictionary of heatTransfer in constant/physicsModels, asks the
+// neighbourhood for the pairs it needs when it is built, and in each step adds its du/dt to
+// the clouds' energyRate (never overwrites: EnergyEquation zeroes it) and names its step limit.
+class HeatTransferModel {
+ public:
+  virtual ~HeatTransferModel() = default;
+
+  // conduction, moldContact, atmosphere, radiation: the key in constant/physicsModels
+  virtual const char* name() const = 0;
+  // One line for the log: the equation and the coefficients it runs with.
+  virtual std::string description() const = 0;
+
+  // Adds this path's du/dt to every heat cloud's energyRate.
+  virtual void addEnergyRates() = 0;
+
+  // Heat per second leaving each heat cloud through this path (W, by cloud in the context's
+  // order), over the particles not held at a fixed temperature, for the state of the last
+  // addEnergyRates(); empty for a path between particles, which moves heat inside the system.
+  virtual std::vector<double> powerLeaving() const { return {}; }
+
+  // The longest step this path stays stable and accurate with (s), for the state of the last
+  // addEnergyRates().
+  virtual double stableDeltaT() const { return std::numeric_limits<double>::infinity(); }
+};
+
+}  // namespace sphcast

@@ -1,0 +1,33 @@
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/dictionary/Dictionary.h"
+#include "thermal/HeatTransferModel.h"
+
+namespace sphcast {
+
+// The heat paths by their names in constant/physicsModels, each its own switch:
+//
+//   heatTransfer
+//   {
+//       clouds           (metal mold);      // the clouds that carry heat (solver reads it)
+//       fixedTemperature { mold 300; }      // optional: clouds held at T, K (solver reads it)
+//       conduction       on;                                   // eq. (13)   HeatConduction.h
+//       moldContact      { coefficients ((AC4CH iron 150)); }  // eq. (14)   MoldContactTransfer.h
+//       atmosphere       { T 300; coefficients ((iron 80)); }  // eq. (15)   AtmosphereTransfer.h
+//       radiation        { T 300; materials (iron); }          // eq. (16)   RadiationTransfer.h
+//   }
+//
+// A path is built when its entry is a sub-dictionary or `on`; `off` or absent: never built,
+// costs nothing. Any other key is an error listing the valid ones.
+std::vector<std::string> heatTransferKeys();
+
+// Builds the paths heatTransfer switches on, in the order of eq. (17). Sets needsExposedArea
+// when a path reads A_i.
+std::vector<std::unique_ptr<HeatTransferModel>> buildHeatTransferPaths(
+    const HeatTransferContext& context, const Dictionary& heatTransfer, bool& needsExposedArea);
+
+}  // namespace sphcast

@@ -1,0 +1,173 @@
+// The exposed area A_i (11) and the heat lost through it to the air (15) and by radiation
+// (16), against geometry and the lumped ODEs (doc/validation.md §3): a body whose Biot number
+// is far below 0.1 cools as a whole, rho c V dT/dt = -omega A (T - T_a) or
+// -beta sigma A (T^4 - T_a^4), so its mean temperature checks the sum of A_i.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "ThermalTestCases.h"
+
+namespace sphcast::testing {
+namespace {
+
+const char* const copper =  // a conductor: Bi = omega L / kappa ~ 1e-4 for a 10 mm cube
+    "copper { density 8900; conductivity 400; specificHeat 385; emissivity 0.8; }";
+
+// A cube of n^3 particles of side L = 10 mm (dx = L / n), h = 3 dx.
+ThermalRun cube(int n, double T) {
+  const Real dx = Real(0.01) / n;
+  ThermalRun run(3, 3 * dx, dx, materials(copper));
+  run.add(latticeBlock("copper", Vector(0, 0, 0), n, n, n, dx, 3, Real(T)), "copper");
+  return run;
+}
+
+// A ball of radius R = 5 mm cut from the lattice, dx = 2 R / n.
+ThermalRun ball(int n, double T) {
+  const Real R = Real(0.005), dx = 2 * R / n;
+  ThermalRun run(3, 3 * dx, dx, materials(copper));
+  ParticleCloud cloud = latticeBlock("copper", Vector::Constant(-R), n, n, n, dx, 3, Real(T));
+  keepWhere(cloud, [R](const Vector& x) { return x.norm() < R; });
+  run.add(std::move(cloud), "copper");
+  return run;
+}
+
+double totalArea(const ThermalRun& run) {
+  double sum = 0;
+  for (const Real area : run.clouds.front().scalarField("exposedArea")) sum += area;
+  return sum;
+}
+
+double meanTemperature(const ParticleCloud& cloud) {
+  double sum = 0;
+  for (const Real T : cloud.scalarField("T")) sum += T;
+  return sum / double(cloud.size());
+}
+
+TEST(SurfaceHeatLossTest, ExposedAreaOfACubeAndABallConvergesToTheirArea) {
+  // R_A is calibrated on a flat face; edges, corners and curvature are what these measure
+  const double cubeArea = 6 * 0.01 * 0.01;
+  const double ballArea = 4 * std::numbers::pi * 0.005 * 0.005;
+  double previousCube = 1, previousBall = 1;
+  for (const int n : {10, 20, 40}) {
+    ThermalRun c = cube(n, 400);
+    c.start("clouds (copper); atmosphere { T 300; coefficients ((copper 10)); }");
+    const double cubeError = std::abs(totalArea(c) / cubeArea - 1);
+    // the ball's own volume differs from 4/3 pi R^3 on the lattice: compare with the area of
+    // the sphere of the same volume
+    ThermalRun b = ball(n, 400);
+    b.start("clouds (copper); atmosphere { T 300; coefficients ((copper 10)); }");
+    const double volume = double(b.clouds.front().size()) * std::pow(0.01 / n, 3);
+    const double equivalentArea =
+        4 * std::numbers::pi * std::pow(3 * volume / (4 * std::numbers::pi), 2.0 / 3.0);
+    const double ballError = std::abs(totalArea(b) / equivalentArea - 1);
+    RecordProperty("cube_" + std::to_string(n), std::to_string(cubeError));
+    RecordProperty("ball_" + std::to_string(n), std::to_string(ballError));
+    (void)ballArea;
+    // the sum over a flat face is exact by construction; the 12 edges and 8 corners add an
+    // error of the order of dx / L, and the ball's faceted lattice surface likewise
+    EXPECT_LT(cubeError, 3.0 / n) << "cube, " << n << " particles across";
+    EXPECT_LT(ballError, 3.0 / n) << "ball, " << n << " particles across";
+    EXPECT_LE(cubeError, previousCube);
+    EXPECT_LE(ballError, previousBall);
+    previousCube = cubeError;
+    previousBall = ballError;
+  }
+}
+
+// A plate periodic in x and y (8 x 8 particles), `layers` thick in z: two flat faces of area
+// 2 (8 dx)^2 per period, no edges. A made-up conductor (kappa 50 W/m/K) keeps the Biot number
+// small with few steps (the diffusion limit is 0.1 dx^2 rho c / kappa).
+constexpr int period = 8;
+const char* const conductor =
+    "conductor { density 8900; conductivity 50; specificHeat 385; emissivity 0.8; }"
+    "other { density 8900; conductivity 50; specificHeat 385; }";
+
+ThermalRun periodicPlates(Real dx) {
+  ThermalRun run(3, 3 * dx, dx, materials(conductor));
+  run.periodic.setPeriodic(0, 0, period * dx);
+  run.periodic.setPeriodic(1, 0, period * dx);
+  return run;
+}
+
+TEST(SurfaceHeatLossTest, LumpedPlateCoolsByNewtonsLaw) {
+  const Real dx = Real(1.25e-3);
+  const int layers = 8;  // L = 10 mm
+  ThermalRun run = periodicPlates(dx);
+  run.add(latticeBlock("conductor", Vector(0, 0, 0), period, period, layers, dx, 3, 400),
+          "conductor");
+  const double omega = 250;  // W/m^2/K; Bi = omega (L/2) / kappa = 0.025
+  run.start("clouds (conductor); atmosphere { T 300; coefficients ((conductor 250)); }");
+  const double L = layers * dx, rhoC = 8900.0 * 385.0;
+  const double tau = rhoC * L / (2 * omega);  // two faces
+  run.advanceTo(tau);
+  const double exact = 300 + 100 * std::exp(-1.0);
+  const double error = std::abs(meanTemperature(run.clouds.front()) - exact) / (exact - 300);
+  RecordProperty("steps", std::to_string(run.steps));
+  RecordProperty("error", std::to_string(error));
+  // the lumped ODE itself is off by about Bi/3 = 0.8 % at this Biot number
+  EXPECT_LT(error, 0.02) << "T " << meanTemperature(run.clouds.front()) << " K against " << exact;
+  // the books: the heat that left equals the internal energy the plate lost
+  const auto& attributes = run.clouds.front().attributes();
+  const double lost = attributes.at("heatLost.atmosphere");
+  const double change =
+      run.internalEnergy(run.clouds.front()) - attributes.at("internalEnergyAtStart");
+  EXPECT_NEAR(lost + change, 0, 1e-10 * lost);
+}
+
+TEST(SurfaceHeatLossTest, LumpedPlateCoolsByRadiation) {
+  const Real dx = Real(1.25e-3);
+  const int layers = 8;
+  ThermalRun run = periodicPlates(dx);
+  run.add(latticeBlock("conductor", Vector(0, 0, 0), period, period, layers, dx, 3, 1000),
+          "conductor");
+  run.start("clouds (conductor); radiation { T 300; }");
+  const double L = layers * dx, rhoCL = 8900.0 * 385.0 * L;
+  const double beta = 0.8, sigma = 5.670374419e-8;
+  // rho c L dT/dt = -2 beta sigma (T^4 - T_a^4), by RK4 with 10^4 steps
+  auto rate = [&](double T) {
+    return -2 * beta * sigma * (std::pow(T, 4) - std::pow(300.0, 4)) / rhoCL;
+  };
+  const double end = 60;
+  double T = 1000;
+  const int steps = 10000;
+  const double dt = end / steps;
+  for (int s = 0; s < steps; ++s) {
+    const double k1 = rate(T), k2 = rate(T + 0.5 * dt * k1), k3 = rate(T + 0.5 * dt * k2),
+                 k4 = rate(T + dt * k3);
+    T += dt / 6 * (k1 + 2 * k2 + 2 * k3 + k4);
+  }
+  run.advanceTo(end);
+  const double error = std::abs(meanTemperature(run.clouds.front()) - T) / (1000 - T);
+  RecordProperty("error", std::to_string(error));
+  ASSERT_LT(T, 930) << "the test must cool the plate to mean anything";
+  EXPECT_LT(error, 0.02) << "T " << meanTemperature(run.clouds.front()) << " K against " << T;
+}
+
+// Two plates touching along a flat face, their materials joined by a contact coefficient: the
+// difference of their mean temperatures decays as exp(-omega (2 / (rho c L)) t) per unit area
+// (each plate lumped: Bi = omega L / kappa = 0.03 with L = 6 mm, which puts the lumped ODE
+// about Bi/3 = 1 % off).
+TEST(SurfaceHeatLossTest, MoldContactPassesOmegaATimesTheDifference) {
+  const Real dx = Real(1e-3);
+  const int layers = 6;
+  ThermalRun run = periodicPlates(dx);
+  run.add(latticeBlock("hot", Vector(0, 0, 0), period, period, layers, dx, 3, 500), "conductor");
+  run.add(latticeBlock("cold", Vector(0, 0, -layers * dx), period, period, layers, dx, 3, 300),
+          "other");
+  const double omega = 250;
+  run.start("clouds (hot cold); conduction on; moldContact { coefficients ((conductor other 250)); }");
+  const double rhoCL = 8900.0 * 385.0 * layers * dx;
+  const double tau = rhoCL / (2 * omega);
+  run.advanceTo(tau);
+  const double difference = meanTemperature(run.clouds[0]) - meanTemperature(run.clouds[1]);
+  const double exact = 200 * std::exp(-1.0);
+  const double error = std::abs(difference - exact) / exact;
+  RecordProperty("steps", std::to_string(run.steps));
+  RecordProperty("error", std::to_string(error));
+  EXPECT_LT(error, 0.02) << "difference " << difference << " K against " << exact;
+}
+
+}  // namespace
+}  // namespace sphcast::testing
