@@ -23,11 +23,26 @@ std::vector<Real> particleVolumes(const ParticleCloud& cloud) {
 namespace {
 
 template <int Dim>
-Real calibratedFactorIn(Real supportRadius, Real spacing) {
+Real calibratedFactorIn(ExposedAreaForm form, Real supportRadius, Real spacing) {
   const WendlandC2Kernel<Dim> kernel(supportRadius);
   const Real cell = std::pow(spacing, Dim);  // V = dx^d
   const int reach = static_cast<int>(std::ceil(supportRadius / spacing)) + 1;
   const Real q = Real(1) - cell * kernel.value(0);
+  // |d s / dz| of layer k: sum over the half lattice of V dW/dr dz / r
+  auto layerGradient = [&](int layer) {
+    Real gz = 0;
+    for (int dz = -reach; dz <= reach; ++dz) {
+      if (layer + dz < 0) continue;
+      const int dyRange = Dim == 3 ? reach : 0;
+      for (int dy = -dyRange; dy <= dyRange; ++dy) {
+        for (int dx = -reach; dx <= reach; ++dx) {
+          const Real r = spacing * std::sqrt(Real(dx * dx + dy * dy + dz * dz));
+          gz += cell * kernel.derivativeOverDistance(r) * spacing * Real(dz);
+        }
+      }
+    }
+    return std::abs(gz);
+  };
   // Layers k = 0, 1, ... below the free surface z = 0: s_k sums over the half lattice z <= 0.
   Real columnSum = 0;
   for (int layer = 0; layer <= reach; ++layer) {
@@ -42,7 +57,8 @@ Real calibratedFactorIn(Real supportRadius, Real spacing) {
         }
       }
     }
-    columnSum += exposureWeight(Real(1) - s, q);
+    columnSum += form == ExposedAreaForm::gradient ? layerGradient(layer) * spacing
+                                                   : exposureWeight(Real(1) - s, q);
   }
   if (!(columnSum > 0)) {
     throw Error("exposed area: a flat surface has no exposed particle at supportRadius/spacing " +
@@ -54,17 +70,19 @@ Real calibratedFactorIn(Real supportRadius, Real spacing) {
 
 }  // namespace
 
-Real ExposedArea::calibratedAreaFactor(int dimension, Real supportRadius, Real spacing) {
-  return dimension == 2 ? calibratedFactorIn<2>(supportRadius, spacing)
-                        : calibratedFactorIn<3>(supportRadius, spacing);
+Real ExposedArea::calibratedAreaFactor(ExposedAreaForm form, int dimension, Real supportRadius,
+                                       Real spacing) {
+  return dimension == 2 ? calibratedFactorIn<2>(form, supportRadius, spacing)
+                        : calibratedFactorIn<3>(form, supportRadius, spacing);
 }
 
-ExposedArea::ExposedArea(int dimension, Real supportRadius, Real spacing,
+ExposedArea::ExposedArea(ExposedAreaForm form, int dimension, Real supportRadius, Real spacing,
                          std::vector<ParticleCloud*> exposed,
                          std::vector<const ParticleCloud*> covering, Neighbourhood& neighbourhood)
-    : dimension_(dimension),
+    : form_(form),
+      dimension_(dimension),
       supportRadius_(supportRadius),
-      areaFactor_(calibratedAreaFactor(dimension, supportRadius, spacing)),
+      areaFactor_(calibratedAreaFactor(form, dimension, supportRadius, spacing)),
       exposed_(std::move(exposed)),
       covering_(std::move(covering)),
       neighbourhood_(neighbourhood) {
@@ -90,6 +108,7 @@ void ExposedArea::computeIn() {
   const Real selfKernel = kernel.value(0);
   const Real areaFactor = areaFactor_;
   constexpr Real areaExponent = Real(Dim - 1) / Real(Dim);
+  const bool gradientForm = form_ == ExposedAreaForm::gradient;
   std::vector<std::vector<Real>> coveringVolume;
   for (const ParticleCloud* other : covering_) coveringVolume.push_back(particleVolumes(*other));
   for (ParticleCloud* cloud : exposed_) {
@@ -98,20 +117,29 @@ void ExposedArea::computeIn() {
     auto& granularity = cloud->scalarField("granularity");
     auto& area = cloud->scalarField("exposedArea");
     std::vector<const NeighbourList*> lists;
-    for (const ParticleCloud* other : covering_) lists.push_back(&neighbourhood_.pairs(*cloud, *other));
+    for (const ParticleCloud* other : covering_)
+      lists.push_back(&neighbourhood_.pairs(*cloud, *other));
 #pragma omp parallel for schedule(static)
     for (std::size_t i = 0; i < x.size(); ++i) {
       Real s = volume[i] * selfKernel;
+      Vector gradient = Vector::Zero();
       for (std::size_t c = 0; c < covering_.size(); ++c) {
         const auto& otherX = covering_[c]->positions();
         const Real* otherVolume = coveringVolume[c].data();
         for (const std::uint32_t j : lists[c]->of(i)) {
-          s += otherVolume[j] * kernel.value(periodic.separation(x[i], otherX[j]).norm());
+          const Vector xij = periodic.separation(x[i], otherX[j]);
+          const Real r = xij.norm();
+          s += otherVolume[j] * kernel.value(r);
+          gradient += otherVolume[j] * kernel.gradient(xij, r);
         }
       }
       granularity[i] = s;
-      const Real q = Real(1) - volume[i] * selfKernel;
-      area[i] = areaFactor * exposureWeight(Real(1) - s, q) * std::pow(volume[i], areaExponent);
+      if (gradientForm) {
+        area[i] = areaFactor * volume[i] * gradient.norm();
+      } else {
+        const Real q = Real(1) - volume[i] * selfKernel;
+        area[i] = areaFactor * exposureWeight(Real(1) - s, q) * std::pow(volume[i], areaExponent);
+      }
     }
   }
 }

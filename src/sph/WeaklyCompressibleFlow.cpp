@@ -446,8 +446,9 @@ void WeaklyCompressibleFlow::computeRates(RatePart part) {
 
 void WeaklyCompressibleFlow::step(double deltaT) {
   if (!ownNeighbourhood_) {
-    throw Error("flow: step() is for a flow with its own neighbourhood; in a shared one the "
-                "solver calls the phases");
+    throw Error(
+        "flow: step() is for a flow with its own neighbourhood; in a shared one the "
+        "solver calls the phases");
   }
   kickAndDrift(deltaT);
   addWallTime(timings_.neighbourSearch, [&] { neighbourhood_.update(); });
