@@ -26,9 +26,9 @@ AtmosphereTransfer::AtmosphereTransfer(const HeatTransferContext& context, const
   const auto rows = dict.get<std::vector<Row>>("coefficients", heatTransferCoefficient);
   for (const auto& [material, omega] : rows) {
     if (!(omega >= 0) || !std::isfinite(omega)) {
-      throw DictionaryError(dict.location("coefficients"),
-                            "the coefficient of " + material + " in " + dict.name() +
-                                " must not be negative (W/m^2/K)");
+      throw DictionaryError(dict.location("coefficients"), "the coefficient of " + material +
+                                                               " in " + dict.name() +
+                                                               " must not be negative (W/m^2/K)");
     }
     bool used = false;
     for (std::size_t c = 0; c < context_.clouds.size(); ++c) {
@@ -60,9 +60,12 @@ std::string AtmosphereTransfer::description() const {
 
 void AtmosphereTransfer::addEnergyRates() {
   const double air = airTemperature_;
-  powerLeaving_ = addSurfaceLoss(
-      context_, coefficientOfCloud_, [air](double T) { return T - air; },
-      [](double) { return 1.0; }, stableDeltaT_);
+  powerLeaving_ =
+      addSurfaceLoss(context_, coefficientOfCloud_, [air](double T) { return T - air; });
+}
+
+double AtmosphereTransfer::stableDeltaT() const {
+  return surfaceLossStableDeltaT(context_, coefficientOfCloud_, [](double) { return 1.0; });
 }
 
 }  // namespace sphcast

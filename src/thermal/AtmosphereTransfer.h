@@ -29,14 +29,13 @@ class AtmosphereTransfer : public HeatTransferModel {
   std::string description() const override;
   void addEnergyRates() override;
   std::vector<double> powerLeaving() const override { return powerLeaving_; }
-  double stableDeltaT() const override { return stableDeltaT_; }
+  double stableDeltaT() const override;
 
  private:
   const HeatTransferContext& context_;
   double airTemperature_;
   std::vector<double> coefficientOfCloud_;  // W/m^2/K, 0: none
-  std::vector<double> powerLeaving_;  // W, by cloud
-  double stableDeltaT_;
+  std::vector<double> powerLeaving_;        // W, by cloud
 };
 
 }  // namespace sphcast

@@ -28,6 +28,10 @@ EnergyEquation::EnergyEquation(HeatTransferContext context, const Dictionary& he
   }
   for (HeatCloud& heat : context_.clouds) prepareFields(heat);
   paths_ = buildHeatTransferPaths(context_, heatTransfer, needsExposedArea_);
+  if (heatTransfer.getChoiceOrDefault("exposedArea", {"gradient", "granularity"}, "gradient") ==
+      "granularity") {
+    exposedAreaForm_ = ExposedAreaForm::granularity;
+  }
   if (paths_.empty()) {
     throw DictionaryError(heatTransfer.location(),
                           "heatTransfer in " + heatTransfer.name() +
@@ -114,7 +118,8 @@ void EnergyEquation::kickEnergy(double deltaT) {
 void EnergyEquation::accountLosses(double duration) {
   for (HeatCloud& heat : context_.clouds) {
     auto& attributes = heat.cloud->attributes();
-    for (const char* path : lossPaths) attributes[lostKey(path)] += duration * attributes[rateKey(path)];
+    for (const char* path : lossPaths)
+      attributes[lostKey(path)] += duration * attributes[rateKey(path)];
   }
 }
 
@@ -160,8 +165,8 @@ void EnergyEquation::updateTemperatures() {
 #pragma omp parallel for schedule(static)
     for (std::size_t i = 0; i < T.size(); ++i) {
       if (!held) T[i] = energy.temperature(u[i]);
-      kappa[i] = conductivity ? static_cast<Real>((*conductivity)(static_cast<double>(T[i])))
-                              : Real(0);
+      kappa[i] =
+          conductivity ? static_cast<Real>((*conductivity)(static_cast<double>(T[i]))) : Real(0);
     }
   }
 }

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "core/dictionary/Dictionary.h"
+#include "sph/ExposedArea.h"
 #include "thermal/HeatTransferModel.h"
 
 namespace sphcast {
@@ -52,8 +53,10 @@ class EnergyEquation {
   void halfKick(double deltaT);
   void computeRates();
 
-  // True when a path reads the exposed area A_i (the solver computes it before computeRates).
+  // True when a path reads the exposed area A_i (the solver computes it before computeRates),
+  // and the form heatTransfer's `exposedArea` asks for.
   bool needsExposedArea() const { return needsExposedArea_; }
+  ExposedAreaForm exposedAreaForm() const { return exposedAreaForm_; }
   const HeatTransferContext& context() const { return context_; }
   double stableDeltaT(std::string& limiter) const;
   std::vector<std::string> descriptions() const;
@@ -67,6 +70,7 @@ class EnergyEquation {
   HeatTransferContext context_;
   std::vector<std::unique_ptr<HeatTransferModel>> paths_;
   bool needsExposedArea_ = false;
+  ExposedAreaForm exposedAreaForm_ = ExposedAreaForm::gradient;
   bool restarted_ = false;
 };
 

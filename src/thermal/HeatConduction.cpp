@@ -15,10 +15,10 @@ double HeatConduction::largestDiffusivity(const Material& material) {
   // Every table is piecewise linear (u) or clamped (kappa, rho), so the extremes of
   // kappa / (rho du/dT) lie within the union of their ranges: sample it finely, plus both sides
   // of every row (du/dT jumps there).
-  double lowest = std::min({kappa.lowestTemperature(), rho.lowestTemperature(),
-                            energy.nodeTemperatures().front()});
-  double highest = std::max({kappa.highestTemperature(), rho.highestTemperature(),
-                             energy.nodeTemperatures().back()});
+  double lowest = std::min(
+      {kappa.lowestTemperature(), rho.lowestTemperature(), energy.nodeTemperatures().front()});
+  double highest = std::max(
+      {kappa.highestTemperature(), rho.highestTemperature(), energy.nodeTemperatures().back()});
   if (!(highest > lowest)) highest = lowest + 1;
   double largest = 0;
   constexpr int samples = 4000;

@@ -32,7 +32,8 @@ const Dictionary& settingsOf(const Dictionary& heatTransfer, const std::string& 
 }  // namespace
 
 std::vector<std::string> heatTransferKeys() {
-  return {"clouds", "fixedTemperature", "conduction", "moldContact", "atmosphere", "radiation"};
+  return {"clouds",     "fixedTemperature", "conduction", "moldContact",
+          "atmosphere", "radiation",        "exposedArea"};
 }
 
 std::vector<std::unique_ptr<HeatTransferModel>> buildHeatTransferPaths(

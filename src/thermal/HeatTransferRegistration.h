@@ -19,6 +19,8 @@ namespace sphcast {
 //       moldContact      { coefficients ((AC4CH iron 150)); }  // eq. (14)   MoldContactTransfer.h
 //       atmosphere       { T 300; coefficients ((iron 80)); }  // eq. (15)   AtmosphereTransfer.h
 //       radiation        { T 300; materials (iron); }          // eq. (16)   RadiationTransfer.h
+//       exposedArea      gradient;    // optional: gradient (default) | granularity (eq. (11)),
+//                                     // the A_i of atmosphere and radiation (sph/ExposedArea.h)
 //   }
 //
 // A path is built when its entry is a sub-dictionary or `on`; `off` or absent: never built,

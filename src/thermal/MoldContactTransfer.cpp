@@ -44,8 +44,7 @@ Real MoldContactTransfer::contactLength(int dimension, Real supportRadius, Real 
                         : contactLengthIn<3>(supportRadius, spacing);
 }
 
-MoldContactTransfer::MoldContactTransfer(const HeatTransferContext& context,
-                                         const Dictionary& dict)
+MoldContactTransfer::MoldContactTransfer(const HeatTransferContext& context, const Dictionary& dict)
     : context_(context),
       contactLength_(contactLength(context.dimension, context.supportRadius, context.spacing)) {
   dict.checkKeys({"coefficients"});
@@ -85,11 +84,13 @@ MoldContactTransfer::MoldContactTransfer(const HeatTransferContext& context,
       const HeatCloud& heat = context_.clouds[a];
       context_.neighbourhood->requestPairs(*heat.cloud, *context_.clouds[b].cloud);
       const Material& material = *heat.material;
-      const InternalEnergyTable& energy = material.requireInternalEnergy("heatTransfer moldContact");
+      const InternalEnergyTable& energy =
+          material.requireInternalEnergy("heatTransfer moldContact");
       const TemperatureTable& rho = material.requireDensity("heatTransfer moldContact");
-      const double lowestDensity = std::min(rho(rho.lowestTemperature()), rho(rho.highestTemperature()));
-      shortest = std::min(shortest, 0.25 * lowestDensity * energy.smallestSpecificHeat() *
-                                        contactLength_ / omega);
+      const double lowestDensity =
+          std::min(rho(rho.lowestTemperature()), rho(rho.highestTemperature()));
+      shortest = std::min(
+          shortest, 0.25 * lowestDensity * energy.smallestSpecificHeat() * contactLength_ / omega);
     }
   }
   stableDeltaT_ = shortest;

@@ -57,10 +57,14 @@ std::string RadiationTransfer::description() const {
 
 void RadiationTransfer::addEnergyRates() {
   const double surrounding4 = std::pow(surroundingTemperature_, 4);
-  powerLeaving_ = addSurfaceLoss(
-      context_, emissivityOfCloud_,
-      [surrounding4](double T) { return stefanBoltzmann * (T * T * T * T - surrounding4); },
-      [](double T) { return 4 * stefanBoltzmann * T * T * T; }, stableDeltaT_);
+  powerLeaving_ = addSurfaceLoss(context_, emissivityOfCloud_, [surrounding4](double T) {
+    return stefanBoltzmann * (T * T * T * T - surrounding4);
+  });
+}
+
+double RadiationTransfer::stableDeltaT() const {
+  return surfaceLossStableDeltaT(context_, emissivityOfCloud_,
+                                 [](double T) { return 4 * stefanBoltzmann * T * T * T; });
 }
 
 }  // namespace sphcast

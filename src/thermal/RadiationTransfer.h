@@ -33,14 +33,13 @@ class RadiationTransfer : public HeatTransferModel {
   std::string description() const override;
   void addEnergyRates() override;
   std::vector<double> powerLeaving() const override { return powerLeaving_; }
-  double stableDeltaT() const override { return stableDeltaT_; }
+  double stableDeltaT() const override;
 
  private:
   const HeatTransferContext& context_;
   double surroundingTemperature_;
   std::vector<double> emissivityOfCloud_;  // 0: does not radiate
-  std::vector<double> powerLeaving_;  // W, by cloud
-  double stableDeltaT_;
+  std::vector<double> powerLeaving_;       // W, by cloud
 };
 
 }  // namespace sphcast
