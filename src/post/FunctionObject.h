@@ -96,8 +96,8 @@ std::string formatSample(const Vector& value);  // "(x y z)"
 class FunctionObjectList {
  public:
   FunctionObjectList() = default;
-  // Types: probes, surfaceHeights, front, fieldMinMax, energyBalance. An unknown type, a missing or unknown cloud or field,
-  // a bad location: DictionaryError naming file, line and key.
+  // Types: probes, surfaceHeights, front, fieldMinMax, energyBalance. An unknown type, a missing or
+  // unknown cloud or field, a bad location: DictionaryError naming file, line and key.
   FunctionObjectList(const Dictionary& controlDict, const FunctionObjectContext& context);
 
   void execute(const TimeState& time, bool caseWriteTime);
