@@ -83,10 +83,9 @@ void CastingSolver::loadHeatClouds() {
     if (!std::filesystem::exists(file)) {
       std::string present;
       for (const ParticleCloud& cloud : clouds_) present += " " + cloud.name();
-      throw DictionaryError(heatSetup_.cloudsAt,
-                            "heat cloud '" + name + "' is neither in time " +
-                                time_.startTimeName() + " (which holds (" + present +
-                                " )) nor in constant/particles");
+      throw DictionaryError(heatSetup_.cloudsAt, "heat cloud '" + name + "' is neither in time " +
+                                                     time_.startTimeName() + " (which holds (" +
+                                                     present + " )) nor in constant/particles");
     }
     clouds_.push_back(readCloudVtp(file, name));
     info() << "Cloud " << name << ": from constant/particles (carries heat: written from now on)\n";
@@ -96,8 +95,8 @@ void CastingSolver::loadHeatClouds() {
 // Every cloud a model works on, registered once: the flow's fluid moves, everything else is
 // at rest (moving molds arrive with the rigid bodies).
 void CastingSolver::setUpNeighbourhood() {
-  const Real radius = flowSetup_.enabled ? flowSetup_.settings.supportRadius
-                                         : heatSetup_.supportRadius;
+  const Real radius =
+      flowSetup_.enabled ? flowSetup_.settings.supportRadius : heatSetup_.supportRadius;
   const PeriodicBox periodic = flowSetup_.enabled ? flowSetup_.settings.periodic : PeriodicBox();
   if (flowSetup_.enabled && heatSetup_.enabled &&
       heatSetup_.supportRadius != flowSetup_.settings.supportRadius) {
@@ -142,8 +141,8 @@ void CastingSolver::setUpFlow() {
     info() << "Cloud " << fluid.name() << ": initial " << added << " from constant/\n";
   }
   const std::vector<const ParticleCloud*>& walls = wallClouds_;
-  flow_ = std::make_unique<WeaklyCompressibleFlow>(flowSetup_.settings, fluid, walls,
-                                                   *neighbourhood_);
+  flow_ =
+      std::make_unique<WeaklyCompressibleFlow>(flowSetup_.settings, fluid, walls, *neighbourhood_);
   fluid_ = &fluid;
   domain_ = walls.empty() ? defaultDomain({&fluid}) : defaultDomain(walls);
   const FlowSettings& settings = flowSetup_.settings;
@@ -204,7 +203,9 @@ void CastingSolver::setUpHeat() {
   if (energy_->needsExposedArea()) {
     std::vector<ParticleCloud*> exposed;
     std::vector<const ParticleCloud*> covering;
+    exposedAreaRestored_ = energy_->restarted();
     for (const HeatCloud& heat : energy_->context().clouds) {
+      exposedAreaRestored_ = exposedAreaRestored_ && heat.cloud->hasScalarField("exposedArea");
       exposed.push_back(heat.cloud);
       covering.push_back(heat.cloud);
     }
@@ -213,9 +214,9 @@ void CastingSolver::setUpHeat() {
         covering.push_back(wall);
       }
     }
-    exposedArea_ = std::make_unique<ExposedArea>(context.dimension, context.supportRadius,
-                                                 context.spacing, exposed, covering,
-                                                 *neighbourhood_);
+    exposedArea_ = std::make_unique<ExposedArea>(energy_->exposedAreaForm(), context.dimension,
+                                                 context.supportRadius, context.spacing, exposed,
+                                                 covering, *neighbourhood_);
   }
   info() << "Heat transfer: energy equation (17) on";
   for (const HeatCloud& heat : energy_->context().clouds) {
@@ -226,7 +227,10 @@ void CastingSolver::setUpHeat() {
   info() << '\n';
   for (const std::string& line : energy_->descriptions()) info() << "    " << line << '\n';
   if (exposedArea_) {
-    info() << "    exposed area (eq. 11) with R_A = " << exposedArea_->areaFactor()
+    info() << "    exposed area A_i ("
+           << (energy_->exposedAreaForm() == ExposedAreaForm::gradient ? "gradient of s_i"
+                                                                       : "eq. 11")
+           << ") with R_A = " << exposedArea_->areaFactor()
            << " (a flat surface counts its area)\n";
   }
   if (!flowSetup_.enabled) info() << "    no flow: the particles stay where they are\n";
@@ -238,7 +242,10 @@ void CastingSolver::startModels() {
   const bool restarted = (flow_ && flow_->restarted()) || (energy_ && energy_->restarted());
   addWallTime(searchSeconds_,
               [&] { neighbourhood_->update(restarted ? CloudOrder::keep : CloudOrder::byCell); });
-  if (exposedArea_) exposedArea_->compute();
+  // A restart keeps the A_i it was written with: summed again over neighbour lists in another
+  // order (the wall clearance moves particles after the search) they could differ in the last
+  // bit.
+  if (exposedArea_ && !exposedAreaRestored_) exposedArea_->compute();
   if (flow_) flow_->start();
   if (energy_) energy_->start();
   info() << "    neighbourhood: " << neighbourhood_->pairCount() << " pairs\n";

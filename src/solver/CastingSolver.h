@@ -83,7 +83,8 @@ class CastingSolver {
   std::unique_ptr<WeaklyCompressibleFlow> flow_;
   ParticleCloud* fluid_ = nullptr;
   std::unique_ptr<EnergyEquation> energy_;
-  std::unique_ptr<ExposedArea> exposedArea_;  // A_i, when a model reads it
+  std::unique_ptr<ExposedArea> exposedArea_;      // A_i, when a model reads it
+  bool exposedAreaRestored_ = false;              // read with a restart's clouds
   std::vector<const ParticleCloud*> wallClouds_;  // the flow's walls
   Domain domain_;
   // The clouds before the step being taken (those that change: the fluid, the heat clouds)
