@@ -66,8 +66,8 @@ struct HeatCase {
     const auto& x = mold.positions();
     std::vector<std::size_t> order, dropped;
     for (std::size_t i = 0; i < x.size(); ++i) {
-      const bool inside = (x[i].array() > 0).all() && x[i][0] < perSide * dx &&
-                          x[i][1] < perSide * dx;
+      const bool inside =
+          (x[i].array() > 0).all() && x[i][0] < perSide * dx && x[i][1] < perSide * dx;
       (inside ? dropped : order).push_back(i);
     }
     const std::size_t kept = order.size();
@@ -85,10 +85,12 @@ struct HeatCase {
     context.clouds = {{&metal, &library.get("metal", {}, "material")},
                       {&mold, &library.get("iron", {}, "material")}};
     energy = std::make_unique<sphcast::EnergyEquation>(
-        context, sphcast::Dictionary::parse("h { clouds (metal mold); " + paths + " }").subDict("h"));
+        context,
+        sphcast::Dictionary::parse("h { clouds (metal mold); " + paths + " }").subDict("h"));
     if (energy->needsExposedArea()) {
       area = std::make_unique<sphcast::ExposedArea>(
-          3, 3 * dx, dx, std::vector<sphcast::ParticleCloud*>{&metal, &mold},
+          energy->exposedAreaForm(), 3, 3 * dx, dx,
+          std::vector<sphcast::ParticleCloud*>{&metal, &mold},
           std::vector<const sphcast::ParticleCloud*>{&metal, &mold}, *neighbourhood);
     }
     neighbourhood->update(sphcast::CloudOrder::keep);
@@ -108,15 +110,22 @@ void HeatStep(benchmark::State& state, const char* paths) {
     heat.energy->computeRates();
     heat.energy->halfKick(dt);
   }
-  state.SetItemsProcessed(state.iterations() * static_cast<long>(heat.metal.size() + heat.mold.size()));
+  state.SetItemsProcessed(state.iterations() *
+                          static_cast<long>(heat.metal.size() + heat.mold.size()));
   state.counters["particles"] = double(heat.metal.size() + heat.mold.size());
 }
 BENCHMARK_CAPTURE(HeatStep, conduction, "conduction on;")
-    ->Arg(10'000)->Arg(100'000)->Unit(benchmark::kMillisecond)->UseRealTime();
+    ->Arg(10'000)
+    ->Arg(100'000)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 BENCHMARK_CAPTURE(HeatStep, allPaths,
                   "conduction on; moldContact { coefficients ((metal iron 3000)); }"
                   "atmosphere { T 300; coefficients ((metal 20) (iron 20)); } radiation { T 300; }")
-    ->Arg(10'000)->Arg(100'000)->Unit(benchmark::kMillisecond)->UseRealTime();
+    ->Arg(10'000)
+    ->Arg(100'000)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 
 // The periodic streaming block of flowStepBenchmark, with conduction in it, in the solver's
 // order of passes.

@@ -10,8 +10,15 @@ case=$scratch/whole
 mkdir -p "$case/system" "$case/constant"
 cat > "$case/system/controlDict" <<DICT
 FoamFile { version 2.0; format ascii; class dictionary; object controlDict; }
-startFrom latestTime; stopAt endTime; endTime 2; deltaT 1; adjustTimeStep yes; maxCo 0.25;
-writeControl adjustableRunTime; writeInterval 0.5; logInterval 100;
+startFrom       latestTime;
+stopAt          endTime;
+endTime         2;
+deltaT          1;
+adjustTimeStep  yes;
+maxCo           0.25;
+writeControl    adjustableRunTime;
+writeInterval   0.5;
+logInterval     100;
 functions { balance { type energyBalance; clouds (metal mold); } }
 DICT
 cat > "$case/system/setCastFieldsDict" <<DICT
@@ -73,7 +80,7 @@ cd "$scratch/stopped"
 setCastFields > /dev/null 2>&1 || fail "setCastFields"
 setEntry system/controlDict endTime 1
 sphCastFoam > log.1 2>&1 || fail "first part"
-sed -i 's/endTime 1;/endTime 2;/' system/controlDict
+setEntry system/controlDict endTime 2
 sphCastFoam > log.2 2>&1 || fail "restart"
 grep -q "Starting from time 1 " log.2 || fail "restart did not start from 1"
 for t in 1.5 2; do

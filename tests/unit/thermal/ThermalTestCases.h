@@ -90,14 +90,16 @@ struct ThermalRun {
   // Builds the paths heatTransfer (the text of the sub-dictionary) switches on and starts.
   void start(const std::string& heatTransfer) {
     neighbourhood = std::make_unique<Neighbourhood>(supportRadius, periodic);
-    for (ParticleCloud& cloud : clouds) neighbourhood->addCloud(cloud, Neighbourhood::Motion::fixed);
+    for (ParticleCloud& cloud : clouds)
+      neighbourhood->addCloud(cloud, Neighbourhood::Motion::fixed);
     HeatTransferContext context;
     context.dimension = dimension;
     context.supportRadius = supportRadius;
     context.spacing = spacing;
     context.clouds = heat;
     context.neighbourhood = neighbourhood.get();
-    const Dictionary dict = Dictionary::parse("heatTransfer {" + heatTransfer + "}", "physicsModels");
+    const Dictionary dict =
+        Dictionary::parse("heatTransfer {" + heatTransfer + "}", "physicsModels");
     energy = std::make_unique<EnergyEquation>(context, dict.subDict("heatTransfer"));
     if (energy->needsExposedArea()) {
       std::vector<ParticleCloud*> exposed;
@@ -106,8 +108,9 @@ struct ThermalRun {
         exposed.push_back(&cloud);
         covering.push_back(&cloud);
       }
-      exposedArea = std::make_unique<ExposedArea>(dimension, supportRadius, spacing, exposed,
-                                                  covering, *neighbourhood);
+      exposedArea =
+          std::make_unique<ExposedArea>(energy->exposedAreaForm(), dimension, supportRadius,
+                                        spacing, exposed, covering, *neighbourhood);
     }
     neighbourhood->update(CloudOrder::keep);
     if (exposedArea) exposedArea->compute();
