@@ -97,7 +97,8 @@ void CastingSolver::loadHeatClouds() {
 void CastingSolver::setUpNeighbourhood() {
   const Real radius =
       flowSetup_.enabled ? flowSetup_.settings.supportRadius : heatSetup_.supportRadius;
-  const PeriodicBox periodic = flowSetup_.enabled ? flowSetup_.settings.periodic : PeriodicBox();
+  const PeriodicBox periodic =
+      flowSetup_.enabled ? flowSetup_.settings.periodic : heatSetup_.periodic;
   if (flowSetup_.enabled && heatSetup_.enabled &&
       heatSetup_.supportRadius != flowSetup_.settings.supportRadius) {
     throw Error("internal: flow and heat read different supportRadius");

@@ -32,8 +32,11 @@ Value positive(const Dictionary& dict, const std::string& key, const Dimensions&
   return value;
 }
 
+}  // namespace
+
 // periodic { x (0 0.2); z (-0.01 0.01); }: each axis named with its interval [lower, upper).
-void readPeriodicAxes(const Dictionary& periodic, FlowSettings& settings) {
+PeriodicBox readPeriodicBox(const Dictionary& periodic, Real supportRadius, int dimension) {
+  PeriodicBox box;
   const std::vector<std::string> axes{"x", "y", "z"};
   periodic.checkKeys(axes);
   for (int axis = 0; axis < 3; ++axis) {
@@ -42,20 +45,19 @@ void readPeriodicAxes(const Dictionary& periodic, FlowSettings& settings) {
     const auto interval = periodic.get<Eigen::Vector2d>(key, length);
     const double period = interval[1] - interval[0];
     // the minimum image is unique only for pairs closer than half a period
-    if (!(period > 2 * static_cast<double>(settings.supportRadius))) {
+    if (!(period > 2 * static_cast<double>(supportRadius))) {
       throw DictionaryError(periodic.location(key),
                             "periodic interval of " + key + " must be longer than twice the " +
-                                "supportRadius (" + std::to_string(settings.supportRadius) +
-                                " m) in " + periodic.name());
+                                "supportRadius (" + std::to_string(supportRadius) + " m) in " +
+                                periodic.name());
     }
-    if (settings.dimension == 2 && axis == 2) {
+    if (dimension == 2 && axis == 2) {
       throw DictionaryError(periodic.location(key), "a 2D case has no periodic z axis");
     }
-    settings.periodic.setPeriodic(axis, static_cast<Real>(interval[0]), static_cast<Real>(period));
+    box.setPeriodic(axis, static_cast<Real>(interval[0]), static_cast<Real>(period));
   }
+  return box;
 }
-
-}  // namespace
 
 FlowSetup readFlowSetup(const CaseFolder& caseFolder, const Vector& gravity) {
   FlowSetup setup;
@@ -98,9 +100,9 @@ FlowSetup readFlowSetup(const CaseFolder& caseFolder, const Vector& gravity) {
   // in spacings; at 0 a particle is still moved back when it is behind the surface, onto it
   settings.wallClearance = schemes.getOrDefault<Real>("wallClearance", settings.wallClearance);
   if (!(settings.wallClearance >= 0 && settings.wallClearance <= Real(0.5))) {
-    throw DictionaryError(schemes.location("wallClearance"),
-                          "'wallClearance' (in particle spacings) must lie in [0, 0.5] in " +
-                              schemes.name());
+    throw DictionaryError(
+        schemes.location("wallClearance"),
+        "'wallClearance' (in particle spacings) must lie in [0, 0.5] in " + schemes.name());
   }
   settings.gravity = gravity;
   settings.dimension = models.getOrDefault<int>("dimension", 3);
@@ -112,14 +114,22 @@ FlowSetup readFlowSetup(const CaseFolder& caseFolder, const Vector& gravity) {
     throw DictionaryError(models.location("dimension"),
                           "a 2D case lies in the x-y plane, but constant/g has a z component");
   }
-  if (models.found("periodic")) readPeriodicAxes(models.subDict("periodic"), settings);
+  if (models.found("periodic")) {
+    settings.periodic =
+        readPeriodicBox(models.subDict("periodic"), settings.supportRadius, settings.dimension);
+  }
 
   // The fluid's material must be in physicalProperties, which may hold other materials too
   // (setCastFields' clouds may use them); the error is where the name is written.
   const MaterialLibrary materials =
       MaterialLibrary::read(caseFolder.constantFile("physicalProperties"));
+  // the fluid cloud's material: named in `materials { cloud material; }`, else like the cloud
+  const bool mapped =
+      models.found("materials") && models.subDict("materials").found(setup.fluidCloud);
   const Material& fluid =
-      materials.get(setup.fluidCloud, flow.location("fluid"), "fluid");
+      mapped ? materials.get(models.subDict("materials").get<std::string>(setup.fluidCloud),
+                             models.subDict("materials").location(setup.fluidCloud), "materials")
+             : materials.get(setup.fluidCloud, flow.location("fluid"), "fluid");
   setup.restDensity = fluid.requireDensity("the flow");
   setup.viscosity = fluid.requireViscosity("the flow");
   return setup;
@@ -157,8 +167,7 @@ std::vector<std::string> prepareFluidFields(const FlowSetup& setup, ParticleClou
     }
     if (!fluid.hasScalarField("T")) {
       throw DictionaryError(table.location(), table.description() +
-                                                  " is a table in T, but cloud '" +
-                                                  fluid.name() +
+                                                  " is a table in T, but cloud '" + fluid.name() +
                                                   "' has no T (set it with setCastFields)");
     }
     // a copy: adding a field may move the others

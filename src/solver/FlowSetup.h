@@ -20,6 +20,8 @@ namespace sphcast {
 //                                                        // lie in the x-y plane at one z
 //                            periodic { x (0 0.2); }     // optional: periodic axes and their
 //                                                        // intervals, longer than 2 h
+//                            materials { metal AC4CH; }  // optional: the fluid's material
+//                                                        // (default: named like the cloud)
 //   system/sphSchemes:       densityScheme riemann;      // riemann | standard | deltaSPH
 //                            kernelCorrection on;        // optional, off by default
 //                            deltaSPHCoeffs { delta 0.1; alpha 0.02; }  // optional (deltaSPH)
@@ -39,6 +41,10 @@ struct FlowSetup {
   std::optional<TemperatureTable> viscosity;    // dynamic mu(T), log-linear, or a constant
   SourceLocation supportRadiusAt;  // for the check of h against the fluid's spacing
 };
+
+// periodic { x (0 0.2); } of constant/physicsModels: each axis named with its interval
+// [lower, upper), longer than 2 supportRadius; no z in 2D.
+PeriodicBox readPeriodicBox(const Dictionary& periodic, Real supportRadius, int dimension);
 
 // Reads and checks the three dictionaries (errors name file, line and key).
 FlowSetup readFlowSetup(const CaseFolder& caseFolder, const Vector& gravity);

@@ -4,6 +4,7 @@
 #include <set>
 
 #include "core/Error.h"
+#include "solver/FlowSetup.h"
 
 namespace sphcast {
 
@@ -69,6 +70,10 @@ HeatSetup readHeatSetup(const CaseFolder& caseFolder) {
   if (!(setup.supportRadius > 0)) {
     throw DictionaryError(schemes.location("supportRadius"),
                           "'supportRadius' must be positive in " + schemes.name());
+  }
+  if (models.found("periodic")) {
+    setup.periodic =
+        readPeriodicBox(models.subDict("periodic"), setup.supportRadius, setup.dimension);
   }
   return setup;
 }

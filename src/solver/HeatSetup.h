@@ -9,6 +9,7 @@
 #include "core/Real.h"
 #include "core/dictionary/Dictionary.h"
 #include "materials/MaterialLibrary.h"
+#include "particles/CellGrid.h"
 
 namespace sphcast {
 
@@ -38,6 +39,7 @@ struct HeatSetup {
   std::map<std::string, SourceLocation> materialNamedAt;  // where each cloud's material is named
   int dimension = 3;
   Real supportRadius = 0;
+  PeriodicBox periodic;  // physicsModels' periodic axes (the flow's when there is one)
   std::optional<MaterialLibrary> materials;
 
   // The material of a heat cloud (error at the place it is named, listing the materials).

@@ -17,7 +17,7 @@ namespace sphcast {
 //
 // V_j = m_j / rho_j. The printed (13) lacks the factor x_ij / (|x_ij|^2 + eta^2) that turns
 // the kernel gradient into a second derivative; without it the sum is not a Laplacian (doc/
-// physics.md §5.1). The harmonic mean of the conductivities keeps the flux continuous across a
+// physics.md §10.2.1). The harmonic mean of the conductivities keeps the flux continuous across a
 // jump of kappa (metal against mold). The pair term is antisymmetric: heat moves between
 // particles, sum_i m_i du_i/dt = 0 to round-off.
 //

@@ -30,7 +30,7 @@ struct HeatTransferContext {
   Neighbourhood* neighbourhood = nullptr;
 };
 
-// One heat path of eq. (17), rho du/dt = Q_hc + Q_ht + Q_ha + Q_hr (doc/physics.md §5): a
+// One heat path of eq. (17), rho du/dt = Q_hc + Q_ht + Q_ha + Q_hr (doc/physics.md §10.2): a
 // model reads its own sub-dictionary of heatTransfer in constant/physicsModels, asks the
 // neighbourhood for the pairs it needs when it is built, and in each step adds its du/dt to
 // the clouds' energyRate (never overwrites: EnergyEquation zeroes it) and names its step limit.

@@ -20,10 +20,11 @@ namespace sphcast {
 //         with spacing dx, each side's first layer dx/2 from the interface (contactLength()).
 //
 // As printed, (14) weighs each pair with 2 pi h^2 (V_i + V_k): the area of the kernel's sphere
-// rather than the particle's face, so a flat interface would pass pi h^2 <r> / dx^3 times
-// omega A dT (about 25 times at h = 3 dx in 3D, doc/physics.md §5.2), and the coefficient the
-// paper calibrated (150 W/m^2/K for its press) stands for about 25 times that here. The pair
-// term is antisymmetric: heat moves from one cloud to the other, none is lost.
+// rather than the particle's face, so a flat interface would pass 4 pi h^2 l_W / dx^3 times
+// omega A dT: 30 times at h = 3 dx in 3D (l_W = 0.267 dx), 6.4 times at h = 2 dx
+// (doc/physics.md §10.2.2). A coefficient calibrated with the paper's form (150 W/m^2/K for its
+// press) stands for that many times more here. The pair term is antisymmetric: heat moves
+// from one cloud to the other, none is lost.
 //
 // constant/physicsModels:
 //   heatTransfer { moldContact { coefficients ((AC4CH iron 150)); } }   // W/m^2/K per pair

@@ -15,7 +15,7 @@ namespace sphcast {
 //
 // beta the material's emissivity, sigma = 5.670374419e-8 W/m^2/K^4. The paper prints
 // (T_i - T_atm)^4, which is not the law (it radiates as much to a hotter surrounding as to a
-// colder one, doc/physics.md §5.3). A_i from sph/ExposedArea.h.
+// colder one, doc/physics.md §10.2.3). A_i from sph/ExposedArea.h.
 //
 // constant/physicsModels:
 //   heatTransfer { radiation { T 300; materials (iron); } }   // materials: optional, default

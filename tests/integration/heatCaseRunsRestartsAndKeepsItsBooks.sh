@@ -1,6 +1,6 @@
 #!/bin/bash
 # A case with heat and no flow: an AC4CH block at 900 K on an iron plate at 300 K, conduction,
-# contact, air and radiation (doc/physics.md §5). The iron plate is written to every time folder
+# contact, air and radiation (doc/physics.md §10.2). The iron plate is written to every time folder
 # (its T changes), a restart reproduces the uninterrupted run bit for bit, the energyBalance
 # function object closes the books to round-off, and bad heat input stops before anything is
 # written, naming file, line and key.

@@ -45,7 +45,13 @@ class FunctionObjectTest : public testing::TemporaryFolderTest {
 TEST_F(FunctionObjectTest, BadEntriesAreErrorsAtTheirKey) {
   EXPECT_EQ(errorOf("P1 { type probe; cloud fluid; }"),
             "controlDict:1:22: unknown type 'probe'; did you mean 'probes'? valid type are: "
-            "(probes surfaceHeights front fieldMinMax)");
+            "(probes surfaceHeights front fieldMinMax energyBalance)");
+  // energyBalance spans clouds: `clouds`, each carrying heat
+  const std::string noHeat = errorOf("E { type energyBalance; clouds (fluid); }");
+  EXPECT_NE(noHeat.find("controlDict:1:36: cloud 'fluid'"), std::string::npos) << noHeat;
+  EXPECT_NE(noHeat.find("carries no heat"), std::string::npos) << noHeat;
+  EXPECT_NE(errorOf("E { type energyBalance; cloud fluid; }").find("unknown key 'cloud'"),
+            std::string::npos);
   EXPECT_NE(
       errorOf("P1 { type probes; fields (p); probeLocations ((0 0 0)); }").find("controlDict:1:"),
       std::string::npos);
