@@ -1,0 +1,56 @@
+#!/bin/bash
+# Two heat validation tutorials at their coarsest resolution, through their own Allrun and
+# comparison scripts, on copies laid out as in the project (tutorials/validation/<case> beside
+# an etc/ with RunFunctions and a platforms/bin that is $SPHCAST_BIN):
+# - semiInfiniteConduction at 12 particles across the heated length 4 sqrt(alpha t): the erf
+#   profile's L2 error / jump. tests/unit/thermal/ConductionValidationTest.cpp measures 0.95 %
+#   on the same lattice (90 steps); through the tools 0.99 % (91 slightly shorter steps land on
+#   the end time: the time error, of the other sign, cancels less of the spatial one). With the
+#   held surface on the first held layer the error falls as about dx^0.8 (0.95 / 0.53 / 0.33 %
+#   at 12 / 25 / 50); a held surface dx/2 off, the error the bound must catch, gives 6.0 % at
+#   12. Bound: 1.5 %.
+# - stefanProblem at 12.5 particles across the frozen layer: the worst front error over four
+#   writes against Neumann's solution. StefanProblemTest measures 4.3 % there (the front moves
+#   by whole lattice columns through a 4 K mushy range: first order in dx, 1.8 % at 50 across);
+#   the tools give the same. Bound: 6 %. The energyBalance books close to round-off
+#   (ConductionValidationTest: 1e-12 over 2,000 steps); bound 1e-9.
+# About 5 s on one thread.
+. "$SPHCAST_TEST_TOOLS"
+project=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
+
+python=
+for candidate in ${PYTHON:-} python3 /usr/bin/python3; do
+    "$candidate" -c 'import vtk' 2> /dev/null && { python=$candidate; break; }
+done
+[ -n "$python" ] || { echo "SKIP: no python3 with the vtk module to read the .vtp clouds"; exit 77; }
+
+mkdir -p "$scratch/etc" "$scratch/platforms" "$scratch/tutorials/validation"
+cp "$project/etc/RunFunctions" "$project/etc/functionObjectSeries.py" "$scratch/etc/"
+ln -s "$SPHCAST_BIN" "$scratch/platforms/bin"
+
+# runTutorial CASE RESOLUTION: the tutorial's Allrun at RESOLUTION in the copy; prints its log.
+runTutorial() {
+    cp -r "$project/tutorials/validation/$1" "$scratch/tutorials/validation/"
+    (cd "$scratch/tutorials/validation/$1" && ./Allclean > /dev/null &&
+        PYTHON=$python ./Allrun "$2" > log.Allrun 2>&1) ||
+        { cat "$scratch/tutorials/validation/$1/log.Allrun" >&2; fail "$1: Allrun $2"; }
+    cat "$scratch/tutorials/validation/$1/log.compare"*
+}
+
+# below BOUND VALUE WHAT: fails unless VALUE < BOUND.
+below() {
+    [ -n "$2" ] || fail "$3: no value printed"
+    awk -v b="$1" -v v="$2" 'BEGIN { exit !(v < b) }' || fail "$3: $2, not below $1"
+}
+
+runTutorial semiInfiniteConduction 12
+log=$scratch/tutorials/validation/semiInfiniteConduction/log.compareWithErf
+below 0.015 "$(awk '/^t = 100 s:/ { print $NF }' "$log")" "semi-infinite body, erf L2 at t = 100 s"
+below 0.025 "$(awk '/^t = 25 s:/ { print $NF }' "$log")" "semi-infinite body, erf L2 at t = 25 s (6 particles across)"
+
+runTutorial stefanProblem 12.5
+log=$scratch/tutorials/validation/stefanProblem/log.compareWithNeumann
+[ "$(grep -c '^t = ' "$log")" -eq 4 ] || fail "stefanProblem: not four written times"
+below 0.06 "$(awk '/^worst front error/ { print $NF }' "$log")" "Neumann front, worst error"
+below 1e-9 "$(awk '/^energyBalance:/ { print $NF }' "$log")" "energyBalance relative imbalance"
+pass "heat tutorials through the tools: erf profile within 1.5 %, Neumann front within 6 %, books closed"
