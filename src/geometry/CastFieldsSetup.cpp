@@ -397,9 +397,11 @@ ParticleCloud fillCloud(const CloudPlan& plan, double spacing, int dimension,
   }
 
   const double dx3 = spacing * spacing * spacing;
-  const double filledVolume = static_cast<double>(centres.size()) * dx3;
+  // a 2D cloud's particles each hold dx^2 (an area per unit depth)
+  const double filledVolume =
+      static_cast<double>(centres.size()) * (dimension == 2 ? spacing * spacing : dx3);
   info() << "Cloud " << plan.name << ": " << centres.size() << " particles, " << filledVolume
-         << " m^3 (count x dx^3)";
+         << (dimension == 2 ? " m^2 (count x dx^2)" : " m^3 (count x dx^3)");
   if (regionVolume > 0.0) {  // a flat (2D) region has none
     info() << ", " << 100.0 * filledVolume / regionVolume << " % of the regions' "
            << (volumeExact ? "volume " : "volume bound (overlaps or booleans) ") << regionVolume

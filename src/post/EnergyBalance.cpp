@@ -40,12 +40,12 @@ EnergyBalance::EnergyBalance(const std::string& name, const Dictionary& dict,
   header_ = "# Time";
   for (const ParticleCloud* cloud : clouds_) header_ += "  E_" + cloud->name();
   for (const char* path : paths) header_ += std::string("  lost_") + path;
-  header_ += "  imbalance  relativeImbalance\n# energies in J";
+  header_ += "  imbalance  relativeImbalance\n# energies in J\n";
 }
 
 void EnergyBalance::sample(double time) {
   std::string row;
-  double change = 0, exchanged = 0;
+  double change = 0, content = 0;
   double lost[3] = {0, 0, 0};
   for (const ParticleCloud* cloud : clouds_) {
     const auto& mass = cloud->scalarField("mass");
@@ -54,7 +54,7 @@ void EnergyBalance::sample(double time) {
     for (std::size_t i = 0; i < u.size(); ++i) energy += double(mass[i]) * double(u[i]);
     const double delta = energy - cloud->attributes().at("internalEnergyAtStart");
     change += delta;
-    exchanged += std::abs(delta);
+    content += std::abs(cloud->attributes().at("internalEnergyAtStart"));
     row += formatSample(energy) + ' ';
     for (int p = 0; p < 3; ++p) {
       const auto found = cloud->attributes().find(std::string("heatLost.") + paths[p]);
@@ -65,10 +65,9 @@ void EnergyBalance::sample(double time) {
   for (const double value : lost) {
     row += formatSample(value) + ' ';
     totalLost += value;
-    exchanged += std::abs(value);
   }
   const double imbalance = change + totalLost;
-  row += formatSample(imbalance) + ' ' + formatSample(exchanged > 0 ? imbalance / exchanged : 0.0);
+  row += formatSample(imbalance) + ' ' + formatSample(content > 0 ? imbalance / content : 0.0);
   writeRow(openOutput("energyBalance", header_), time, row);
 }
 

@@ -15,8 +15,9 @@ namespace sphcast {
 //
 // E_c = sum m_i u_i of cloud c (J); lost_<path> the heat that left all clouds through the path
 // since the run's first start (J); imbalance = sum_c (E_c - E_c(start)) + sum of lost (J),
-// round-off when the paths conserve energy; relativeImbalance = imbalance / the heat the clouds
-// have exchanged so far (sum_c |E_c - E_c(start)| + sum of lost), 0 before any.
+// round-off when the paths conserve energy; relativeImbalance = imbalance / sum_c |E_c(start)|,
+// the scale of that round-off (about 1e-16 per step: u is measured from 0 K, so E_c is the
+// whole heat content, not what was exchanged).
 // Keys: clouds (metal mold ...), clouds that carry heat (their u, mass and accounts).
 class EnergyBalance : public FunctionObject {
  public:

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <limits>
 #include <sstream>
 
@@ -118,7 +119,9 @@ std::ofstream& FunctionObject::openOutput(const std::string& fileName, const std
 void FunctionObject::writeRow(std::ofstream& file, double time, const std::string& values) {
   char timeText[32];
   std::snprintf(timeText, sizeof timeText, "%-16.12g", time);
-  file << timeText << values << '\n' << std::flush;
+  // a time of 16 characters or more (0.00124963677918) fills the column: keep a separator
+  file << timeText << (timeText[std::strlen(timeText) - 1] == ' ' ? "" : " ") << values << '\n'
+       << std::flush;
 }
 
 std::string formatSample(double value) {

@@ -271,7 +271,8 @@ double CastingSolver::stableDeltaT(std::string& limiter) const {
   if (flow_ || energy_) {
     double stable = std::numeric_limits<double>::infinity();
     if (flow_) stable = flow_->stepLimits(time_.settings().maxCo).smallest(limiter);
-    if (energy_) {
+    // with a flow and `interval auto` the heat takes steps of its own (heatStepsWithFlow)
+    if (energy_ && (!flow_ || heatSetup_.heatEveryFlowStep)) {
       std::string heatLimiter;
       const double heat = energy_->stableDeltaT(heatLimiter);
       if (heat < stable) {
@@ -299,23 +300,72 @@ void CastingSolver::evolve(double deltaT) {
     }
     return;
   }
+  const bool heatThisStep = energy_ && heatStepsWithFlow(deltaT);
   // the first kicks with the rates of the current state, and the drift
   if (flow_) flow_->kickAndDrift(deltaT);
-  if (energy_) addWallTime(heatSeconds_, [&] { energy_->halfKick(deltaT); });
+  if (heatThisStep) addWallTime(heatSeconds_, [&] { energy_->halfKick(heatDeltaT_); });
   // the search at the new positions (nothing moves without a flow), the quantities models share
   if (flow_) {
     addWallTime(searchSeconds_, [&] { neighbourhood_->update(); });
     flow_->keepClearOfWalls();
-    if (exposedArea_) addWallTime(heatSeconds_, [&] { exposedArea_->compute(); });
+  }
+  if (heatThisStep && flow_ && exposedArea_) {
+    addWallTime(heatSeconds_, [&] { exposedArea_->compute(); });
   }
   // the rates at the new positions and the second kicks
   if (flow_) flow_->computeRatesAndKick(deltaT);
-  if (energy_) {
+  if (heatThisStep) {
     addWallTime(heatSeconds_, [&] {
       energy_->computeRates();
-      energy_->halfKick(deltaT);
+      energy_->halfKick(heatDeltaT_);
     });
+    ++heatSteps_;
   }
+}
+
+// A stop between heat steps (stopAt writeNow) writes the heat brought up to the time written.
+void CastingSolver::flushPendingHeat() {
+  if (!energy_ || pendingHeatTime_ == 0) return;
+  heatDeltaT_ = pendingHeatTime_;
+  pendingHeatTime_ = 0;
+  addWallTime(heatSeconds_, [&] {
+    energy_->halfKick(heatDeltaT_);
+    if (exposedArea_) exposedArea_->compute();
+    energy_->computeRates();
+    energy_->halfKick(heatDeltaT_);
+  });
+  ++heatSteps_;
+}
+
+// Whether the heat paths run in this step, and over what time (heatDeltaT_). Without a flow,
+// or with `interval everyStep`, every step is a heat step of the step's length. Otherwise the
+// flow's steps (far shorter: acoustic, against the diffusion limit) add up until they reach
+// heatStepFraction of the heat's own stable step, and the heat then takes one step of their
+// sum at the positions of the end (the particles carry their u as they move; what lags is only
+// the exchange between them, by at most that sum). Every written time is a heat step, so that
+// a restart from it starts with nothing pending and reproduces the uninterrupted run.
+//
+// The fraction, measured (a half-full sphere of AC4CH at 900 K sloshing in an iron mold at
+// 300 K, conduction and contact, 0.2 s, 2,621 flow steps; the largest change of T from the
+// start is 16.4 K in the metal, 18.3 K in the mold): against heat at every flow step, the
+// largest difference of a metal particle's T at 0.2 s is 1.20 / 0.61 / 0.13 / 0.015 K (mean
+// 0.15 / 0.074 / 0.017 / 0.0025 K) with the fraction 0.5 / 0.25 / 0.1 / 0.03, in 10 / 20 /
+// 50 / 141 heat steps: the error of the big steps is first order in their length, the steep
+// start of a contact being what they resolve worst. 0.1 costs 50 heat steps instead of 2,621
+// (0.25 s of heat in a 21 s run, against 13.4 s of a 35 s run).
+bool CastingSolver::heatStepsWithFlow(double deltaT) {
+  constexpr double heatStepFraction = 0.1;
+  if (!flow_ || heatSetup_.heatEveryFlowStep) {
+    heatDeltaT_ = deltaT;
+    return true;
+  }
+  pendingHeatTime_ += deltaT;
+  std::string limiter;
+  const double due = heatStepFraction * energy_->stableDeltaT(limiter);
+  if (pendingHeatTime_ < due && !time_.writeTime() && time_.progress() < 1) return false;
+  heatDeltaT_ = pendingHeatTime_;
+  pendingHeatTime_ = 0;
+  return true;
 }
 
 void CastingSolver::writeResults() {
@@ -358,6 +408,13 @@ void CastingSolver::logStep(bool printBlock) {
 void CastingSolver::logHeat() {
   std::ostringstream line;
   line.precision(6);
+  if (flow_) {
+    std::string limiter;
+    const double limit = energy_->stableDeltaT(limiter);
+    line << "Heat: " << heatSteps_ << " heat steps in " << stepsTaken_ << " steps ("
+         << (heatSetup_.heatEveryFlowStep ? "every flow step" : "interval auto") << ", the last "
+         << heatDeltaT_ << " s long; " << limiter << " limit " << limit << " s)\n";
+  }
   for (const HeatCloud& heat : energy_->context().clouds) {
     if (heat.fixedTemperature) continue;
     const auto& T = heat.cloud->scalarField("T");
@@ -575,7 +632,10 @@ void CastingSolver::run() {
   }
   logRereadMessage();
   info() << "Stopping: " << time_.stopReason() << " at time " << time_.timeName() << '\n';
-  if (time_.finalWriteWanted()) addWallTime(outputSeconds_, [&] { writeResults(); });
+  if (time_.finalWriteWanted()) {
+    flushPendingHeat();
+    addWallTime(outputSeconds_, [&] { writeResults(); });
+  }
   logTimeSpent();
   info() << clock_.timesLine() << "\n\nEnd\n\n";
 }

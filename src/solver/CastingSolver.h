@@ -50,6 +50,8 @@ class CastingSolver {
   ParticleCloud& cloudNamed(const std::string& name);  // throws, listing the clouds present
   double stableDeltaT(std::string& limiter) const;
   void evolve(double deltaT);
+  bool heatStepsWithFlow(double deltaT);
+  void flushPendingHeat();
   void writeResults();
   void logStep(bool printBlock);
   void logRereadMessage();
@@ -91,6 +93,9 @@ class CastingSolver {
   std::vector<ParticleCloud> lastGood_;
   std::vector<ParticleCloud*> evolving_;
   double searchSeconds_ = 0, heatSeconds_ = 0;
+  double pendingHeatTime_ = 0;  // flow time since the last heat step (interval auto)
+  double heatDeltaT_ = 0;       // the length of this step's heat step
+  long heatSteps_ = 0;
   HealthSettings health_;
   HealthWarnings warnings_;
   double meanStableDeltaT_ = 0;  // running mean of the models' stable step

@@ -39,7 +39,7 @@ struct FlowSetup {
   FlowSettings settings;
   std::optional<TemperatureTable> restDensity;  // rho_s(T), or a constant
   std::optional<TemperatureTable> viscosity;    // dynamic mu(T), log-linear, or a constant
-  SourceLocation supportRadiusAt;  // for the check of h against the fluid's spacing
+  SourceLocation supportRadiusAt;               // for the check of h against the fluid's spacing
 };
 
 // periodic { x (0 0.2); } of constant/physicsModels: each axis named with its interval
@@ -51,10 +51,10 @@ FlowSetup readFlowSetup(const CaseFolder& caseFolder, const Vector& gravity);
 
 // Gives the fluid cloud the fields the flow needs that the start time lacks: restDensity and
 // viscosity (rho_s and mu, at each particle's T where they are tables: the cloud must then
-// have T), rho (rho_s), mass (rho volume). Returns what it added, for the log. Until the
-// thermal models move T, rho_s and mu stay what they were at the start. The cloud must have
-// the attribute spacing (dx), with supportRadius/spacing in [1.2, 6]. (The reader, VtpCloud.h, has refused
-// non-positive rho, mass, volume and viscosity already.)
+// have T), rho (rho_s), mass (rho volume). Returns what it added, for the log. rho_s and mu
+// keep these start values while the heat moves T (they will follow T with solidification). The cloud must have
+// the attribute spacing (dx), with supportRadius/spacing in [1.2, 6]. (The reader, VtpCloud.h, has
+// refused non-positive rho, mass, volume and viscosity already.)
 std::vector<std::string> prepareFluidFields(const FlowSetup& setup, ParticleCloud& fluid);
 
 // The pressure the flow starts `fluid` with: eq. (3), p = c^2 (rho - rho_s), on the fields

@@ -51,6 +51,8 @@ HeatSetup readHeatSetup(const CaseFolder& caseFolder) {
       setup.fixedTemperature[cloud] = T;
     }
   }
+  setup.heatEveryFlowStep =
+      heat.getChoiceOrDefault("interval", {"auto", "everyStep"}, "auto") == "everyStep";
   std::optional<Dictionary> mapping;
   if (models.found("materials")) mapping = models.subDict("materials");
   for (const std::string& cloud : setup.clouds) {

@@ -25,6 +25,7 @@ namespace sphcast {
 //                                             // or mold clouds of constant/particles (then
 //                                             // written to every time folder from now on)
 //       fixedTemperature { mold 300; }        // optional: clouds held at T (K)
+//       interval         auto;                // optional: auto | everyStep (see below)
 //       conduction on;  moldContact {...}  atmosphere {...}  radiation {...}
 //   }
 //
@@ -37,6 +38,10 @@ struct HeatSetup {
   std::map<std::string, double> fixedTemperature;  // cloud -> K
   std::map<std::string, std::string> materialOfCloud;
   std::map<std::string, SourceLocation> materialNamedAt;  // where each cloud's material is named
+  // How often the heat paths run while a flow steps: every flow step, or (auto) in steps of
+  // their own once the flow's steps add up to half of the heat's stable step, and at every
+  // write (CastingSolver::evolve).
+  bool heatEveryFlowStep = false;
   int dimension = 3;
   Real supportRadius = 0;
   PeriodicBox periodic;  // physicsModels' periodic axes (the flow's when there is one)

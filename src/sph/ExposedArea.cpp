@@ -109,38 +109,49 @@ void ExposedArea::computeIn() {
   const Real areaFactor = areaFactor_;
   constexpr Real areaExponent = Real(Dim - 1) / Real(Dim);
   const bool gradientForm = form_ == ExposedAreaForm::gradient;
-  std::vector<std::vector<Real>> coveringVolume;
-  for (const ParticleCloud* other : covering_) coveringVolume.push_back(particleVolumes(*other));
-  for (ParticleCloud* cloud : exposed_) {
-    const std::vector<Real> volume = particleVolumes(*cloud);
-    const auto& x = cloud->positions();
-    auto& granularity = cloud->scalarField("granularity");
-    auto& area = cloud->scalarField("exposedArea");
-    std::vector<const NeighbourList*> lists;
-    for (const ParticleCloud* other : covering_)
-      lists.push_back(&neighbourhood_.pairs(*cloud, *other));
+  coveringVolume_.resize(covering_.size());
+  for (std::size_t c = 0; c < covering_.size(); ++c) {
+    coveringVolume_[c] = particleVolumes(*covering_[c]);
+  }
+  // the minimum image only when an axis is periodic, chosen once per pass
+  auto passWith = [&](auto separation) {
+    for (ParticleCloud* cloud : exposed_) {
+      const std::vector<Real> volume = particleVolumes(*cloud);
+      const auto& x = cloud->positions();
+      auto& granularity = cloud->scalarField("granularity");
+      auto& area = cloud->scalarField("exposedArea");
+      std::vector<const NeighbourList*> lists;
+      for (const ParticleCloud* other : covering_) {
+        lists.push_back(&neighbourhood_.pairs(*cloud, *other));
+      }
 #pragma omp parallel for schedule(static)
-    for (std::size_t i = 0; i < x.size(); ++i) {
-      Real s = volume[i] * selfKernel;
-      Vector gradient = Vector::Zero();
-      for (std::size_t c = 0; c < covering_.size(); ++c) {
-        const auto& otherX = covering_[c]->positions();
-        const Real* otherVolume = coveringVolume[c].data();
-        for (const std::uint32_t j : lists[c]->of(i)) {
-          const Vector xij = periodic.separation(x[i], otherX[j]);
-          const Real r = xij.norm();
-          s += otherVolume[j] * kernel.value(r);
-          gradient += otherVolume[j] * kernel.gradient(xij, r);
+      for (std::size_t i = 0; i < x.size(); ++i) {
+        Real s = volume[i] * selfKernel;
+        Vector gradient = Vector::Zero();
+        for (std::size_t c = 0; c < covering_.size(); ++c) {
+          const Vector* otherX = covering_[c]->positions().data();
+          const Real* otherVolume = coveringVolume_[c].data();
+          for (const std::uint32_t j : lists[c]->of(i)) {
+            const Vector xij = separation(x[i], otherX[j]);
+            const Real r = xij.norm();
+            s += otherVolume[j] * kernel.value(r);
+            gradient += (otherVolume[j] * kernel.derivativeOverDistance(r)) * xij;
+          }
+        }
+        granularity[i] = s;
+        if (gradientForm) {
+          area[i] = areaFactor * volume[i] * gradient.norm();
+        } else {
+          const Real q = Real(1) - volume[i] * selfKernel;
+          area[i] = areaFactor * exposureWeight(Real(1) - s, q) * std::pow(volume[i], areaExponent);
         }
       }
-      granularity[i] = s;
-      if (gradientForm) {
-        area[i] = areaFactor * volume[i] * gradient.norm();
-      } else {
-        const Real q = Real(1) - volume[i] * selfKernel;
-        area[i] = areaFactor * exposureWeight(Real(1) - s, q) * std::pow(volume[i], areaExponent);
-      }
     }
+  };
+  if (periodic.anyPeriodic()) {
+    passWith([periodic](const Vector& a, const Vector& b) { return periodic.separation(a, b); });
+  } else {
+    passWith([](const Vector& a, const Vector& b) { return Vector(a - b); });
   }
 }
 

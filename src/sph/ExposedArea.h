@@ -50,7 +50,8 @@ class ExposedArea {
               std::vector<ParticleCloud*> exposed, std::vector<const ParticleCloud*> covering,
               Neighbourhood& neighbourhood);
 
-  // s_i and A_i of every exposed particle, for the neighbourhood's last update.
+  // s_i and A_i of every exposed particle, for the neighbourhood's last update (particles that
+  // do not move keep theirs: the solver computes it once without a flow).
   void compute();
 
   Real areaFactor() const { return areaFactor_; }
@@ -69,6 +70,7 @@ class ExposedArea {
   Real areaFactor_;
   std::vector<ParticleCloud*> exposed_;
   std::vector<const ParticleCloud*> covering_;
+  std::vector<std::vector<Real>> coveringVolume_;  // V of each covering cloud, every pass
   const Neighbourhood& neighbourhood_;
 };
 

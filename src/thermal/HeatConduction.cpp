@@ -80,47 +80,63 @@ void HeatConduction::addRatesIn() {
     const Vector* x;
     const Real* T;
     const Real* kappa;
-    const Real* mass;
-    const Real* rho;
+    const Real* volume;
   };
+  // V = m / rho once per particle, not once per pair
+  volumes_.resize(context_.clouds.size());
   std::vector<Source> sources;
-  for (const HeatCloud& heat : context_.clouds) {
-    const ParticleCloud& cloud = *heat.cloud;
-    sources.push_back({cloud.positions().data(), cloud.scalarField("T").data(),
-                       cloud.scalarField("conductivity").data(), cloud.scalarField("mass").data(),
-                       cloud.scalarField("rho").data()});
-  }
-  for (std::size_t a = 0; a < context_.clouds.size(); ++a) {
-    ParticleCloud& target = *context_.clouds[a].cloud;
-    Real* energyRate = target.scalarField("energyRate").data();
-    std::vector<std::pair<const NeighbourList*, const Source*>> lists;
-    for (std::size_t b = 0; b < context_.clouds.size(); ++b) {
-      if (!conducts(a, b)) continue;
-      lists.emplace_back(&context_.neighbourhood->pairs(target, *context_.clouds[b].cloud),
-                         &sources[b]);
-    }
-    const Source self = sources[a];
-    const std::size_t count = target.size();
+  for (std::size_t c = 0; c < context_.clouds.size(); ++c) {
+    const ParticleCloud& cloud = *context_.clouds[c].cloud;
+    const auto& mass = cloud.scalarField("mass");
+    const auto& rho = cloud.scalarField("rho");
+    std::vector<Real>& volume = volumes_[c];
+    volume.resize(cloud.size());
 #pragma omp parallel for schedule(static)
-    for (std::size_t i = 0; i < count; ++i) {
-      const Vector xi = self.x[i];
-      const Real Ti = self.T[i];
-      const Real kappaI = self.kappa[i];
-      Real sum = 0;
-      for (const auto& [list, source] : lists) {
-        for (const std::uint32_t j : list->of(i)) {
-          const Vector xij = periodic.separation(xi, source->x[j]);
-          const Real rSquared = xij.squaredNorm();
-          const Real r = std::sqrt(rSquared);
-          // x_ij . grad_i W = r dW/dr
-          const Real F = kernel.derivativeOverDistance(r) * rSquared / (rSquared + etaSquared);
-          const Real kappaJ = source->kappa[j];
-          const Real pairKappa = Real(4) * kappaI * kappaJ / (kappaI + kappaJ);
-          sum += (source->mass[j] / source->rho[j]) * pairKappa * (Ti - source->T[j]) * F;
-        }
+    for (std::size_t i = 0; i < volume.size(); ++i) volume[i] = mass[i] / rho[i];
+    sources.push_back({cloud.positions().data(), cloud.scalarField("T").data(),
+                       cloud.scalarField("conductivity").data(), volume.data()});
+  }
+  // the minimum image only when an axis is periodic, chosen once per pass (as the flow does)
+  auto passWith = [&](auto separation) {
+    for (std::size_t a = 0; a < context_.clouds.size(); ++a) {
+      ParticleCloud& target = *context_.clouds[a].cloud;
+      Real* energyRate = target.scalarField("energyRate").data();
+      const Real* rho = target.scalarField("rho").data();
+      std::vector<std::pair<const NeighbourList*, const Source*>> lists;
+      for (std::size_t b = 0; b < context_.clouds.size(); ++b) {
+        if (!conducts(a, b)) continue;
+        lists.emplace_back(&context_.neighbourhood->pairs(target, *context_.clouds[b].cloud),
+                           &sources[b]);
       }
-      energyRate[i] += sum / self.rho[i];
+      const Source self = sources[a];
+      const std::size_t count = target.size();
+#pragma omp parallel for schedule(static)
+      for (std::size_t i = 0; i < count; ++i) {
+        const Vector xi = self.x[i];
+        const Real Ti = self.T[i];
+        const Real kappaI = self.kappa[i];
+        Real sum = 0;
+        for (const auto& [list, source] : lists) {
+          for (const std::uint32_t j : list->of(i)) {
+            const Vector xij = separation(xi, source->x[j]);
+            const Real rSquared = xij.squaredNorm();
+            const Real kappaJ = source->kappa[j];
+            // V_j 4 kappa_i kappa_j / (kappa_i + kappa_j) (T_i - T_j) (x_ij . grad_i W) /
+            // (r^2 + eta^2) with x_ij . grad_i W = r^2 (dW/dr) / r, one division per pair
+            const Real numerator = source->volume[j] * Real(4) * kappaI * kappaJ *
+                                   (Ti - source->T[j]) *
+                                   kernel.derivativeOverDistance(std::sqrt(rSquared)) * rSquared;
+            sum += numerator / ((kappaI + kappaJ) * (rSquared + etaSquared));
+          }
+        }
+        energyRate[i] += sum / rho[i];
+      }
     }
+  };
+  if (periodic.anyPeriodic()) {
+    passWith([periodic](const Vector& a, const Vector& b) { return periodic.separation(a, b); });
+  } else {
+    passWith([](const Vector& a, const Vector& b) { return Vector(a - b); });
   }
 }
 

@@ -47,6 +47,7 @@ class HeatConduction : public HeatTransferModel {
 
   const HeatTransferContext& context_;
   std::set<std::pair<std::string, std::string>> contactPairs_;
+  std::vector<std::vector<Real>> volumes_;  // m / rho of each cloud, refreshed every pass
   double stableDeltaT_;
 };
 

@@ -32,8 +32,8 @@ const Dictionary& settingsOf(const Dictionary& heatTransfer, const std::string& 
 }  // namespace
 
 std::vector<std::string> heatTransferKeys() {
-  return {"clouds",     "fixedTemperature", "conduction", "moldContact",
-          "atmosphere", "radiation",        "exposedArea"};
+  return {"clouds",     "fixedTemperature", "conduction",  "moldContact",
+          "atmosphere", "radiation",        "exposedArea", "interval"};
 }
 
 std::vector<std::unique_ptr<HeatTransferModel>> buildHeatTransferPaths(

@@ -21,6 +21,8 @@ namespace sphcast {
 //       radiation        { T 300; materials (iron); }          // eq. (16)   RadiationTransfer.h
 //       exposedArea      gradient;    // optional: gradient (default) | granularity (eq. (11)),
 //                                     // the A_i of atmosphere and radiation (sph/ExposedArea.h)
+//       interval         auto;        // optional, with a flow: auto (default) | everyStep
+//                                     // (the solver reads it: solver/HeatSetup.h)
 //   }
 //
 // A path is built when its entry is a sub-dictionary or `on`; `off` or absent: never built,

@@ -1,8 +1,9 @@
 // The heat transfer of a casting step, 3D, h = 3 dx (~110 neighbours): an AC4CH-like block in
 // an iron cup (conduction in both, contact between them, air and radiation on the exposed
 // faces), at 1e4..1e5 metal particles.
-//   HeatStep/<paths>: one step of the energy equation alone (halfKick, exposed area when a
-//     path needs it, rates, halfKick), particles at rest: the cost of a thermal-only case.
+//   HeatStep/<paths>: one step of the energy equation alone (halfKick, rates, halfKick),
+//     particles at rest, as the solver steps a thermal-only case (the exposed area, computed
+//     once, does not change).
 //   FlowAndHeatStep: the solver's step order (CastingSolver::evolve) for a flow of the block
 //     (periodic, streaming as in flowStepBenchmark) with conduction in it: what heat adds to
 //     the flow's step, against FlowStep/riemann of flowStepBenchmark.
@@ -106,7 +107,6 @@ void HeatStep(benchmark::State& state, const char* paths) {
   const double dt = heat.energy->stableDeltaT(limiter);
   for (auto _ : state) {
     heat.energy->halfKick(dt);
-    if (heat.area) heat.area->compute();
     heat.energy->computeRates();
     heat.energy->halfKick(dt);
   }
@@ -181,5 +181,16 @@ void FlowAndHeatStep(benchmark::State& state) {
   state.counters["particles"] = double(fluid.size());
 }
 BENCHMARK(FlowAndHeatStep)->Arg(10'000)->Arg(100'000)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+// The exposed area pass alone (s_i, grad s_i, A_i over the metal and the cup), which a step
+// with a flow and air or radiation adds.
+void ExposedAreaPass(benchmark::State& state) {
+  const int perSide = static_cast<int>(std::lround(std::cbrt(double(state.range(0)))));
+  HeatCase heat(perSide, "atmosphere { T 300; coefficients ((metal 20) (iron 20)); }");
+  for (auto _ : state) heat.area->compute();
+  state.SetItemsProcessed(state.iterations() *
+                          static_cast<long>(heat.metal.size() + heat.mold.size()));
+}
+BENCHMARK(ExposedAreaPass)->Arg(10'000)->Arg(100'000)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 }  // namespace
