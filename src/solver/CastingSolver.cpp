@@ -183,11 +183,15 @@ void CastingSolver::setUpHeat() {
   double spacing = 0;
   for (const std::string& name : heatSetup_.clouds) {
     ParticleCloud& cloud = cloudNamed(name);
-    HeatCloud heat{&cloud, &heatSetup_.materialOf(name)};
+    HeatCloud heat{&cloud, &heatSetup_.materialOf(name), false, 0, {}};
     if (const auto held = heatSetup_.fixedTemperature.find(name);
         held != heatSetup_.fixedTemperature.end()) {
       heat.fixedTemperature = true;
       heat.heldTemperature = held->second;
+    }
+    if (const auto patches = heatSetup_.heldPatches.find(name);
+        patches != heatSetup_.heldPatches.end()) {
+      heat.heldPatches = patches->second;
     }
     const auto attribute = cloud.attributes().find("spacing");
     if (attribute == cloud.attributes().end() || !(attribute->second > 0)) {
@@ -223,6 +227,10 @@ void CastingSolver::setUpHeat() {
   for (const HeatCloud& heat : energy_->context().clouds) {
     info() << ' ' << heat.cloud->name() << " (" << heat.material->name;
     if (heat.fixedTemperature) info() << ", held at " << heat.heldTemperature << " K";
+    for (std::size_t p = 0; p < heat.heldPatches.size(); ++p) {
+      info() << ", patch " << heatSetup_.heldPatchNames.at(heat.cloud->name())[p] << " held at "
+             << heat.heldPatches[p].second << " K";
+    }
     info() << ')';
   }
   info() << '\n';

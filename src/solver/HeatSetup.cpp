@@ -1,5 +1,6 @@
 #include "solver/HeatSetup.h"
 
+#include <cstdint>
 #include <filesystem>
 #include <set>
 
@@ -39,16 +40,36 @@ HeatSetup readHeatSetup(const CaseFolder& caseFolder) {
     }
   }
   if (heat.found("fixedTemperature")) {
-    const Dictionary& fixed = heat.subDict("fixedTemperature");
-    fixed.checkKeys(setup.clouds);  // "did you mean", listing the heat clouds
-    for (const std::string& cloud : fixed.keys()) {
-      const double T = fixed.get<double>(cloud, temperature);
-      if (!(T > 0) || !std::isfinite(T)) {
-        throw DictionaryError(fixed.location(cloud), "the fixed temperature of '" + cloud +
-                                                         "' in " + fixed.name() +
-                                                         " must be positive (K)");
+    // a key is a heat cloud (held whole) or a patch of one, as constant/particles/patches
+    // numbers the mold's patches (particleizeMold writes it)
+    std::map<std::string, std::pair<std::string, std::int64_t>> patchOf;  // name -> (cloud, id)
+    const auto patchesFile = caseFolder.constant() / "particles" / "patches";
+    if (std::filesystem::exists(patchesFile)) {
+      const Dictionary patches = Dictionary::read(patchesFile);
+      for (const std::string& name : patches.keys()) {
+        if (!patches.isDict(name)) continue;
+        const Dictionary& patch = patches.subDict(name);
+        const auto cloud = patch.get<std::string>("cloud");
+        if (unique.contains(cloud)) patchOf[name] = {cloud, patch.get<std::int64_t>("id")};
       }
-      setup.fixedTemperature[cloud] = T;
+    }
+    const Dictionary& fixed = heat.subDict("fixedTemperature");
+    std::vector<std::string> valid = setup.clouds;
+    for (const auto& entry : patchOf) valid.push_back(entry.first);
+    fixed.checkKeys(valid);  // "did you mean", listing the heat clouds and their patches
+    for (const std::string& key : fixed.keys()) {
+      const double T = fixed.get<double>(key, temperature);
+      if (!(T > 0) || !std::isfinite(T)) {
+        throw DictionaryError(fixed.location(key), "the fixed temperature of '" + key + "' in " +
+                                                       fixed.name() + " must be positive (K)");
+      }
+      if (unique.contains(key)) {
+        setup.fixedTemperature[key] = T;
+      } else {
+        const auto& [cloud, id] = patchOf.at(key);
+        setup.heldPatches[cloud].emplace_back(id, T);
+        setup.heldPatchNames[cloud].push_back(key);
+      }
     }
   }
   setup.heatEveryFlowStep =

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cstdint>
 #include <map>
 #include <optional>
 #include <string>
@@ -24,7 +25,8 @@ namespace sphcast {
 //       clouds           (metal mold);        // the clouds that carry heat: of the start time,
 //                                             // or mold clouds of constant/particles (then
 //                                             // written to every time folder from now on)
-//       fixedTemperature { mold 300; }        // optional: clouds held at T (K)
+//       fixedTemperature { mold 300; }        // optional: clouds, or patches of mold clouds
+//                                             // (constant/particles/patches), held at T (K)
 //       interval         auto;                // optional: auto | everyStep (see below)
 //       conduction on;  moldContact {...}  atmosphere {...}  radiation {...}
 //   }
@@ -36,6 +38,9 @@ struct HeatSetup {
   std::vector<std::string> clouds;
   SourceLocation cloudsAt;
   std::map<std::string, double> fixedTemperature;  // cloud -> K
+  // cloud -> (patch id, K) of its held patches, and their names for the log
+  std::map<std::string, std::vector<std::pair<std::int64_t, double>>> heldPatches;
+  std::map<std::string, std::vector<std::string>> heldPatchNames;
   std::map<std::string, std::string> materialOfCloud;
   std::map<std::string, SourceLocation> materialNamedAt;  // where each cloud's material is named
   // How often the heat paths run while a flow steps: every flow step, or (auto) in steps of

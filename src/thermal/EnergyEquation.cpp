@@ -46,14 +46,34 @@ void EnergyEquation::prepareFields(HeatCloud& heat) {
   ParticleCloud& cloud = *heat.cloud;
   const Material& material = *heat.material;
   const InternalEnergyTable& energy = material.requireInternalEnergy("heatTransfer");
-  if (heat.fixedTemperature) {
-    auto& T = cloud.addScalarField("T");
-    for (Real& value : T) value = static_cast<Real>(heat.heldTemperature);
-  } else if (!cloud.hasScalarField("T")) {
+  if (heat.holdsAny()) {
+    // which particles are held, and at what (0: free)
+    std::vector<Real> held(cloud.size(), Real(0));
+    if (heat.fixedTemperature) {
+      for (Real& value : held) value = static_cast<Real>(heat.heldTemperature);
+    } else {
+      const auto& patch = cloud.idField("patch");  // throws, listing the cloud's fields
+      for (std::size_t i = 0; i < held.size(); ++i) {
+        for (const auto& [id, T] : heat.heldPatches) {
+          if (patch[i] == id) held[i] = static_cast<Real>(T);
+        }
+      }
+    }
+    cloud.addScalarField("heldTemperature") = held;
+    if (heat.fixedTemperature) cloud.addScalarField("T");
+  }
+  if (!cloud.hasScalarField("T")) {
     throw Error("heat cloud '" + cloud.name() +
                 "' has no temperature field T: set it with setCastFields (fields { T ...; }, or "
                 "setFields for a mold cloud), or hold the cloud with heatTransfer "
                 "fixedTemperature");
+  }
+  if (heat.holdsAny()) {
+    auto& T = cloud.scalarField("T");
+    const auto& held = cloud.scalarField("heldTemperature");
+    for (std::size_t i = 0; i < T.size(); ++i) {
+      if (held[i] > 0) T[i] = held[i];
+    }
   }
   const auto& T = cloud.scalarField("T");
   for (std::size_t i = 0; i < T.size(); ++i) {
@@ -109,8 +129,11 @@ void EnergyEquation::kickEnergy(double deltaT) {
     if (heat.fixedTemperature) continue;
     auto& u = heat.cloud->scalarField("u");
     const auto& rate = heat.cloud->scalarField("energyRate");
+    const Real* held = heldTemperatures(heat);
 #pragma omp parallel for schedule(static)
-    for (std::size_t i = 0; i < u.size(); ++i) u[i] += halfDt * rate[i];
+    for (std::size_t i = 0; i < u.size(); ++i) {
+      if (!held || held[i] == 0) u[i] += halfDt * rate[i];
+    }
   }
   accountLosses(0.5 * deltaT);
 }
@@ -142,11 +165,14 @@ void EnergyEquation::computeRates() {
   // The heat the held particles take in left the system through them (summed in particle
   // order: the same bits on any thread count).
   for (HeatCloud& heat : context_.clouds) {
-    if (!heat.fixedTemperature) continue;
+    const Real* held = heldTemperatures(heat);
+    if (!held) continue;
     const auto& mass = heat.cloud->scalarField("mass");
     const auto& rate = heat.cloud->scalarField("energyRate");
     double absorbed = 0;
-    for (std::size_t i = 0; i < rate.size(); ++i) absorbed += double(mass[i]) * double(rate[i]);
+    for (std::size_t i = 0; i < rate.size(); ++i) {
+      if (held[i] > 0) absorbed += double(mass[i]) * double(rate[i]);
+    }
     heat.cloud->attributes()[rateKey("fixedTemperature")] = absorbed;
   }
 }
@@ -161,10 +187,10 @@ void EnergyEquation::updateTemperatures() {
     const InternalEnergyTable& energy = *material.internalEnergy;
     const TemperatureTable* conductivity =
         material.conductivity ? &*material.conductivity : nullptr;
-    const bool held = heat.fixedTemperature;
+    const Real* held = heldTemperatures(heat);
 #pragma omp parallel for schedule(static)
     for (std::size_t i = 0; i < T.size(); ++i) {
-      if (!held) T[i] = energy.temperature(u[i]);
+      if (!held || held[i] == 0) T[i] = energy.temperature(u[i]);
       kappa[i] =
           conductivity ? static_cast<Real>((*conductivity)(static_cast<double>(T[i]))) : Real(0);
     }

@@ -1,7 +1,9 @@
 #pragma once
 
+#include <cstdint>
 #include <limits>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "materials/Material.h"
@@ -11,15 +13,26 @@
 namespace sphcast {
 
 // A cloud that carries heat: its material and, for a Dirichlet boundary (a mold surface held
-// at 300 K), the temperature it is held at. Fields (EnergyEquation.h): T (K), u (specific
-// internal energy, J/kg), energyRate (du/dt, W/kg), conductivity (kappa(T), W/m/K), rho and
-// mass (a mold's from its material's density and its particles' volume).
+// at 300 K), the temperature it or some of its patches are held at. Fields (EnergyEquation.h):
+// T (K), u (specific internal energy, J/kg), energyRate (du/dt, W/kg), conductivity (kappa(T),
+// W/m/K), rho and mass (a mold's from its material's density and its particles' volume), and
+// `heldTemperature` (K; 0 for a free particle) where any particle is held.
 struct HeatCloud {
   ParticleCloud* cloud;
   const Material* material;
-  bool fixedTemperature = false;  // T held; the heat it takes in is counted as leaving
+  bool fixedTemperature = false;  // the whole cloud held; the heat it takes in counts as lost
   double heldTemperature = 0;     // K, when fixedTemperature
+  // Patches of a mold cloud held at a temperature: (the value of its particles' `patch` field,
+  // as constant/particles/patches numbers it, T in K).
+  std::vector<std::pair<std::int64_t, double>> heldPatches;
+  bool holdsAny() const { return fixedTemperature || !heldPatches.empty(); }
 };
+
+// 0 for a free particle, else the temperature it is held at: the `heldTemperature` field of a
+// cloud that holds any, else null (no particle held).
+inline const Real* heldTemperatures(const HeatCloud& heat) {
+  return heat.holdsAny() ? heat.cloud->scalarField("heldTemperature").data() : nullptr;
+}
 
 // What every heat path sees: the heat clouds, the shared neighbourhood, the kernel.
 struct HeatTransferContext {

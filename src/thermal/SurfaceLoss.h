@@ -12,7 +12,8 @@ namespace sphcast {
 // The pass that atmosphere (15) and radiation (16) share: each particle of a cloud with a
 // coefficient loses heat through its exposed area A_i (field exposedArea) at the rate
 // coefficient * A_i * flux(T_i) W. Adds -that / m_i to energyRate; returns the power of each
-// cloud (summed in particle order, so it does not depend on the thread count). Serial: one
+// cloud (summed in particle order, so it does not depend on the thread count); held particles
+// lose nothing (their T is the boundary's). Serial: one
 // multiply-add per surface particle, far below a pair pass.
 template <class Flux>
 std::vector<double> addSurfaceLoss(const HeatTransferContext& context,
@@ -26,8 +27,9 @@ std::vector<double> addSurfaceLoss(const HeatTransferContext& context,
     const auto& T = cloud.scalarField("T");
     const auto& mass = cloud.scalarField("mass");
     auto& energyRate = cloud.scalarField("energyRate");
+    const Real* held = heldTemperatures(heat);
     for (std::size_t i = 0; i < cloud.size(); ++i) {
-      if (area[i] == 0) continue;
+      if (area[i] == 0 || (held && held[i] > 0)) continue;
       const double power = coefficient[c] * area[i] * flux(static_cast<double>(T[i]));
       energyRate[i] -= static_cast<Real>(power / mass[i]);
       total[c] += power;
@@ -51,7 +53,9 @@ double surfaceLossStableDeltaT(const HeatTransferContext& context,
     const auto& T = cloud.scalarField("T");
     const auto& mass = cloud.scalarField("mass");
     const double heatCapacity = heat.material->internalEnergy->smallestSpecificHeat();
+    const Real* held = heldTemperatures(heat);
     for (std::size_t i = 0; i < cloud.size(); ++i) {
+      if (held && held[i] > 0) continue;
       const double slope = coefficient[c] * area[i] * fluxSlope(static_cast<double>(T[i]));
       if (slope > 0) stable = std::min(stable, 0.25 * mass[i] * heatCapacity / slope);
     }

@@ -83,8 +83,8 @@ struct HeatCase {
     context.supportRadius = 3 * dx;
     context.spacing = dx;
     context.neighbourhood = neighbourhood.get();
-    context.clouds = {{&metal, &library.get("metal", {}, "material")},
-                      {&mold, &library.get("iron", {}, "material")}};
+    context.clouds = {{&metal, &library.get("metal", {}, "material"), false, 0, {}},
+                      {&mold, &library.get("iron", {}, "material"), false, 0, {}}};
     energy = std::make_unique<sphcast::EnergyEquation>(
         context,
         sphcast::Dictionary::parse("h { clouds (metal mold); " + paths + " }").subDict("h"));
@@ -160,7 +160,7 @@ void FlowAndHeatStep(benchmark::State& state) {
   context.supportRadius = settings.supportRadius;
   context.spacing = dx;
   context.neighbourhood = &neighbourhood;
-  context.clouds = {{&fluid, &library.get("metal", {}, "material")}};
+  context.clouds = {{&fluid, &library.get("metal", {}, "material"), false, 0, {}}};
   sphcast::EnergyEquation energy(
       context, sphcast::Dictionary::parse("h { clouds (metal); conduction on; }").subDict("h"));
   neighbourhood.update();

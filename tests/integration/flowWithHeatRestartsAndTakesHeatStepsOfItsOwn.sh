@@ -73,4 +73,26 @@ for case in sys.argv[1:]:
     print(f"{case}: worst relative imbalance {worst:.2e}")
     assert worst < 1e-12, "the books do not close (round-off is about 1e-16 a step)"
 PY
-pass "flow with heat: interval auto within 5 % of every step, restart bit for bit, books closed"
+# a mold patch held at a temperature (the patch of constant/particles/patches), and one that
+# does not exist
+cd "$scratch/auto" || exit 1
+rm -rf 0.* postProcessing
+sed -i 's/    clouds      (metal mold);/    clouds (metal mold); fixedTemperature { moldWall 300; }/' constant/physicsModels
+setEntry system/controlDict endTime 0.02
+sphCastFoam > log.held 2>&1 || fail "run with a held patch"
+grep -q "patch moldWall held at 300 K" log.held || fail "the log does not name the held patch"
+/usr/bin/python3 - <<'PY' || fail "the held patch moved"
+import vtk
+reader = vtk.vtkXMLPolyDataReader()
+reader.SetFileName("0.02/mold.vtp")
+reader.Update()
+T = reader.GetOutput().GetPointData().GetArray("T")
+values = {T.GetTuple1(i) for i in range(T.GetNumberOfTuples())}
+assert values == {300.0}, f"held mold temperatures {sorted(values)[:3]}..."
+PY
+rm -rf 0.* postProcessing
+sed -i 's/fixedTemperature { moldWall 300; }/fixedTemperature { moldWal 300; }/' constant/physicsModels
+if sphCastFoam > log.bad 2>&1; then fail "an unknown held patch ran"; fi
+grep -q "physicsModels:.*unknown key 'moldWal'.*did you mean 'moldWall'" log.bad ||
+    { cat log.bad >&2; fail "no clear error for an unknown held patch"; }
+pass "flow with heat: interval auto within 5 % of every step, restart bit for bit, books closed, held patch"

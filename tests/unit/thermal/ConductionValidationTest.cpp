@@ -187,6 +187,49 @@ TEST(ConductionValidationTest, ClosedSystemKeepsItsEnergyToRoundOff) {
   EXPECT_LT(std::abs(after - before) / before, 1e-12);
 }
 
+// A mold cloud held by patches (its `patch` field, as particleizeMold numbers them) is the same
+// boundary as clouds held whole: the slab between a left patch at 300 K and a right patch at
+// 350 K of one cloud against two held clouds; the held particles keep their temperature and the
+// heat they take in closes the books.
+TEST(ConductionValidationTest, HeldPatchesActAsHeldClouds) {
+  const int n = 20;
+  auto slab = [&](bool byPatch) {
+    ThermalRun run = strip(water);
+    run.add(latticeBlock("body", Vector(dx / 2, 0, 0), n - 1, across, 1, dx, 2, 400), "body");
+    ParticleCloud left = heldWall("left", 0, true, 4, 300);
+    ParticleCloud right = heldWall("right", Real(n * dx), false, 4, 350);
+    if (!byPatch) {
+      run.add(std::move(left), "body", true, 300);
+      run.add(std::move(right), "body", true, 350);
+      run.start("clouds (body left right); conduction on;");
+    } else {
+      for (auto& id : left.addIdField("patch")) id = 7;
+      for (auto& id : right.addIdField("patch")) id = 9;
+      left.append(right);
+      run.add(std::move(left), "body");  // held below, by patch
+      run.heat.back().heldPatches = {{7, 300.0}, {9, 350.0}};
+      run.start("clouds (body left); conduction on;");
+    }
+    run.advanceTo(0.1 * n * dx * n * dx / 1e-6);
+    return run;
+  };
+  ThermalRun wholes = slab(false);
+  ThermalRun patches = slab(true);
+  const auto& a = wholes.clouds.front().scalarField("T");
+  const auto& b = patches.clouds.front().scalarField("T");
+  ASSERT_EQ(a.size(), b.size());
+  for (std::size_t i = 0; i < a.size(); ++i) ASSERT_NEAR(a[i], b[i], 1e-9 * a[i]) << i;
+  const ParticleCloud& wall = patches.clouds[1];
+  for (std::size_t i = 0; i < wall.size(); ++i) {
+    ASSERT_EQ(wall.scalarField("T")[i], wall.idField("patch")[i] == 7 ? 300 : 350);
+  }
+  const double change = patches.internalEnergy(patches.clouds[0]) -
+                        patches.clouds[0].attributes().at("internalEnergyAtStart");
+  ASSERT_LT(change, -1) << "the body must have lost heat to mean anything";
+  EXPECT_NEAR(change + wall.attributes().at("heatLost.fixedTemperature"), 0,
+              1e-10 * std::abs(change));
+}
+
 TEST(ConductionValidationTest, SameBitsOnOneAndTwoThreads) {
   auto runWith = [](int threads) {
     omp_set_num_threads(threads);

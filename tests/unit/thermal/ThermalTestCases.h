@@ -82,8 +82,11 @@ struct ThermalRun {
   ParticleCloud& add(ParticleCloud cloud, const std::string& material, bool held = false,
                      double heldTemperature = 0) {
     clouds.push_back(std::move(cloud));
-    heat.push_back({&clouds.back(), &library.get(material, SourceLocation(), "material"), held,
-                    heldTemperature});
+    heat.push_back({&clouds.back(),
+                    &library.get(material, SourceLocation(), "material"),
+                    held,
+                    heldTemperature,
+                    {}});
     return clouds.back();
   }
 
