@@ -367,12 +367,15 @@ bool CastingSolver::heatStepsWithFlow(double deltaT) {
     heatDeltaT_ = deltaT;
     return true;
   }
+  if (heatStepDue_ == 0) {  // the first, or just after a heat step: the limit of that state
+    std::string limiter;
+    heatStepDue_ = heatStepFraction * energy_->stableDeltaT(limiter);
+  }
   pendingHeatTime_ += deltaT;
-  std::string limiter;
-  const double due = heatStepFraction * energy_->stableDeltaT(limiter);
-  if (pendingHeatTime_ < due && !time_.writeTime() && time_.progress() < 1) return false;
+  if (pendingHeatTime_ < heatStepDue_ && !time_.writeTime() && time_.progress() < 1) return false;
   heatDeltaT_ = pendingHeatTime_;
   pendingHeatTime_ = 0;
+  heatStepDue_ = 0;
   return true;
 }
 

@@ -95,6 +95,7 @@ class CastingSolver {
   double searchSeconds_ = 0, heatSeconds_ = 0;
   double pendingHeatTime_ = 0;  // flow time since the last heat step (interval auto)
   double heatDeltaT_ = 0;       // the length of this step's heat step
+  double heatStepDue_ = 0;      // when the pending time makes a heat step (0: to be computed)
   long heatSteps_ = 0;
   HealthSettings health_;
   HealthWarnings warnings_;
