@@ -85,7 +85,8 @@ void WeaklyCompressibleFlow::checkInput() {
   }
   if (settings_.dimension == 2) requirePlane();
   for (const ParticleCloud* wall : walls_) wallPressure_.emplace_back(wall->size(), Real(0));
-  restarted_ = fluid_.hasVectorField("acceleration") && fluid_.hasScalarField("densityRate");
+  const auto& restart = restartFields();  // acceleration (a vector), densityRate
+  restarted_ = fluid_.hasVectorField(restart[0]) && fluid_.hasScalarField(restart[1]);
   fluid_.addScalarField("p");
   fluid_.addVectorField("acceleration");
   fluid_.addScalarField("densityRate");
@@ -96,6 +97,11 @@ void WeaklyCompressibleFlow::checkInput() {
     neighbourhood_.requestPairs(fluid_, *wall);
     neighbourhood_.requestPairs(*wall, fluid_);
   }
+}
+
+const std::vector<std::string>& WeaklyCompressibleFlow::restartFields() {
+  static const std::vector<std::string> fields{"acceleration", "densityRate"};
+  return fields;
 }
 
 void WeaklyCompressibleFlow::start() {

@@ -82,6 +82,8 @@ class WeaklyCompressibleFlow {
 
   // The fluid came with the rates of its last step (a restart): start() keeps them.
   bool restarted() const { return restarted_; }
+  // The fields of the fluid a restart reads back instead of computing (p follows from rho).
+  static const std::vector<std::string>& restartFields();
   // The pressure and rates of the start state (after the first neighbourhood update).
   void start();
 

@@ -23,8 +23,9 @@ EnergyEquation::EnergyEquation(HeatTransferContext context, const Dictionary& he
   if (context_.clouds.empty()) throw Error("heatTransfer: no heat cloud");
   restarted_ = true;
   for (HeatCloud& heat : context_.clouds) {
-    const ParticleCloud& cloud = *heat.cloud;
-    restarted_ = restarted_ && cloud.hasScalarField("u") && cloud.hasScalarField("energyRate");
+    for (const std::string& field : restartFields()) {
+      restarted_ = restarted_ && heat.cloud->hasScalarField(field);
+    }
   }
   for (HeatCloud& heat : context_.clouds) prepareFields(heat);
   paths_ = buildHeatTransferPaths(context_, heatTransfer, needsExposedArea_);
@@ -41,6 +42,11 @@ EnergyEquation::EnergyEquation(HeatTransferContext context, const Dictionary& he
 }
 
 EnergyEquation::~EnergyEquation() = default;
+
+const std::vector<std::string>& EnergyEquation::restartFields() {
+  static const std::vector<std::string> fields{"u", "energyRate"};
+  return fields;
+}
 
 void EnergyEquation::prepareFields(HeatCloud& heat) {
   ParticleCloud& cloud = *heat.cloud;

@@ -49,6 +49,9 @@ class EnergyEquation {
   // unless the clouds came with them (a restart).
   void start();
   bool restarted() const { return restarted_; }
+  // The fields of a heat cloud a restart reads back instead of computing: T, conductivity,
+  // rho and mass follow from them or from the start (the accounts are cloud attributes).
+  static const std::vector<std::string>& restartFields();
 
   void halfKick(double deltaT);
   void computeRates();
