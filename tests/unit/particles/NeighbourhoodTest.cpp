@@ -1,0 +1,116 @@
+// The neighbourhood the models of a step share: one list per requested pair of clouds, equal to
+// a brute-force search; a moving cloud re-binned and reordered (its fields with it) at each
+// update, a fixed one never reordered; a list nobody asked for is an error naming the clouds.
+#include "particles/Neighbourhood.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "core/Error.h"
+
+namespace sphcast {
+namespace {
+
+ParticleCloud randomCloud(const std::string& name, std::size_t count, std::uint32_t seed) {
+  ParticleCloud cloud(name);
+  cloud.resize(count);
+  auto& label = cloud.addScalarField("label");  // follows its particle through reorders
+  std::mt19937 random(seed);
+  std::uniform_real_distribution<Real> unit(0, 1);
+  for (std::size_t i = 0; i < count; ++i) {
+    cloud.positions()[i] = Vector(unit(random), unit(random), unit(random));
+    label[i] = static_cast<Real>(i);
+  }
+  return cloud;
+}
+
+// The sorted neighbours in b of particle i of a, by brute force.
+std::vector<std::uint32_t> bruteForce(const ParticleCloud& a, std::size_t i, const ParticleCloud& b,
+                                      Real radius) {
+  std::vector<std::uint32_t> found;
+  for (std::size_t j = 0; j < b.size(); ++j) {
+    if (&a == &b && i == j) continue;
+    if ((a.positions()[i] - b.positions()[j]).norm() < radius) {
+      found.push_back(static_cast<std::uint32_t>(j));
+    }
+  }
+  return found;
+}
+
+void expectBruteForce(const Neighbourhood& neighbourhood, const ParticleCloud& a,
+                      const ParticleCloud& b) {
+  const NeighbourList& list = neighbourhood.pairs(a, b);
+  ASSERT_EQ(list.particleCount(), a.size());
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    std::vector<std::uint32_t> got(list.of(i).begin(), list.of(i).end());
+    std::sort(got.begin(), got.end());
+    ASSERT_EQ(got, bruteForce(a, i, b, neighbourhood.radius()))
+        << a.name() << " particle " << i << " among " << b.name();
+  }
+}
+
+TEST(NeighbourhoodTest, SharedListsMatchABruteForceSearchAfterEveryUpdate) {
+  ParticleCloud metal = randomCloud("metal", 600, 1);
+  ParticleCloud mold = randomCloud("mold", 400, 2);
+  const std::vector<Vector> moldBefore = mold.positions();
+  const Real h = Real(0.15);
+  Neighbourhood neighbourhood(h, PeriodicBox());
+  neighbourhood.addCloud(metal, Neighbourhood::Motion::moving);
+  neighbourhood.addFixedCloud(mold);
+  // two models asking for overlapping pairs: one list each
+  for (int model = 0; model < 2; ++model) {
+    neighbourhood.requestPairs(metal, metal);
+    neighbourhood.requestPairs(metal, mold);
+    neighbourhood.requestPairs(mold, metal);
+  }
+  neighbourhood.requestPairs(mold, mold);
+  neighbourhood.update();
+  std::mt19937 random(3);
+  std::uniform_real_distribution<Real> step(-0.05, 0.05);
+  for (int update = 0; update < 3; ++update) {
+    expectBruteForce(neighbourhood, metal, metal);
+    expectBruteForce(neighbourhood, metal, mold);
+    expectBruteForce(neighbourhood, mold, metal);
+    expectBruteForce(neighbourhood, mold, mold);
+    // the metal moves; its labels must follow its particles through the reorder
+    std::vector<Vector> labelled(metal.size());
+    for (std::size_t i = 0; i < metal.size(); ++i) {
+      metal.positions()[i] += Vector(step(random), step(random), step(random));
+      labelled[static_cast<std::size_t>(metal.scalarField("label")[i])] = metal.positions()[i];
+    }
+    neighbourhood.update();
+    for (std::size_t i = 0; i < metal.size(); ++i) {
+      ASSERT_EQ(metal.positions()[i],
+                labelled[static_cast<std::size_t>(metal.scalarField("label")[i])]);
+    }
+  }
+  EXPECT_EQ(mold.positions(), moldBefore) << "a fixed cloud is never reordered";
+  EXPECT_TRUE(neighbourhood.grid(metal).inCellOrder());
+}
+
+TEST(NeighbourhoodTest, AListNobodyAskedForIsAnError) {
+  ParticleCloud metal = randomCloud("metal", 10, 1);
+  ParticleCloud mold = randomCloud("mold", 10, 2);
+  Neighbourhood neighbourhood(Real(0.2), PeriodicBox());
+  neighbourhood.addCloud(metal, Neighbourhood::Motion::moving);
+  neighbourhood.addFixedCloud(mold);
+  neighbourhood.requestPairs(metal, mold);
+  neighbourhood.update();
+  try {
+    neighbourhood.pairs(mold, metal);
+    FAIL() << "no error";
+  } catch (const Error& error) {
+    EXPECT_NE(std::string(error.what()).find("'mold' among cloud 'metal' were never requested"),
+              std::string::npos)
+        << error.what();
+  }
+  ParticleCloud stranger = randomCloud("stranger", 5, 3);
+  EXPECT_THROW(neighbourhood.requestPairs(metal, stranger), Error);
+}
+
+}  // namespace
+}  // namespace sphcast
