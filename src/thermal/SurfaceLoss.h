@@ -13,8 +13,8 @@ namespace sphcast {
 // coefficient loses heat through its exposed area A_i (field exposedArea) at the rate
 // coefficient * A_i * flux(T_i) W. Adds -that / m_i to energyRate; returns the power of each
 // cloud (summed in particle order, so it does not depend on the thread count); held particles
-// lose nothing (their T is the boundary's). Serial: one
-// multiply-add per surface particle, far below a pair pass.
+// lose nothing (their T is the boundary's). Serial: one multiply-add per surface particle, far
+// below a pair pass.
 template <class Flux>
 std::vector<double> addSurfaceLoss(const HeatTransferContext& context,
                                    const std::vector<double>& coefficient, Flux flux) {
