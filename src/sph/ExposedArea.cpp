@@ -1,5 +1,6 @@
 #include "sph/ExposedArea.h"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -116,7 +117,14 @@ void ExposedArea::computeIn() {
   // the minimum image only when an axis is periodic, chosen once per pass
   auto passWith = [&](auto separation) {
     for (ParticleCloud* cloud : exposed_) {
-      const std::vector<Real> volume = particleVolumes(*cloud);
+      // an exposed cloud covers too (the solver's and the tests' do): its volumes are there
+      const auto self = std::find(covering_.begin(), covering_.end(), cloud);
+      const std::vector<Real> ownVolume =
+          self == covering_.end() ? particleVolumes(*cloud) : std::vector<Real>();
+      const std::vector<Real>& volume =
+          self == covering_.end()
+              ? ownVolume
+              : coveringVolume_[static_cast<std::size_t>(self - covering_.begin())];
       const auto& x = cloud->positions();
       auto& granularity = cloud->scalarField("granularity");
       auto& area = cloud->scalarField("exposedArea");

@@ -30,20 +30,9 @@ AtmosphereTransfer::AtmosphereTransfer(const HeatTransferContext& context, const
                                                                " in " + dict.name() +
                                                                " must not be negative (W/m^2/K)");
     }
-    bool used = false;
-    for (std::size_t c = 0; c < context_.clouds.size(); ++c) {
-      if (context_.clouds[c].material->name != material) continue;
+    for (const std::size_t c : cloudsOfMaterial(context_, material, dict, "coefficients")) {
       coefficientOfCloud_[c] = omega;
       context_.clouds[c].material->requireInternalEnergy("heatTransfer atmosphere");
-      used = true;
-    }
-    if (!used) {
-      std::string present;
-      for (const HeatCloud& heat : context_.clouds) present += " " + heat.material->name;
-      throw DictionaryError(dict.location("coefficients"),
-                            "'coefficients' in " + dict.name() + " names the material '" +
-                                material + "', which no heat cloud has; they have (" + present +
-                                " )");
     }
   }
 }

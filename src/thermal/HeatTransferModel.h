@@ -6,6 +6,7 @@
 #include <utility>
 #include <vector>
 
+#include "core/dictionary/Dictionary.h"
 #include "materials/Material.h"
 #include "particles/Neighbourhood.h"
 #include "particles/ParticleCloud.h"
@@ -42,6 +43,12 @@ struct HeatTransferContext {
   std::vector<HeatCloud> clouds;
   Neighbourhood* neighbourhood = nullptr;
 };
+
+// The heat clouds (indices into context.clouds) of `material`, which the entry `key` of `dict`
+// names; a DictionaryError there when no heat cloud has it, listing the materials they have.
+std::vector<std::size_t> cloudsOfMaterial(const HeatTransferContext& context,
+                                          const std::string& material, const Dictionary& dict,
+                                          const std::string& key);
 
 // One heat path of eq. (17), rho du/dt = Q_hc + Q_ht + Q_ha + Q_hr (doc/physics.md §10.2): a
 // model reads its own sub-dictionary of heatTransfer in constant/physicsModels, asks the

@@ -50,18 +50,9 @@ MoldContactTransfer::MoldContactTransfer(const HeatTransferContext& context, con
   dict.checkKeys({"coefficients"});
   using Row = std::tuple<std::string, std::string, double>;
   const auto rows = dict.get<std::vector<Row>>("coefficients", heatTransferCoefficient);
-  std::set<std::string> present;
-  for (const HeatCloud& heat : context_.clouds) present.insert(heat.material->name);
-  std::string presentList;
-  for (const std::string& name : present) presentList += " " + name;
   for (const auto& [first, second, omega] : rows) {
     for (const std::string& material : {first, second}) {
-      if (!present.contains(material)) {
-        throw DictionaryError(dict.location("coefficients"),
-                              "'coefficients' in " + dict.name() + " names the material '" +
-                                  material + "', which no heat cloud has; they have (" +
-                                  presentList + " )");
-      }
+      cloudsOfMaterial(context_, material, dict, "coefficients");  // throws when none has it
     }
     if (!(omega > 0) || !std::isfinite(omega)) {
       throw DictionaryError(dict.location("coefficients"),

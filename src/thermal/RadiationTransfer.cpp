@@ -27,20 +27,10 @@ RadiationTransfer::RadiationTransfer(const HeatTransferContext& context, const D
     for (const HeatCloud& heat : context_.clouds) materials.push_back(heat.material->name);
   }
   for (const std::string& material : materials) {
-    bool used = false;
-    for (std::size_t c = 0; c < context_.clouds.size(); ++c) {
-      const HeatCloud& heat = context_.clouds[c];
-      if (heat.material->name != material) continue;
-      emissivityOfCloud_[c] = heat.material->requireEmissivity("heatTransfer radiation");
-      heat.material->requireInternalEnergy("heatTransfer radiation");
-      used = true;
-    }
-    if (!used) {
-      std::string present;
-      for (const HeatCloud& heat : context_.clouds) present += " " + heat.material->name;
-      throw DictionaryError(dict.location("materials"),
-                            "'materials' in " + dict.name() + " names the material '" + material +
-                                "', which no heat cloud has; they have (" + present + " )");
+    for (const std::size_t c : cloudsOfMaterial(context_, material, dict, "materials")) {
+      const Material& properties = *context_.clouds[c].material;
+      emissivityOfCloud_[c] = properties.requireEmissivity("heatTransfer radiation");
+      properties.requireInternalEnergy("heatTransfer radiation");
     }
   }
 }
