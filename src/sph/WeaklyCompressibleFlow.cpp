@@ -18,7 +18,8 @@ double FlowStepLimits::smallest(std::string& limiter) const {
                                                    {viscous, "viscous"},
                                                    {bodyForce, "body force"},
                                                    {acceleration, "acceleration"},
-                                                   {densityRate, "density rate"}};
+                                                   {densityRate, "density rate"},
+                                                   {forceModel, forceModelName.c_str()}};
   const auto* smallest = std::min_element(  // of equal limits the first, as before
       std::begin(limits), std::end(limits),
       [](const auto& a, const auto& b) { return a.first < b.first; });
@@ -448,6 +449,8 @@ void WeaklyCompressibleFlow::computeRates(RatePart part) {
   } else {
     computeRatesInDimension<3>(part);
   }
+  if (part == RatePart::densityRate) return;
+  for (FluidForceModel* model : forceModels_) model->addAcceleration();
 }
 
 void WeaklyCompressibleFlow::step(double deltaT) {
@@ -594,12 +597,23 @@ FlowStepLimits WeaklyCompressibleFlow::stepLimits(double maxCo) const {
   // accelerates the front particles far beyond g for a few steps, and a step that lets them
   // travel more than dx / 32 under that acceleration lets them into the wall (the acoustic limit
   // alone does not see it: |v| is still small when |a| is large).
+  double forceLimit = infinite;
+  std::string forceLimiter = "force model";
+  for (const FluidForceModel* model : forceModels_) {
+    const double limit = model->stableDeltaT();
+    if (limit < forceLimit) {
+      forceLimit = limit;
+      forceLimiter = model->limitName();
+    }
+  }
   return {
       maxCo * dx / (settings_.soundSpeed + fastest),
       largestKinematicViscosity > 0 ? 0.125 * dx * dx / largestKinematicViscosity : infinite,
       g > 0 ? 0.25 * std::sqrt(dx / g) : infinite,
       largestAcceleration > 0 ? 0.25 * std::sqrt(dx / largestAcceleration) : infinite,
-      largestRelativeDensityRate > 0 ? maxDensityChange / largestRelativeDensityRate : infinite};
+      largestRelativeDensityRate > 0 ? maxDensityChange / largestRelativeDensityRate : infinite,
+      forceLimit,
+      forceLimiter};
 }
 
 }  // namespace sphcast

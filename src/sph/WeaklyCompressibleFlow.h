@@ -6,6 +6,7 @@
 
 #include "particles/Neighbourhood.h"
 #include "particles/ParticleCloud.h"
+#include "sph/FluidForceModel.h"
 #include "sph/KernelCorrection.h"
 #include "sph/WallClearance.h"
 
@@ -48,6 +49,8 @@ struct FlowStepLimits {
   double bodyForce;     // 0.25 sqrt(dx / |g|)
   double acceleration;  // 0.25 sqrt(dx / |a|max), Monaghan's force criterion
   double densityRate;   // 0.02 min rho / |drho/dt|: no density changes by more than 2 % a step
+  double forceModel;    // the smallest of the force models' (FluidForceModel), if any
+  std::string forceModelName;
   double smallest(std::string& limiter) const;
 };
 
@@ -88,6 +91,12 @@ class WeaklyCompressibleFlow {
   void start();
 
   FlowStepLimits stepLimits(double maxCo) const;
+
+  // A force the flow adds at every evaluation of the rates, after its own (surface tension);
+  // the model must outlive the flow.
+  void addForceModel(FluidForceModel& model) { forceModels_.push_back(&model); }
+  // The pairs the flow searches with (its own, or the shared one): force models register there.
+  Neighbourhood& neighbourhood() { return neighbourhood_; }
 
   // One whole kick-drift-kick step of deltaT (a flow with its own neighbourhood).
   void step(double deltaT);
@@ -150,6 +159,7 @@ class WeaklyCompressibleFlow {
   std::vector<Matrix> correction_;               // L_i, with kernelCorrection or deltaSPH
   std::vector<Vector> densityGradient_;          // renormalised grad rho (deltaSPH)
   WallClearanceReport lastClearance_;
+  std::vector<FluidForceModel*> forceModels_;
   FlowTimings timings_;
 };
 

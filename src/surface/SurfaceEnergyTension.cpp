@@ -1,0 +1,207 @@
+#include "surface/SurfaceEnergyTension.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+#include "core/Error.h"
+#include "particles/WallSurfaceDistance.h"
+#include "particles/WendlandKernel.h"
+#include "sph/ExposedArea.h"
+
+namespace sphcast {
+
+Real SurfaceEnergyTension::calibratedEnergyFactor(int dimension, Real supportRadius,
+                                                  Real spacing) {
+  return ExposedArea::calibratedAreaFactor(ExposedAreaForm::granularity, dimension,
+                                           supportRadius, spacing);
+}
+
+SurfaceEnergyTension::SurfaceEnergyTension(SurfaceTensionSettings settings, ParticleCloud& fluid,
+                                           std::vector<const ParticleCloud*> walls,
+                                           Neighbourhood& neighbourhood)
+    : settings_(std::move(settings)),
+      energyFactor_(settings_.energyFactor > 0
+                        ? settings_.energyFactor
+                        : calibratedEnergyFactor(settings_.dimension, settings_.supportRadius,
+                                                 settings_.spacing)),
+      wallSmoothing_(settings_.wallSmoothing > 0 ? settings_.wallSmoothing
+                                                 : settings_.supportRadius),
+      fluid_(fluid),
+      walls_(std::move(walls)),
+      neighbourhood_(neighbourhood) {
+  if (!settings_.gasTension) throw Error("surface tension: no Gamma_g given");
+  if (settings_.cosContactAngle && settings_.solidTension) {
+    throw Error("surface tension: give the contact angle or Gamma_s, not both");
+  }
+  if (!settings_.gasTension->isConstant() && !fluid_.hasScalarField("T")) {
+    throw DictionaryError(settings_.gasTension->location(),
+                          settings_.gasTension->description() + " is a table in T, but cloud '" +
+                              fluid_.name() + "' has no T (set it with setCastFields)");
+  }
+  if (!fluid_.hasScalarField("surfaceEnergy")) fluid_.addScalarField("surfaceEnergy");
+  neighbourhood_.requestPairs(fluid_, fluid_);
+  for (const ParticleCloud* wall : walls_) neighbourhood_.requestPairs(fluid_, *wall);
+}
+
+Real SurfaceEnergyTension::solidTension(Real gasTension) const {
+  if (settings_.solidTension) return *settings_.solidTension;
+  const Real cosine = settings_.cosContactAngle ? *settings_.cosContactAngle : Real(-1);
+  return -cosine * gasTension;
+}
+
+void SurfaceEnergyTension::updateGasTension() {
+  const std::size_t n = fluid_.size();
+  gasTension_.resize(n);
+  const TemperatureTable& table = *settings_.gasTension;
+  if (table.isConstant()) {
+    std::fill(gasTension_.begin(), gasTension_.end(), static_cast<Real>(table(0)));
+  } else {
+    const auto& temperature = fluid_.scalarField("T");
+#pragma omp parallel for schedule(static)
+    for (std::size_t i = 0; i < n; ++i) {
+      gasTension_[i] = static_cast<Real>(table(static_cast<double>(temperature[i])));
+    }
+  }
+  Real largest = 0;
+  for (const Real gamma : gasTension_) {
+    largest = std::max({largest, gamma, std::abs(solidTension(gamma))});
+  }
+  largestTension_ = static_cast<double>(largest);
+}
+
+double SurfaceEnergyTension::stableDeltaT() const {
+  if (largestTension_ < 0) const_cast<SurfaceEnergyTension*>(this)->updateGasTension();
+  if (!(largestTension_ > 0)) return std::numeric_limits<double>::max();
+  const auto& rho = fluid_.scalarField("rho");
+  const double lightest =
+      rho.empty() ? 0 : static_cast<double>(*std::min_element(rho.begin(), rho.end()));
+  const double dx = static_cast<double>(settings_.spacing);
+  return 0.25 * std::sqrt(lightest * dx * dx * dx / (2 * std::numbers::pi * largestTension_));
+}
+
+// s_i, the wall distance, e_i and phi_i of every particle (the first pass).
+template <int Dim>
+void SurfaceEnergyTension::computeEnergy() {
+  const WendlandC2Kernel<Dim> kernel(settings_.supportRadius);
+  const Real selfKernel = kernel.value(0);
+  constexpr Real areaExponent = Real(Dim - 1) / Real(Dim);
+  const Real energyFactor = energyFactor_;
+  const Real eps = wallSmoothing_;
+  const Real spacing = settings_.spacing;
+  const std::size_t n = fluid_.size();
+  updateGasTension();
+  volume_ = particleVolumes(fluid_);
+  energyDerivative_.resize(n);
+  wallForce_.resize(n);
+  const auto& x = fluid_.positions();
+  auto& energy = fluid_.scalarField("surfaceEnergy");
+  const NeighbourList& pairs = neighbourhood_.pairs(fluid_, fluid_);
+  const PeriodicBox periodic = neighbourhood_.periodicBox();
+  std::vector<WallSurfaceView> walls;
+  for (const ParticleCloud* wall : walls_) {
+    walls.push_back({wall->positions(), wall->vectorField("normal"),
+                     wall->scalarField("wallDistance"), &neighbourhood_.pairs(fluid_, *wall)});
+  }
+  const bool fixedSolidTension = settings_.solidTension.has_value();
+  const Real solidTensionValue = fixedSolidTension ? *settings_.solidTension : Real(0);
+  const Real cosine = settings_.cosContactAngle ? *settings_.cosContactAngle : Real(-1);
+  auto passWith = [&](auto separation) {
+#pragma omp parallel for schedule(static)
+    for (std::size_t i = 0; i < n; ++i) {
+      Real s = volume_[i] * selfKernel;
+      for (const std::uint32_t j : pairs.of(i)) {
+        s += volume_[j] * kernel.value(separation(x[i], x[j]).norm());
+      }
+      const Real gas = gasTension_[i];
+      const Real solid = fixedSolidTension ? solidTensionValue : -cosine * gas;
+      Real chi = 1, chiSlope = 0;
+      Vector normal = Vector::Zero();
+      if (!walls.empty() && gas != solid) {
+        const WallSurfaceDistance wall = wallSurfaceDistance(x[i], i, walls, periodic, spacing);
+        if (wall.found) {
+          chi = wallIndicator(wall.distance, eps);
+          chiSlope = wallIndicatorSlope(wall.distance, eps);
+          normal = wall.normal;
+        }
+      }
+      const Real tension = gas * chi + solid * (Real(1) - chi);
+      const Real p = Real(1) - s;
+      const Real q = Real(1) - volume_[i] * selfKernel;
+      const Real area = std::pow(volume_[i], areaExponent);
+      const Real weight = energyFactor * exposureWeight(p, q);
+      energy[i] = weight * tension * area;
+      // dg(1 - s)/ds = -g_p
+      energyDerivative_[i] = -energyFactor * exposureWeightSlope(p, q) * tension * area;
+      wallForce_[i] = (-weight * area * (gas - solid) * chiSlope) * normal;
+    }
+  };
+  if (periodic.anyPeriodic()) {
+    passWith([periodic](const Vector& a, const Vector& b) { return periodic.separation(a, b); });
+  } else {
+    passWith([](const Vector& a, const Vector& b) { return Vector(a - b); });
+  }
+}
+
+// f_k = -sum_j (phi_k V_j + phi_j V_k) grad_k W_kj + the wall's pull (the second pass).
+template <int Dim>
+void SurfaceEnergyTension::addForces() {
+  const WendlandC2Kernel<Dim> kernel(settings_.supportRadius);
+  const std::size_t n = fluid_.size();
+  const auto& x = fluid_.positions();
+  const auto& mass = fluid_.scalarField("mass");
+  auto& acceleration = fluid_.vectorField("acceleration");
+  const NeighbourList& pairs = neighbourhood_.pairs(fluid_, fluid_);
+  const PeriodicBox periodic = neighbourhood_.periodicBox();
+  const bool surfaceOnly = settings_.surfaceParticlesOnly;
+  const Real* phi = energyDerivative_.data();
+  const Real* volume = volume_.data();
+  auto passWith = [&](auto separation) {
+#pragma omp parallel for schedule(static)
+    for (std::size_t k = 0; k < n; ++k) {
+      Vector force = wallForce_[k];
+      const Real phiK = phi[k];
+      const Real volumeK = volume[k];
+      for (const std::uint32_t j : pairs.of(k)) {
+        // inside the fluid both ends have g = 0: no force, no kernel to evaluate
+        if (surfaceOnly && phiK == Real(0) && phi[j] == Real(0)) continue;
+        const Vector xkj = separation(x[k], x[j]);
+        const Real r = xkj.norm();
+        force -= ((phiK * volume[j] + phi[j] * volumeK) * kernel.derivativeOverDistance(r)) * xkj;
+      }
+      acceleration[k] += force / mass[k];
+    }
+  };
+  if (periodic.anyPeriodic()) {
+    passWith([periodic](const Vector& a, const Vector& b) { return periodic.separation(a, b); });
+  } else {
+    passWith([](const Vector& a, const Vector& b) { return Vector(a - b); });
+  }
+}
+
+void SurfaceEnergyTension::addAcceleration() {
+  const auto start = std::chrono::steady_clock::now();
+  if (settings_.dimension == 2) {
+    computeEnergy<2>();
+    addForces<2>();
+  } else {
+    computeEnergy<3>();
+    addForces<3>();
+  }
+  seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+double SurfaceEnergyTension::energy() {
+  if (settings_.dimension == 2) {
+    computeEnergy<2>();
+  } else {
+    computeEnergy<3>();
+  }
+  double sum = 0;
+  for (const Real e : fluid_.scalarField("surfaceEnergy")) sum += static_cast<double>(e);
+  return sum;
+}
+
+}  // namespace sphcast

@@ -1,0 +1,129 @@
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "materials/TemperatureTable.h"
+#include "particles/Neighbourhood.h"
+#include "particles/ParticleCloud.h"
+#include "sph/FluidForceModel.h"
+
+namespace sphcast {
+
+// The constants of the surface-energy surface tension.
+struct SurfaceTensionSettings {
+  int dimension = 3;
+  Real supportRadius = 0;  // h
+  Real spacing = 0;        // dx, for the capillary step limit and the calibrated R_d
+  // R_d of eq. (10); 0: calibrated for the dimension and h/dx (calibratedEnergyFactor)
+  Real energyFactor = 0;
+  // Gamma_g(T), N/m: the fluid's material table, or a constant; at T where it is 0 (the solid
+  // rows of AC4CH) a particle carries no surface energy.
+  std::optional<TemperatureTable> gasTension;
+  // The wall: cos(theta) of the contact angle (Gamma_s = -cos(theta) Gamma_g(T)), or Gamma_s
+  // itself (N/m), one of them; 180 degrees by default (Gamma_s = Gamma_g: the wall is like air).
+  std::optional<Real> cosContactAngle;
+  std::optional<Real> solidTension;
+  // eps of eq. (9), m; 0: h
+  Real wallSmoothing = 0;
+  // Skip the pairs that carry no force (both ends inside the fluid, where g = 0); off only to
+  // measure what it saves.
+  bool surfaceParticlesOnly = true;
+};
+
+// Surface tension from the surface energy (paper §3, eqs. (6)-(12); doc/physics.md §10.1):
+//
+//   s_i   = sum_j V_j W(|x_i - x_j|, h)     over the fluid only, i included                (7)
+//   E_s,p = sum_i R_d g(1 - s_i, 1 - s_min,i) Gamma_i(l_i) V_i^(1 - 1/d)                   (8)
+//   Gamma_i = Gamma_g chi(l_i, eps) + Gamma_s (1 - chi(l_i, eps))                          (9)
+//   f_s,k = -dE_s,p / dx_k                                                                 (12)
+//
+// with g of eq. (10) (sph/ExposedArea.h: exposureWeight), s_min,i = V_i W(0, h), V = m / rho,
+// and l_i the distance of particle i from the wall surface (particles/WallSurfaceDistance.h,
+// from the wall particles' normals and depths). The sum for s counts the fluid alone: a face
+// against the mold is a surface too, one that costs Gamma_s instead of Gamma_g; that is what
+// chi does. (The heat's exposed area counts the molds as covering: a face on the mold loses no
+// heat to the air.) The force is the exact gradient, s_j depending on x_k for every neighbour:
+// with phi_i = dE/ds_i = -R_d g_p(1 - s_i, 1 - s_min,i) Gamma_i V_i^(1 - 1/d),
+//
+//   f_s,k = -sum_j (phi_k V_j + phi_j V_k) grad_k W_kj  -  R_d g_k V_k^(1 - 1/d) dGamma/dl n_k
+//
+// whose pair part is antisymmetric (momentum conserved pair by pair) and whose last part is the
+// wall's pull (n_k: the wall normal at k, the gradient of l). V and Gamma_g(T) are constants of
+// the positions (rho comes from the continuity equation). The energy falls along the flow of
+// this force; tests/unit/surface checks it against a finite difference of energy().
+//
+// Reads the fluid's positions, mass, rho, T (when Gamma_g is a table); the walls' normal and
+// wallDistance (as the flow does). Adds to `acceleration`; writes the field `surfaceEnergy`
+// (R_d g Gamma V^(1-1/d) per particle, J in 3D, J/m in 2D: where the surface is, for ParaView).
+class SurfaceEnergyTension : public FluidForceModel {
+ public:
+  // Registers the fluid-fluid and fluid-wall pairs in the neighbourhood the flow searches.
+  SurfaceEnergyTension(SurfaceTensionSettings settings, ParticleCloud& fluid,
+                       std::vector<const ParticleCloud*> walls, Neighbourhood& neighbourhood);
+
+  std::string limitName() const override { return "capillary"; }
+  void addAcceleration() override;
+  // The capillary limit 0.25 sqrt(rho_min dx^3 / (2 pi Gamma_max)) (Brackbill, Kothe & Zemach
+  // 1992): the step must resolve the fastest capillary wave the particles carry.
+  double stableDeltaT() const override;
+  double seconds() const override { return seconds_; }
+
+  // E_s,p of eq. (8) at the neighbourhood's last update, summed in particle order.
+  double energy();
+  Real energyFactor() const { return energyFactor_; }
+  // Gamma_s at temperature T (N/m).
+  Real solidTension(Real gasTension) const;
+
+  // R_d that makes the energy of a flat free surface of a cubic lattice Gamma_g per unit area:
+  // R_d = 1 / sum_k g_k / R_d down a column of the lattice under the surface (the exposed
+  // area's calibration of eq. (11), sph/ExposedArea.h). At h = 3 dx: 59.2 in 3D, 44.3 in 2D;
+  // the paper's R_3 = 41.3 and R_2 = 41.4 give 70 % and 94 % of Gamma_g on that surface.
+  static Real calibratedEnergyFactor(int dimension, Real supportRadius, Real spacing);
+
+ private:
+  template <int Dim>
+  void computeEnergy();
+  template <int Dim>
+  void addForces();
+  void updateGasTension();
+
+  SurfaceTensionSettings settings_;
+  Real energyFactor_;
+  Real wallSmoothing_;
+  ParticleCloud& fluid_;
+  std::vector<const ParticleCloud*> walls_;
+  Neighbourhood& neighbourhood_;
+  // per particle, from the last pass
+  std::vector<Real> volume_;
+  std::vector<Real> gasTension_;
+  std::vector<Real> energyDerivative_;  // phi_i = dE/ds_i
+  std::vector<Vector> wallForce_;       // -R_d g V^(1-1/d) dGamma/dl n
+  mutable double largestTension_ = -1;  // of the last pass (-1: none yet)
+  double seconds_ = 0;
+};
+
+// dg/dp / R_d of eq. (10): 1 for p >= q, 3 (p/q)^2 - 2 (p/q)^3 for 0 <= p < q, 0 below; g is
+// continuously differentiable, so the force is continuous.
+inline Real exposureWeightSlope(Real p, Real q) {
+  if (!(p > Real(0))) return Real(0);
+  if (p >= q) return Real(1);
+  const Real ratio = p / q;
+  return ratio * ratio * (Real(3) - Real(2) * ratio);
+}
+
+// chi(l, eps) of eq. (9) and its derivative in l.
+inline Real wallIndicator(Real l, Real eps) {
+  if (!(l > Real(0))) return Real(0);
+  if (l >= eps) return Real(1);
+  const Real ratio = l / eps;
+  return ratio * ratio * (Real(3) - Real(2) * ratio);
+}
+inline Real wallIndicatorSlope(Real l, Real eps) {
+  if (!(l > Real(0)) || l >= eps) return Real(0);
+  const Real ratio = l / eps;
+  return Real(6) * ratio * (Real(1) - ratio) / eps;
+}
+
+}  // namespace sphcast

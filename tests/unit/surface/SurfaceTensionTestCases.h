@@ -1,0 +1,123 @@
+#pragma once
+
+// Droplets and a flow with surface tension without the solver: the same flow, force model and
+// shared neighbourhood the solver steps, in the order its evolve() calls them.
+
+#include <cmath>
+#include <functional>
+#include <memory>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "core/dictionary/Dictionary.h"
+#include "materials/MaterialLibrary.h"
+#include "particles/Neighbourhood.h"
+#include "sph/WeaklyCompressibleFlow.h"
+#include "surface/SurfaceEnergyTension.h"
+
+namespace sphcast::testing {
+
+// Gamma_g as the solver reads it: a constant of a material in physicalProperties.
+inline TemperatureTable constantTension(double gamma) {
+  const MaterialLibrary library = MaterialLibrary::fromDictionary(
+      Dictionary::parse("liquid { surfaceTension " + std::to_string(gamma) + "; }",
+                        "physicalProperties"),
+      "physicalProperties");
+  return *library.get("liquid", SourceLocation{}, "test").surfaceTension;
+}
+
+// The lattice particles (spacing dx, cell centres on (i + 1/2) dx, z = 0 in 2D) for which
+// inside(x) holds, as a fluid at rest of density rho and dynamic viscosity mu; each particle
+// moved by up to `jitter` dx along each axis when jitter > 0.
+inline ParticleCloud latticeFluid(int dimension, Real dx, const Vector& lower, const Vector& upper,
+                                  const std::function<bool(const Vector&)>& inside, Real rho,
+                                  Real mu, Real jitter = 0, unsigned seed = 1) {
+  std::vector<Vector> positions;
+  const int nx = static_cast<int>(std::ceil((upper[0] - lower[0]) / dx));
+  const int ny = static_cast<int>(std::ceil((upper[1] - lower[1]) / dx));
+  const int nz = dimension == 3 ? static_cast<int>(std::ceil((upper[2] - lower[2]) / dx)) : 1;
+  for (int k = 0; k < nz; ++k) {
+    for (int j = 0; j < ny; ++j) {
+      for (int i = 0; i < nx; ++i) {
+        const Vector x = lower + dx * Vector(i + Real(0.5), j + Real(0.5),
+                                             dimension == 3 ? k + Real(0.5) : Real(0));
+        if (dimension == 2) {
+          Vector planar = x;
+          planar[2] = 0;
+          if (inside(planar)) positions.push_back(planar);
+        } else if (inside(x)) {
+          positions.push_back(x);
+        }
+      }
+    }
+  }
+  std::mt19937 random(seed);
+  std::uniform_real_distribution<Real> offset(-jitter * dx, jitter * dx);
+  ParticleCloud fluid("fluid");
+  fluid.resize(positions.size());
+  auto& U = fluid.addVectorField("U");
+  auto& density = fluid.addScalarField("rho");
+  auto& mass = fluid.addScalarField("mass");
+  auto& viscosity = fluid.addScalarField("viscosity");
+  auto& rest = fluid.addScalarField("restDensity");
+  fluid.addVectorField("acceleration");
+  fluid.addScalarField("densityRate");
+  for (std::size_t i = 0; i < positions.size(); ++i) {
+    Vector x = positions[i];
+    if (jitter > 0) {
+      x[0] += offset(random);
+      x[1] += offset(random);
+      if (dimension == 3) x[2] += offset(random);
+    }
+    fluid.positions()[i] = x;
+    U[i] = Vector::Zero();
+    density[i] = rest[i] = rho;
+    mass[i] = rho * std::pow(dx, dimension);
+    viscosity[i] = mu;
+  }
+  fluid.attributes()["spacing"] = dx;
+  return fluid;
+}
+
+// A flow with surface tension over one shared neighbourhood, stepped as the solver's evolve()
+// steps it: kick and drift, search, wall clearance, rates (the flow's, then the surface
+// tension's) and kick.
+struct CapillaryRun {
+  CapillaryRun(const FlowSettings& flowSettings, const SurfaceTensionSettings& tensionSettings,
+               ParticleCloud& fluid, std::vector<const ParticleCloud*> walls)
+      : neighbourhood(flowSettings.supportRadius, flowSettings.periodic),
+        flow(flowSettings, fluid, walls, registered(fluid, walls)),
+        tension(tensionSettings, fluid, walls, neighbourhood) {
+    flow.addForceModel(tension);
+    neighbourhood.update();
+    flow.start();
+  }
+
+  void step(double dt) {
+    flow.kickAndDrift(dt);
+    neighbourhood.update();
+    flow.keepClearOfWalls();
+    flow.computeRatesAndKick(dt);
+    time += dt;
+  }
+
+  double stableDeltaT(double maxCo = 0.25) const {
+    std::string limiter;
+    return flow.stepLimits(maxCo).smallest(limiter);
+  }
+
+  Neighbourhood neighbourhood;
+  WeaklyCompressibleFlow flow;
+  SurfaceEnergyTension tension;
+  double time = 0;
+
+ private:
+  Neighbourhood& registered(ParticleCloud& fluid, const std::vector<const ParticleCloud*>& walls) {
+    neighbourhood.addCloud(fluid, Neighbourhood::Motion::moving);
+    for (const ParticleCloud* wall : walls) neighbourhood.addFixedCloud(*wall);
+    return neighbourhood;
+  }
+};
+
+}  // namespace sphcast::testing
