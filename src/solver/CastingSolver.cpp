@@ -23,6 +23,7 @@ CastingSolver::CastingSolver(const CaseFolder& caseFolder)
       motion_(gravity_),
       flowSetup_(readFlowSetup(caseFolder, gravity_)),
       heatSetup_(readHeatSetup(caseFolder)),
+      surfaceTensionSetup_(readSurfaceTensionSetup(caseFolder, flowSetup_)),
       writer_(caseFolder, time_.settings().purgeWrite) {
   for (const std::string& repaired : repairedWrites_) {
     info() << "Repaired interrupted write: " << repaired << std::endl;
@@ -172,6 +173,32 @@ void CastingSolver::setUpFlow() {
          << " of its running mean, stops the run\n"
          << "    wall clearance " << settings.wallClearance
          << " dx: fluid particles closer to a wall surface are moved back to it\n";
+  if (surfaceTensionSetup_.enabled) {
+    SurfaceTensionSettings tension = surfaceTensionSetup_.settings;
+    tension.spacing = static_cast<Real>(fluid.attributes().at("spacing"));
+    surfaceTension_ =
+        std::make_unique<SurfaceEnergyTension>(tension, fluid, walls, *neighbourhood_);
+    flow_->addForceModel(*surfaceTension_);
+    const TemperatureTable& gamma = *tension.gasTension;
+    info() << "Surface tension: surface energy (paper eqs. (7)-(12)), R_d = "
+           << surfaceTension_->energyFactor()
+           << (tension.energyFactor > 0 ? "" : " (calibrated on a flat lattice face)")
+           << ", Gamma_g " << gamma.description()
+           << (gamma.isConstant() ? " = " + std::to_string(gamma(0)) + " N/m" : " (a table in T)")
+           << '\n';
+    if (!walls.empty()) {
+      info() << "    at the walls: "
+             << (tension.solidTension
+                     ? "Gamma_s = " + std::to_string(*tension.solidTension) + " N/m"
+                     : "contact angle " +
+                           std::to_string(std::acos(static_cast<double>(
+                               tension.cosContactAngle ? *tension.cosContactAngle : Real(-1))) *
+                                          180 / 3.14159265358979323846) +
+                           " degrees")
+             << ", chi over " << (tension.wallSmoothing > 0 ? tension.wallSmoothing : tension.supportRadius)
+             << " m\n";
+    }
+  }
   // Everything else stays where it is: only the fluid moves.
 }
 
@@ -450,8 +477,9 @@ void CastingSolver::logTimeSpent() {
   if (neighbourhood_) line << " neighbour search " << searchSeconds_ << ",";
   if (flow_) {
     const FlowTimings& t = flow_->timings();
-    line << " wall clearance " << t.wallClearance << ", flow rates " << t.rates
-         << ", flow integration " << t.integration << ",";
+    line << " wall clearance " << t.wallClearance << ", flow rates " << t.rates;
+    if (surfaceTension_) line << " (surface tension " << surfaceTension_->seconds() << ")";
+    line << ", flow integration " << t.integration << ",";
   }
   if (energy_) line << " heat " << heatSeconds_ << ",";
   line << " health checks " << checkSeconds_ << ", function objects " << functionSeconds_

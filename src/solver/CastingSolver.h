@@ -14,6 +14,7 @@
 #include "solver/FlowSetup.h"
 #include "solver/HeatSetup.h"
 #include "solver/RunHealth.h"
+#include "solver/SurfaceTensionSetup.h"
 #include "sph/ExposedArea.h"
 #include "sph/WeaklyCompressibleFlow.h"
 #include "thermal/EnergyEquation.h"
@@ -78,11 +79,13 @@ class CastingSolver {
   BallisticMotion motion_;
   FlowSetup flowSetup_;
   HeatSetup heatSetup_;
+  SurfaceTensionSetup surfaceTensionSetup_;
   std::vector<ParticleCloud> clouds_;        // of the time folders: read, stepped, written
   std::vector<ParticleCloud> staticClouds_;  // of constant/particles: read only
   // The cell grids and pair lists of every model, built once per step (with flow or heat).
   std::unique_ptr<Neighbourhood> neighbourhood_;
   std::unique_ptr<WeaklyCompressibleFlow> flow_;
+  std::unique_ptr<SurfaceEnergyTension> surfaceTension_;  // a force model of the flow
   ParticleCloud* fluid_ = nullptr;
   std::unique_ptr<EnergyEquation> energy_;
   std::unique_ptr<ExposedArea> exposedArea_;      // A_i, when a model reads it

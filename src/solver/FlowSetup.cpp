@@ -64,7 +64,8 @@ FlowSetup readFlowSetup(const CaseFolder& caseFolder, const Vector& gravity) {
   const auto modelsFile = caseFolder.constantFile("physicsModels");
   if (!std::filesystem::exists(modelsFile)) return setup;
   const Dictionary models = Dictionary::read(modelsFile);
-  models.checkKeys({"dimension", "periodic", "materials", "flow", "heatTransfer"});
+  models.checkKeys(
+      {"dimension", "periodic", "materials", "flow", "heatTransfer", "surfaceTension"});
   if (!models.found("flow")) return setup;
   const Dictionary& flow = models.subDict("flow");
   flow.checkKeys({"model", "fluid", "walls"});

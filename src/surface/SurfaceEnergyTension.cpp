@@ -13,10 +13,44 @@
 
 namespace sphcast {
 
-Real SurfaceEnergyTension::calibratedEnergyFactor(int dimension, Real supportRadius,
-                                                  Real spacing) {
-  return ExposedArea::calibratedAreaFactor(ExposedAreaForm::granularity, dimension,
-                                           supportRadius, spacing);
+namespace {
+
+// 1 / sum_k g_k / R_d over the layers k = 0, 1, ... of a semi-infinite cubic lattice under a
+// flat free surface (each layer's s sums over the half lattice).
+template <int Dim>
+Real flatSurfaceFactor(Real supportRadius, Real spacing, Real core) {
+  const GranularityKernel<Dim> kernel(supportRadius, spacing, core);
+  const Real cell = std::pow(spacing, Dim);
+  const int reach = static_cast<int>(std::ceil(supportRadius / spacing)) + 1;
+  const Real q = Real(1) - cell * kernel.value(0);
+  Real columnSum = 0;
+  for (int layer = 0; layer <= reach; ++layer) {
+    Real s = 0;
+    for (int dz = -reach; dz <= reach; ++dz) {
+      if (layer + dz < 0) continue;  // above the surface: no particle
+      const int dyRange = Dim == 3 ? reach : 0;
+      for (int dy = -dyRange; dy <= dyRange; ++dy) {
+        for (int dx = -reach; dx <= reach; ++dx) {
+          s += cell * kernel.value(spacing * std::sqrt(Real(dx * dx + dy * dy + dz * dz)));
+        }
+      }
+    }
+    columnSum += exposureWeight(Real(1) - s, q);
+  }
+  if (!(columnSum > 0)) {
+    throw Error("surface tension: a flat surface has no particle with g > 0 at h/dx " +
+                std::to_string(supportRadius / spacing) + " (the kernel is too narrow)");
+  }
+  return Real(1) / columnSum;
+}
+
+}  // namespace
+
+Real SurfaceEnergyTension::calibratedEnergyFactor(int dimension, Real supportRadius, Real spacing,
+                                                  Real coreRadius) {
+  const Real core = coreRadius * spacing;
+  return dimension == 2 ? flatSurfaceFactor<2>(supportRadius, spacing, core)
+                        : flatSurfaceFactor<3>(supportRadius, spacing, core);
 }
 
 SurfaceEnergyTension::SurfaceEnergyTension(SurfaceTensionSettings settings, ParticleCloud& fluid,
@@ -26,7 +60,7 @@ SurfaceEnergyTension::SurfaceEnergyTension(SurfaceTensionSettings settings, Part
       energyFactor_(settings_.energyFactor > 0
                         ? settings_.energyFactor
                         : calibratedEnergyFactor(settings_.dimension, settings_.supportRadius,
-                                                 settings_.spacing)),
+                                                 settings_.spacing, settings_.coreRadius)),
       wallSmoothing_(settings_.wallSmoothing > 0 ? settings_.wallSmoothing
                                                  : settings_.supportRadius),
       fluid_(fluid),
@@ -85,7 +119,8 @@ double SurfaceEnergyTension::stableDeltaT() const {
 // s_i, the wall distance, e_i and phi_i of every particle (the first pass).
 template <int Dim>
 void SurfaceEnergyTension::computeEnergy() {
-  const WendlandC2Kernel<Dim> kernel(settings_.supportRadius);
+  const GranularityKernel<Dim> kernel(settings_.supportRadius, settings_.spacing,
+                                      settings_.coreRadius * settings_.spacing);
   const Real selfKernel = kernel.value(0);
   constexpr Real areaExponent = Real(Dim - 1) / Real(Dim);
   const Real energyFactor = energyFactor_;
@@ -148,7 +183,8 @@ void SurfaceEnergyTension::computeEnergy() {
 // f_k = -sum_j (phi_k V_j + phi_j V_k) grad_k W_kj + the wall's pull (the second pass).
 template <int Dim>
 void SurfaceEnergyTension::addForces() {
-  const WendlandC2Kernel<Dim> kernel(settings_.supportRadius);
+  const GranularityKernel<Dim> kernel(settings_.supportRadius, settings_.spacing,
+                                      settings_.coreRadius * settings_.spacing);
   const std::size_t n = fluid_.size();
   const auto& x = fluid_.positions();
   const auto& mass = fluid_.scalarField("mass");

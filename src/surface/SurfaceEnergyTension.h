@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cmath>
 #include <optional>
 #include <string>
 #include <vector>
@@ -7,6 +8,7 @@
 #include "materials/TemperatureTable.h"
 #include "particles/Neighbourhood.h"
 #include "particles/ParticleCloud.h"
+#include "particles/WendlandKernel.h"
 #include "sph/FluidForceModel.h"
 
 namespace sphcast {
@@ -27,6 +29,8 @@ struct SurfaceTensionSettings {
   std::optional<Real> solidTension;
   // eps of eq. (9), m; 0: h
   Real wallSmoothing = 0;
+  // r0 of the granularity kernel (GranularityKernel), in spacings
+  Real coreRadius = 1;
   // Skip the pairs that carry no force (both ends inside the fluid, where g = 0); off only to
   // measure what it saves.
   bool surfaceParticlesOnly = true;
@@ -80,7 +84,8 @@ class SurfaceEnergyTension : public FluidForceModel {
   // R_d = 1 / sum_k g_k / R_d down a column of the lattice under the surface (the exposed
   // area's calibration of eq. (11), sph/ExposedArea.h). At h = 3 dx: 59.2 in 3D, 44.3 in 2D;
   // the paper's R_3 = 41.3 and R_2 = 41.4 give 70 % and 94 % of Gamma_g on that surface.
-  static Real calibratedEnergyFactor(int dimension, Real supportRadius, Real spacing);
+  static Real calibratedEnergyFactor(int dimension, Real supportRadius, Real spacing,
+                                     Real coreRadius);
 
  private:
   template <int Dim>
@@ -102,6 +107,55 @@ class SurfaceEnergyTension : public FluidForceModel {
   std::vector<Vector> wallForce_;       // -R_d g V^(1-1/d) dGamma/dl n
   mutable double largestTension_ = -1;  // of the last pass (-1: none yet)
   double seconds_ = 0;
+};
+
+// The kernel of s_i: W beyond a core radius r0; within it the slope falls linearly from W'(r0)
+// at r0 to zero at r_m = 0.7 r0 and turns positive below: s falls when two particles come
+// closer than r_m, and the energy pushes them apart (see the class comment: without that the
+// surface particles clump in pairs). All divided by the kernel's sum over a cubic lattice of
+// spacing dx, so that s = 1 inside a fluid on the lattice.
+template <int Dim>
+class GranularityKernel {
+ public:
+  static constexpr Real repulsionFraction = Real(0.7);  // r_m / r0
+
+  GranularityKernel(Real supportRadius, Real spacing, Real core)
+      : kernel_(supportRadius),
+        core_(core),
+        coreValue_(kernel_.value(core)),
+        coreSlope_(kernel_.derivative(core)) {
+    const Real cell = std::pow(spacing, Dim);
+    const int reach = static_cast<int>(std::ceil(supportRadius / spacing));
+    const int zReach = Dim == 3 ? reach : 0;
+    Real sum = 0;
+    for (int k = -zReach; k <= zReach; ++k) {
+      for (int j = -reach; j <= reach; ++j) {
+        for (int i = -reach; i <= reach; ++i) {
+          sum += cell * rawValue(spacing * std::sqrt(Real(i * i + j * j + k * k)));
+        }
+      }
+    }
+    scale_ = Real(1) / sum;
+  }
+  Real value(Real r) const { return scale_ * rawValue(r); }
+  Real derivativeOverDistance(Real r) const {
+    if (r >= core_) return scale_ * kernel_.derivativeOverDistance(r);
+    if (!(r > 0)) return 0;  // coincident particles: no direction
+    const Real t = r / core_;
+    return scale_ * coreSlope_ * (t - repulsionFraction) / ((Real(1) - repulsionFraction) * r);
+  }
+
+ private:
+  Real rawValue(Real r) const {
+    if (r >= core_) return kernel_.value(r);
+    const Real t = r / core_;
+    const Real m = repulsionFraction;
+    return coreValue_ - coreSlope_ * core_ / (Real(1) - m) *
+                            (Real(0.5) * (Real(1) - t * t) - m * (Real(1) - t));
+  }
+  WendlandC2Kernel<Dim> kernel_;
+  Real core_, coreValue_, coreSlope_;
+  Real scale_ = 1;
 };
 
 // dg/dp / R_d of eq. (10): 1 for p >= q, 3 (p/q)^2 - 2 (p/q)^3 for 0 <= p < q, 0 below; g is

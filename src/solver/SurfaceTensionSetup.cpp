@@ -1,0 +1,101 @@
+#include "solver/SurfaceTensionSetup.h"
+
+#include <cmath>
+#include <filesystem>
+#include <numbers>
+#include <sstream>
+
+#include "core/Error.h"
+#include "core/dictionary/Dictionary.h"
+#include "materials/MaterialLibrary.h"
+
+namespace sphcast {
+
+namespace {
+const Dimensions dimensionless{{0, 0, 0, 0, 0, 0, 0}};
+const Dimensions length{{0, 1, 0, 0, 0, 0, 0}};
+const Dimensions tension{{1, 0, -2, 0, 0, 0, 0}};
+}  // namespace
+
+SurfaceTensionSetup readSurfaceTensionSetup(const CaseFolder& caseFolder, const FlowSetup& flow) {
+  SurfaceTensionSetup setup;
+  const auto modelsFile = caseFolder.constantFile("physicsModels");
+  if (!std::filesystem::exists(modelsFile)) return setup;
+  const Dictionary models = Dictionary::read(modelsFile);
+  if (!models.found("surfaceTension")) return setup;
+  const Dictionary& dict = models.subDict("surfaceTension");
+  dict.checkKeys({"model", "energyFactor", "contactAngle", "solidTension", "wallSmoothing",
+                  "coreRadius"});
+  if (dict.getChoice("model", {"none", "surfaceEnergy"}) == "none") return setup;
+  if (!flow.enabled) {
+    throw DictionaryError(dict.location("model"),
+                          "surface tension acts on the flow's fluid, but " + models.name() +
+                              " has no flow (flow { model weaklyCompressible; ... })");
+  }
+  setup.enabled = true;
+  SurfaceTensionSettings& settings = setup.settings;
+  settings.dimension = flow.settings.dimension;
+  settings.supportRadius = flow.settings.supportRadius;
+
+  if (dict.found("energyFactor")) {
+    std::istringstream word(dict.get<std::string>("energyFactor"));
+    double value = 0;
+    if (!(word >> value)) {
+      if (dict.get<std::string>("energyFactor") != "calibrated") {
+        throw DictionaryError(dict.location("energyFactor"),
+                              "'energyFactor' must be 'calibrated' or a positive number in " +
+                                  dict.name());
+      }
+    } else if (!(value > 0) || !word.eof()) {
+      throw DictionaryError(dict.location("energyFactor"),
+                            "'energyFactor' must be 'calibrated' or a positive number in " +
+                                dict.name());
+    } else {
+      settings.energyFactor = static_cast<Real>(value);
+    }
+  }
+  if (dict.found("contactAngle") && dict.found("solidTension")) {
+    throw DictionaryError(dict.location("solidTension"),
+                          "give 'contactAngle' or 'solidTension' in " + dict.name() +
+                              ", not both (cos theta = -solidTension / Gamma_g)");
+  }
+  if (dict.found("contactAngle")) {
+    const double degrees = dict.get<double>("contactAngle", dimensionless);
+    if (!(degrees >= 0 && degrees <= 180)) {
+      throw DictionaryError(dict.location("contactAngle"),
+                            "'contactAngle' must lie in [0, 180] degrees in " + dict.name());
+    }
+    settings.cosContactAngle = static_cast<Real>(std::cos(degrees * std::numbers::pi / 180));
+  }
+  if (dict.found("solidTension")) {
+    settings.solidTension = dict.get<Real>("solidTension", tension);
+  }
+  if (dict.found("wallSmoothing")) {
+    settings.wallSmoothing = dict.get<Real>("wallSmoothing", length);
+    if (!(settings.wallSmoothing > 0)) {
+      throw DictionaryError(dict.location("wallSmoothing"),
+                            "'wallSmoothing' must be positive in " + dict.name());
+    }
+  }
+  if (dict.found("coreRadius")) {
+    settings.coreRadius = dict.get<Real>("coreRadius", dimensionless);
+    if (!(settings.coreRadius >= 0 && settings.coreRadius < 1.5)) {
+      throw DictionaryError(dict.location("coreRadius"),
+                            "'coreRadius' (in particle spacings) must lie in [0, 1.5) in " +
+                                dict.name());
+    }
+  }
+
+  const MaterialLibrary materials =
+      MaterialLibrary::read(caseFolder.constantFile("physicalProperties"));
+  const bool mapped =
+      models.found("materials") && models.subDict("materials").found(flow.fluidCloud);
+  const Material& fluid =
+      mapped ? materials.get(models.subDict("materials").get<std::string>(flow.fluidCloud),
+                             models.subDict("materials").location(flow.fluidCloud), "materials")
+             : materials.get(flow.fluidCloud, models.subDict("flow").location("fluid"), "fluid");
+  settings.gasTension = fluid.requireSurfaceTension("the surface tension");
+  return setup;
+}
+
+}  // namespace sphcast

@@ -1,0 +1,277 @@
+// The n = 2 oscillation of a free droplet (no gravity) against Lamb (1932, §275, §355):
+//   2D: omega^2 = n (n^2 - 1) sigma / (rho R^3),   3D: omega^2 = n (n - 1)(n + 2) sigma / (rho R^3)
+// with the viscous decay of the amplitude, exp(-gamma t),
+//   2D: gamma = 2 n (n - 1) nu / R^2,              3D: gamma = (n - 1)(2 n + 1) nu / R^2
+// (the dissipation of the potential flow of the mode, valid while gamma << omega).
+// The droplet starts round, on the lattice, at the Laplace pressure, with the velocity of the
+// mode's potential flow (2D: u = A (x, -y); 3D: u = A (-x, -y, 2 z)); the amplitude is read from
+// the second moments of the particle positions.
+
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdlib>
+#include <iostream>
+#include <numbers>
+
+#include "SurfaceTensionTestCases.h"
+
+namespace sphcast {
+namespace {
+
+using testing::CapillaryRun;
+using testing::constantTension;
+using testing::latticeFluid;
+
+struct DropletResult {
+  std::size_t particles = 0;
+  double radius = 0;
+  double lambPeriod = 0, period = 0;       // s
+  double lambDecay = 0, decay = 0;         // 1/s
+  double steps = 0, seconds = 0;
+  double largestDensityDeviation = 0;
+};
+
+struct DropletSetup {
+  int dimension = 2;
+  int across = 30;          // particles across the diameter
+  Real energyFactor = 0;    // R_d (0: calibrated)
+  double periods = 2.0;     // how long to run
+  double amplitude = 0.05;  // a0 / R
+  // the pressure of the surface layer's pull, R_d Gamma / dx, against rho c^2 (sets c)
+  double surfaceCompression = 0.01;
+  double core = 1;
+  double relaxation = 2;  // capillary times sqrt(rho R^3 / sigma) of damped relaxation first
+};
+
+DropletResult oscillatingDroplet(const DropletSetup& setup) {
+  const int d = setup.dimension;
+  const Real radius = 0.01, sigma = 0.07, rho = 1000, nu = 8e-6;
+  const Real dx = 2 * radius / setup.across;
+  const Real h = (std::getenv("SPHCAST_DROPLET_HDX") ? static_cast<Real>(std::atof(std::getenv("SPHCAST_DROPLET_HDX"))) : Real(3)) * dx;
+  const int n = 2;
+  const double omegaLamb =
+      d == 2 ? std::sqrt(n * (n * n - 1) * sigma / (rho * std::pow(radius, 3)))
+             : std::sqrt(n * (n - 1) * (n + 2) * sigma / (rho * std::pow(radius, 3)));
+  ParticleCloud fluid = latticeFluid(
+      d, dx, Vector::Constant(-radius - dx), Vector::Constant(radius + dx),
+      [&](const Vector& x) { return x.norm() < radius; }, rho, rho * nu);
+  DropletResult result;
+  result.particles = fluid.size();
+  // the radius of the droplet the particles make (their area or volume)
+  result.radius = d == 2 ? std::sqrt(fluid.size() * dx * dx / std::numbers::pi)
+                         : std::cbrt(3 * fluid.size() * std::pow(dx, 3) / (4 * std::numbers::pi));
+  const double R = result.radius;
+  result.lambPeriod =
+      2 * std::numbers::pi /
+      (d == 2 ? std::sqrt(n * (n * n - 1) * sigma / (rho * R * R * R))
+              : std::sqrt(n * (n - 1) * (n + 2) * sigma / (rho * R * R * R)));
+  result.lambDecay = d == 2 ? 2 * n * (n - 1) * nu / (R * R) : (n - 1) * (2 * n + 1) * nu / (R * R);
+  // The speed of sound: ten times the largest speed, and stiff enough against the surface
+  // layer's pull. The energy falls as the surface particles crowd (s_i rises towards 1), so
+  // the layer is pressed by about R_d Gamma / dx, a pressure far above Laplace's sigma / R,
+  // that only the equation of state resists.
+  const Real speed = setup.amplitude * radius * omegaLamb * (d == 2 ? 1 : 2);
+  const Real laplace = (d - 1) * sigma / radius;
+  const Real factor = setup.energyFactor > 0
+                          ? setup.energyFactor
+                          : SurfaceEnergyTension::calibratedEnergyFactor(d, h, dx, static_cast<Real>(setup.core));
+  const Real c = std::max(10 * speed,
+                          std::sqrt(factor * sigma / (dx * rho * setup.surfaceCompression)));
+  FlowSettings flow;
+  flow.dimension = d;
+  flow.supportRadius = h;
+  flow.soundSpeed = c;
+  if (const char* scheme = std::getenv("SPHCAST_DROPLET_SCHEME")) flow.densityScheme = scheme;
+  SurfaceTensionSettings tension;
+  tension.dimension = d;
+  tension.supportRadius = h;
+  tension.spacing = dx;
+  tension.gasTension = constantTension(sigma);
+  tension.energyFactor = setup.energyFactor;
+  tension.coreRadius = static_cast<Real>(setup.core);
+  const Real A = setup.amplitude * omegaLamb;  // a0 omega / R
+  for (std::size_t i = 0; i < fluid.size(); ++i) {
+    fluid.scalarField("rho")[i] = rho + laplace / (c * c);
+  }
+  CapillaryRun run(flow, tension, fluid, {});
+  // The lattice's staircase surface relaxes first, its energy (a large multiple of the mode's)
+  // taken out by damping the velocities, over `relaxation` capillary times.
+  auto& U = fluid.vectorField("U");
+  const double relaxEnd = setup.relaxation * std::sqrt(rho * std::pow(radius, 3) / sigma);
+  while (run.time < relaxEnd) {
+    run.step(run.stableDeltaT());
+    for (Vector& u : U) u *= Real(0.99);
+  }
+  Vector centre = Vector::Zero();
+  for (const Vector& x : fluid.positions()) centre += x;
+  centre /= static_cast<Real>(fluid.size());
+  for (std::size_t i = 0; i < fluid.size(); ++i) {
+    const Vector x = fluid.positions()[i] - centre;
+    U[i] = d == 2 ? Vector(A * x[0], -A * x[1], 0) : Vector(-A * x[0], -A * x[1], 2 * A * x[2]);
+  }
+  run.time = 0;
+  // the mode's amplitude, up to a constant factor
+  auto amplitude = [&] {
+    double sum = 0;
+    Vector mid = Vector::Zero();
+    for (const Vector& x : fluid.positions()) mid += x;
+    mid /= static_cast<Real>(fluid.size());
+    for (const Vector& xAbsolute : fluid.positions()) {
+      const Vector x = xAbsolute - mid;
+      sum += d == 2 ? x[0] * x[0] - x[1] * x[1] : x[2] * x[2] - 0.5 * (x[0] * x[0] + x[1] * x[1]);
+    }
+    return sum / static_cast<double>(fluid.size());
+  };
+  std::vector<double> crossings, extremeValues;
+  double previous = amplitude(), beforePrevious = previous;
+  const double end = setup.periods * result.lambPeriod;
+  const auto clockStart = std::chrono::steady_clock::now();
+  while (run.time < end) {
+    const double dt = run.stableDeltaT();
+    const double t0 = run.time;
+    run.step(dt);
+    ++result.steps;
+    const double now = amplitude();
+    if (std::getenv("SPHCAST_DROPLET_TRACE") && static_cast<long>(result.steps) % std::atoi(std::getenv("SPHCAST_DROPLET_TRACE")) == 0) {
+      double kinetic = 0;
+      for (const Vector& u : fluid.vectorField("U")) kinetic += 0.5 * u.squaredNorm();
+      double closest = 1e9;
+      const auto& xs = fluid.positions();
+      for (std::size_t i = 0; i < xs.size(); ++i)
+        for (std::size_t j = i + 1; j < xs.size(); ++j) closest = std::min(closest, (xs[i] - xs[j]).norm());
+      std::cout << run.time << " " << now / R << " " << kinetic << " " << run.tension.energy() << " closest/dx " << closest / dx << std::endl;
+    }
+    if ((previous > 0) != (now > 0)) {
+      crossings.push_back(t0 + dt * previous / (previous - now));
+    }
+    if (std::abs(previous) > std::abs(beforePrevious) && std::abs(previous) >= std::abs(now)) {
+      extremeValues.push_back(std::abs(previous));
+    }
+    beforePrevious = previous;
+    previous = now;
+    for (const Real r : fluid.scalarField("rho")) {
+      result.largestDensityDeviation =
+          std::max(result.largestDensityDeviation, std::abs(r / rho - 1));
+    }
+  }
+  result.seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - clockStart).count();
+  if (crossings.size() >= 3) {
+    result.period = (crossings.back() - crossings.front()) / (0.5 * (crossings.size() - 1));
+  }
+  if (extremeValues.size() >= 2) {
+    // successive extremes are half a period apart
+    result.decay = std::log(extremeValues.front() / extremeValues.back()) /
+                   (0.5 * result.period * (extremeValues.size() - 1));
+  }
+  return result;
+}
+
+std::ostream& operator<<(std::ostream& out, const DropletResult& r) {
+  return out << r.particles << " particles, R " << r.radius << " m: period " << r.period
+             << " s against Lamb's " << r.lambPeriod << " s ("
+             << 100 * (r.period / r.lambPeriod - 1) << " %), decay " << r.decay << " /s against "
+             << r.lambDecay << " /s, largest density deviation "
+             << 100 * r.largestDensityDeviation << " %, " << r.steps << " steps in " << r.seconds
+             << " s";
+}
+
+// A droplet at rest, round, relaxed under its surface tension: the pressure inside (the mean
+// over the inner half of the radius) against Laplace's jump, and the largest velocity left.
+struct StaticDropletResult {
+  std::size_t particles = 0;
+  double radius = 0, laplace = 0, jump = 0, spuriousVelocity = 0, capillaryVelocity = 0;
+  double steps = 0, seconds = 0;
+};
+
+StaticDropletResult staticDroplet(int d, int across, double relaxation, Real core,
+                                  double compression) {
+  const Real radius = 0.01, sigma = 0.07, rho = 1000, nu = 1e-4;
+  const Real dx = 2 * radius / across, h = 3 * dx;
+  const bool slab = std::getenv("SPHCAST_STATIC_SLAB") != nullptr;
+  ParticleCloud fluid = latticeFluid(
+      d, dx, Vector::Constant(-radius - dx), Vector::Constant(radius + dx),
+      [&](const Vector& x) { return slab ? std::abs(x[1]) < radius : x.norm() < radius; }, rho, rho * nu);
+  StaticDropletResult result;
+  result.particles = fluid.size();
+  result.radius = d == 2 ? std::sqrt(fluid.size() * dx * dx / std::numbers::pi)
+                         : std::cbrt(3 * fluid.size() * std::pow(dx, 3) / (4 * std::numbers::pi));
+  result.laplace = (d - 1) * sigma / result.radius;
+  result.capillaryVelocity = sigma / (rho * nu);
+  const Real factor = SurfaceEnergyTension::calibratedEnergyFactor(d, h, dx, core);
+  const Real c = std::sqrt(factor * sigma / (dx * rho * static_cast<Real>(compression)));
+  FlowSettings flow;
+  flow.dimension = d;
+  flow.supportRadius = h;
+  flow.soundSpeed = c;
+  if (slab) flow.periodic.setPeriodic(0, -radius - dx, 2 * radius + 2 * dx);
+  SurfaceTensionSettings tension;
+  tension.dimension = d;
+  tension.supportRadius = h;
+  tension.spacing = dx;
+  tension.gasTension = constantTension(sigma);
+  tension.coreRadius = core;
+  for (Real& r : fluid.scalarField("rho")) r = rho + static_cast<Real>(result.laplace) / (c * c);
+  CapillaryRun run(flow, tension, fluid, {});
+  const double end = relaxation * std::sqrt(rho * std::pow(radius, 3) / sigma);
+  const auto clockStart = std::chrono::steady_clock::now();
+  while (run.time < end) {
+    run.step(run.stableDeltaT());
+    ++result.steps;
+  }
+  result.seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - clockStart).count();
+  Vector centre = Vector::Zero();
+  for (const Vector& x : fluid.positions()) centre += x;
+  centre /= static_cast<Real>(fluid.size());
+  double pressure = 0;
+  int inner = 0;
+  for (std::size_t i = 0; i < fluid.size(); ++i) {
+    if ((slab ? std::abs(fluid.positions()[i][1] - centre[1]) : (fluid.positions()[i] - centre).norm()) < 0.5 * result.radius) {
+      pressure += fluid.scalarField("p")[i];
+      ++inner;
+    }
+    result.spuriousVelocity =
+        std::max(result.spuriousVelocity, static_cast<double>(fluid.vectorField("U")[i].norm()));
+  }
+  result.jump = pressure / inner;
+  return result;
+}
+
+TEST(StaticDroplet, Study) {
+  if (!std::getenv("SPHCAST_STATIC_STUDY")) GTEST_SKIP() << "set SPHCAST_STATIC_STUDY";
+  const int d = std::atoi(std::getenv("SPHCAST_STATIC_STUDY"));
+  const double core = std::getenv("SPHCAST_DROPLET_CORE") ? std::atof(std::getenv("SPHCAST_DROPLET_CORE")) : 1;
+  const double compression = std::getenv("SPHCAST_DROPLET_COMPRESSION") ? std::atof(std::getenv("SPHCAST_DROPLET_COMPRESSION")) : 0.01;
+  const double relaxation = std::getenv("SPHCAST_STATIC_RELAXATION") ? std::atof(std::getenv("SPHCAST_STATIC_RELAXATION")) : 4;
+  const int across = std::getenv("SPHCAST_DROPLET_ACROSS") ? std::atoi(std::getenv("SPHCAST_DROPLET_ACROSS")) : 20;
+  const StaticDropletResult r = staticDroplet(d, across, relaxation, static_cast<Real>(core), compression);
+  std::cout << d << "D static, " << across << " across, " << r.particles << " particles: jump "
+            << r.jump << " Pa against Laplace " << r.laplace << " (" << 100 * (r.jump / r.laplace - 1)
+            << " %), spurious velocity " << r.spuriousVelocity / r.capillaryVelocity
+            << " sigma/mu, " << r.steps << " steps in " << r.seconds << " s" << std::endl;
+}
+
+TEST(OscillatingDroplet, Study) {
+  if (!std::getenv("SPHCAST_DROPLET_STUDY")) GTEST_SKIP() << "set SPHCAST_DROPLET_STUDY";
+  const int d = std::atoi(std::getenv("SPHCAST_DROPLET_STUDY"));
+  const char* factor = std::getenv("SPHCAST_DROPLET_RD");
+  for (const int across : {std::atoi(std::getenv("SPHCAST_DROPLET_ACROSS") ? std::getenv("SPHCAST_DROPLET_ACROSS") : "20")}) {
+    DropletSetup setup;
+    setup.dimension = d;
+    setup.across = across;
+    setup.energyFactor = factor ? std::atof(factor) : 0;
+    if (const char* k = std::getenv("SPHCAST_DROPLET_COMPRESSION")) setup.surfaceCompression = std::atof(k);
+    if (const char* k = std::getenv("SPHCAST_DROPLET_PERIODS")) setup.periods = std::atof(k);
+    if (const char* k = std::getenv("SPHCAST_DROPLET_CORE")) setup.core = std::atof(k);
+    if (const char* k = std::getenv("SPHCAST_DROPLET_AMPLITUDE")) setup.amplitude = std::atof(k);
+    if (const char* k = std::getenv("SPHCAST_DROPLET_RELAX")) setup.relaxation = std::atof(k);
+    std::cout << "R_d " << SurfaceEnergyTension::calibratedEnergyFactor(d, std::getenv("SPHCAST_DROPLET_HDX") ? static_cast<Real>(std::atof(std::getenv("SPHCAST_DROPLET_HDX"))) : Real(3), 1, static_cast<Real>(setup.core)) << " ";
+    std::cout << d << "D, " << across << " across: " << oscillatingDroplet(setup) << std::endl;
+  }
+}
+
+}  // namespace
+}  // namespace sphcast
