@@ -3,7 +3,6 @@
 #include <cmath>
 #include <filesystem>
 #include <numbers>
-#include <sstream>
 
 #include "core/Error.h"
 #include "core/dictionary/Dictionary.h"
@@ -38,21 +37,20 @@ SurfaceTensionSetup readSurfaceTensionSetup(const CaseFolder& caseFolder, const 
   settings.supportRadius = flow.settings.supportRadius;
 
   if (dict.found("energyFactor")) {
-    std::istringstream word(dict.get<std::string>("energyFactor"));
+    const std::string mustBe =
+        "'energyFactor' must be 'calibrated' or a positive number in " + dict.name();
     double value = 0;
-    if (!(word >> value)) {
-      if (dict.get<std::string>("energyFactor") != "calibrated") {
-        throw DictionaryError(dict.location("energyFactor"),
-                              "'energyFactor' must be 'calibrated' or a positive number in " +
-                                  dict.name());
-      }
-    } else if (!(value > 0) || !word.eof()) {
-      throw DictionaryError(dict.location("energyFactor"),
-                            "'energyFactor' must be 'calibrated' or a positive number in " +
-                                dict.name());
-    } else {
-      settings.energyFactor = static_cast<Real>(value);
+    bool number = true;
+    try {
+      value = dict.get<double>("energyFactor");
+    } catch (const DictionaryError&) {
+      number = false;  // a word
     }
+    if (!number && dict.get<std::string>("energyFactor") != "calibrated") {
+      throw DictionaryError(dict.location("energyFactor"), mustBe);
+    }
+    if (number && !(value > 0)) throw DictionaryError(dict.location("energyFactor"), mustBe);
+    if (number) settings.energyFactor = static_cast<Real>(value);
   }
   if (dict.found("contactAngle") && dict.found("solidTension")) {
     throw DictionaryError(dict.location("solidTension"),
