@@ -8,6 +8,8 @@
 
 #include <cmath>
 
+#include <omp.h>
+
 #include "SurfaceTensionTestCases.h"
 #include "sph/ExposedArea.h"
 #include "sph/FlowTestCases.h"
@@ -191,6 +193,47 @@ TEST(SurfaceForce, SkippingInteriorPairsGivesTheSameBits) {
   for (std::size_t k = 0; k < all.size(); ++k) {
     ASSERT_EQ(all[k], surface[k]) << "particle " << k;
   }
+}
+
+// Both passes (s_i and the energy; the pair forces), beside a wetting wall, give the same bits
+// on one and two threads: each particle gathers over its own neighbours in a fixed order.
+TEST(SurfaceForce, SameBitsOnOneAndTwoThreads) {
+  const Real dx = 1e-3, h = 3 * dx;
+  auto forcesOn = [&](int threads) {
+    omp_set_num_threads(threads);
+    ParticleCloud fluid = latticeFluid(
+        3, dx, Vector(-8 * dx, -8 * dx, 0), Vector(8 * dx, 8 * dx, 8 * dx),
+        [&](const Vector& x) { return x.norm() < 7 * dx; }, 1000, 1e-3, 0.1);
+    ParticleCloud wall = testing::emptyWall();
+    for (int k = -10; k < 10; ++k) {  // a floor of three layers under the half ball
+      testing::addWallCells(
+          wall, -10, 10, -3, 0, dx, Vector(0, 0, (k + Real(0.5)) * dx),
+          [](int, int) { return Vector(0, 1, 0); },
+          [dx](int, int row) { return (-row - Real(0.5)) * dx; });
+    }
+    for (Vector& x : wall.positions()) x = Vector(x[0], x[2], x[1]);  // the floor in z = 0
+    for (Vector& n : wall.vectorField("normal")) n = Vector(0, 0, 1);
+    Neighbourhood neighbourhood(h, PeriodicBox());
+    neighbourhood.addCloud(fluid, Neighbourhood::Motion::moving);
+    neighbourhood.addFixedCloud(wall);
+    SurfaceTensionSettings settings;
+    settings.supportRadius = h;
+    settings.spacing = dx;
+    settings.gasTension = constantTension(0.07);
+    settings.cosContactAngle = Real(0.5);
+    SurfaceEnergyTension tension(settings, fluid, {&wall}, neighbourhood);
+    neighbourhood.update(CloudOrder::keep);
+    return forces(tension, fluid);
+  };
+  const std::vector<Vector> one = forcesOn(1);
+  const std::vector<Vector> two = forcesOn(2);
+  omp_set_num_threads(1);
+  Real wallPull = 0;
+  for (std::size_t k = 0; k < one.size(); ++k) {
+    ASSERT_EQ(one[k], two[k]) << "particle " << k;
+    wallPull += one[k][2];
+  }
+  EXPECT_LT(wallPull, 0);  // the wall term ran: a wetting floor pulls the drop down
 }
 
 // A flat free surface (a periodic slab, two faces) carries Gamma_g per unit length with the

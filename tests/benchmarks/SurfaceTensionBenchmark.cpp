@@ -1,0 +1,115 @@
+// The surface-energy surface tension (surface/SurfaceEnergyTension.h) on a 3D ball of liquid
+// metal at rest (AC4CH's rho and Gamma_g, h = 3 dx), at 1e4 and 1e5 particles:
+//   SurfaceTensionPass: the model's two passes alone (s_i and the energy, then the pair forces),
+//     skipping the pairs inside the liquid (surfaceOnly) or not (allPairs);
+//   FlowStep: a whole flow step over one shared neighbourhood, with and without the surface
+//     tension.
+// Reports particle-steps/s (items).
+#include <benchmark/benchmark.h>
+
+#include <cmath>
+#include <numbers>
+#include <string>
+
+#include "core/dictionary/Dictionary.h"
+#include "materials/MaterialLibrary.h"
+#include "particles/Neighbourhood.h"
+#include "sph/WeaklyCompressibleFlow.h"
+#include "surface/SurfaceEnergyTension.h"
+
+namespace {
+
+using sphcast::Real;
+using sphcast::Vector;
+
+constexpr Real dx = Real(1.5e-3);
+
+sphcast::ParticleCloud ball(long count) {
+  const Real radius = dx * Real(std::cbrt(3.0 * double(count) / (4 * std::numbers::pi)));
+  const int reach = static_cast<int>(std::ceil(radius / dx));
+  sphcast::ParticleCloud fluid("metal");
+  std::vector<Vector> points;
+  for (int k = -reach; k <= reach; ++k) {
+    for (int j = -reach; j <= reach; ++j) {
+      for (int i = -reach; i <= reach; ++i) {
+        const Vector x = dx * Vector(i + Real(0.5), j + Real(0.5), k + Real(0.5));
+        if (x.norm() < radius) points.push_back(x);
+      }
+    }
+  }
+  fluid.resize(points.size());
+  auto& U = fluid.addVectorField("U");
+  auto& rho = fluid.addScalarField("rho");
+  auto& mass = fluid.addScalarField("mass");
+  auto& mu = fluid.addScalarField("viscosity");
+  auto& rest = fluid.addScalarField("restDensity");
+  fluid.addVectorField("acceleration");
+  fluid.addScalarField("densityRate");
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    fluid.positions()[i] = points[i];
+    U[i] = Vector::Zero();
+    rho[i] = rest[i] = Real(2398.8);
+    mass[i] = rho[i] * dx * dx * dx;
+    mu[i] = Real(1.28e-3);
+  }
+  fluid.attributes()["spacing"] = double(dx);
+  return fluid;
+}
+
+sphcast::SurfaceTensionSettings tensionSettings(bool surfaceOnly) {
+  const sphcast::MaterialLibrary library = sphcast::MaterialLibrary::fromDictionary(
+      sphcast::Dictionary::parse("AC4CH { surfaceTension 0.89; }", "physicalProperties"),
+      "physicalProperties");
+  sphcast::SurfaceTensionSettings settings;
+  settings.dimension = 3;
+  settings.supportRadius = 3 * dx;
+  settings.spacing = dx;
+  settings.gasTension = *library.get("AC4CH", sphcast::SourceLocation{}, "benchmark").surfaceTension;
+  settings.surfaceParticlesOnly = surfaceOnly;
+  return settings;
+}
+
+void SurfaceTensionPass(benchmark::State& state, bool surfaceOnly) {
+  auto fluid = ball(state.range(0));
+  sphcast::Neighbourhood neighbourhood(3 * dx, sphcast::PeriodicBox());
+  neighbourhood.addCloud(fluid, sphcast::Neighbourhood::Motion::moving);
+  sphcast::SurfaceEnergyTension tension(tensionSettings(surfaceOnly), fluid, {}, neighbourhood);
+  neighbourhood.update();
+  for (auto _ : state) tension.addAcceleration();
+  state.SetItemsProcessed(state.iterations() * static_cast<long>(fluid.size()));
+  state.counters["particles"] = double(fluid.size());
+}
+BENCHMARK_CAPTURE(SurfaceTensionPass, surfaceOnly, true)
+    ->Arg(10'000)->Arg(100'000)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_CAPTURE(SurfaceTensionPass, allPairs, false)
+    ->Arg(10'000)->Arg(100'000)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+void FlowStep(benchmark::State& state, bool withTension) {
+  auto fluid = ball(state.range(0));
+  sphcast::FlowSettings settings;
+  settings.dimension = 3;
+  settings.supportRadius = 3 * dx;
+  settings.soundSpeed = 50;
+  sphcast::Neighbourhood neighbourhood(3 * dx, sphcast::PeriodicBox());
+  neighbourhood.addCloud(fluid, sphcast::Neighbourhood::Motion::moving);
+  sphcast::WeaklyCompressibleFlow flow(settings, fluid, {}, neighbourhood);
+  sphcast::SurfaceEnergyTension tension(tensionSettings(true), fluid, {}, neighbourhood);
+  if (withTension) flow.addForceModel(tension);
+  neighbourhood.update();
+  flow.start();
+  std::string limiter;
+  const double deltaT = flow.stepLimits(0.25).smallest(limiter);
+  for (auto _ : state) {
+    flow.kickAndDrift(deltaT);
+    neighbourhood.update();
+    flow.computeRatesAndKick(deltaT);
+  }
+  state.SetItemsProcessed(state.iterations() * static_cast<long>(fluid.size()));
+  state.counters["particles"] = double(fluid.size());
+}
+BENCHMARK_CAPTURE(FlowStep, flowAlone, false)
+    ->Arg(10'000)->Arg(100'000)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_CAPTURE(FlowStep, withSurfaceTension, true)
+    ->Arg(10'000)->Arg(100'000)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+}  // namespace
