@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <filesystem>
 #include <limits>
 #include <new>
@@ -193,7 +194,7 @@ void CastingSolver::setUpFlow() {
                      : "contact angle " +
                            std::to_string(std::acos(static_cast<double>(
                                tension.cosContactAngle ? *tension.cosContactAngle : Real(-1))) *
-                                          180 / 3.14159265358979323846) +
+                                          180 / std::numbers::pi) +
                            " degrees")
              << ", chi over " << (tension.wallSmoothing > 0 ? tension.wallSmoothing : tension.supportRadius)
              << " m\n";

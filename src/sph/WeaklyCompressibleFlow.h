@@ -93,10 +93,8 @@ class WeaklyCompressibleFlow {
   FlowStepLimits stepLimits(double maxCo) const;
 
   // A force the flow adds at every evaluation of the rates, after its own (surface tension);
-  // the model must outlive the flow.
+  // the model must stay alive while the flow steps.
   void addForceModel(FluidForceModel& model) { forceModels_.push_back(&model); }
-  // The pairs the flow searches with (its own, or the shared one): force models register there.
-  Neighbourhood& neighbourhood() { return neighbourhood_; }
 
   // One whole kick-drift-kick step of deltaT (a flow with its own neighbourhood).
   void step(double deltaT);

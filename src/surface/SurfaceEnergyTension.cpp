@@ -99,21 +99,36 @@ void SurfaceEnergyTension::updateGasTension() {
       gasTension_[i] = static_cast<Real>(table(static_cast<double>(temperature[i])));
     }
   }
+  largestTension_ = largestTension(gasTension_);
+}
+
+double SurfaceEnergyTension::largestTension(const std::vector<Real>& gasTension) const {
   Real largest = 0;
-  for (const Real gamma : gasTension_) {
+  for (const Real gamma : gasTension) {
     largest = std::max({largest, gamma, std::abs(solidTension(gamma))});
   }
-  largestTension_ = static_cast<double>(largest);
+  return static_cast<double>(largest);
 }
 
 double SurfaceEnergyTension::stableDeltaT() const {
-  if (largestTension_ < 0) const_cast<SurfaceEnergyTension*>(this)->updateGasTension();
-  if (!(largestTension_ > 0)) return std::numeric_limits<double>::max();
+  double largest = largestTension_;
+  if (largest < 0) {  // before the first pass (a restart): Gamma_g at the particles' T now
+    const TemperatureTable& table = *settings_.gasTension;
+    std::vector<Real> gamma(fluid_.size(), static_cast<Real>(table(0)));
+    if (!table.isConstant()) {
+      const auto& temperature = fluid_.scalarField("T");
+      for (std::size_t i = 0; i < gamma.size(); ++i) {
+        gamma[i] = static_cast<Real>(table(static_cast<double>(temperature[i])));
+      }
+    }
+    largest = largestTension(gamma);
+  }
+  if (!(largest > 0)) return std::numeric_limits<double>::max();
   const auto& rho = fluid_.scalarField("rho");
   const double lightest =
       rho.empty() ? 0 : static_cast<double>(*std::min_element(rho.begin(), rho.end()));
   const double dx = static_cast<double>(settings_.spacing);
-  return 0.25 * std::sqrt(lightest * dx * dx * dx / (2 * std::numbers::pi * largestTension_));
+  return 0.25 * std::sqrt(lightest * dx * dx * dx / (2 * std::numbers::pi * largest));
 }
 
 // s_i, the wall distance, e_i and phi_i of every particle (the first pass).

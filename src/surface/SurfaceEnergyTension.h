@@ -38,12 +38,12 @@ struct SurfaceTensionSettings {
 
 // Surface tension from the surface energy (paper §3, eqs. (6)-(12); doc/physics.md §10.1):
 //
-//   s_i   = sum_j V_j W(|x_i - x_j|, h)     over the fluid only, i included                (7)
+//   s_i   = sum_j V_j W_s(|x_i - x_j|)      over the fluid only, i included                (7)
 //   E_s,p = sum_i R_d g(1 - s_i, 1 - s_min,i) Gamma_i(l_i) V_i^(1 - 1/d)                   (8)
 //   Gamma_i = Gamma_g chi(l_i, eps) + Gamma_s (1 - chi(l_i, eps))                          (9)
 //   f_s,k = -dE_s,p / dx_k                                                                 (12)
 //
-// with g of eq. (10) (sph/ExposedArea.h: exposureWeight), s_min,i = V_i W(0, h), V = m / rho,
+// with g of eq. (10) (sph/ExposedArea.h: exposureWeight), s_min,i = V_i W_s(0), V = m / rho,
 // and l_i the distance of particle i from the wall surface (particles/WallSurfaceDistance.h,
 // from the wall particles' normals and depths). The sum for s counts the fluid alone: a face
 // against the mold is a surface too, one that costs Gamma_s instead of Gamma_g; that is what
@@ -57,6 +57,12 @@ struct SurfaceTensionSettings {
 // wall's pull (n_k: the wall normal at k, the gradient of l). V and Gamma_g(T) are constants of
 // the positions (rho comes from the continuity equation). The energy falls along the flow of
 // this force; tests/unit/surface checks it against a finite difference of energy().
+//
+// W_s is not the paper's W (GranularityKernel below; doc/physics.md §10.1): with W the energy
+// falls when two surface particles merge, the pair attraction has the shape of their pressure
+// repulsion, and the surface clumps in pairs (a 2D drop at rest goes non-finite within 10^5
+// steps). W_s pushes pairs closer than 0.7 dx apart, and is normalised so that s = 1 inside a
+// fluid on the lattice.
 //
 // Reads the fluid's positions, mass, rho, T (when Gamma_g is a table); the walls' normal and
 // wallDistance (as the flow does). Adds to `acceleration`; writes the field `surfaceEnergy`
@@ -81,9 +87,9 @@ class SurfaceEnergyTension : public FluidForceModel {
   Real solidTension(Real gasTension) const;
 
   // R_d that makes the energy of a flat free surface of a cubic lattice Gamma_g per unit area:
-  // R_d = 1 / sum_k g_k / R_d down a column of the lattice under the surface (the exposed
-  // area's calibration of eq. (11), sph/ExposedArea.h). At h = 3 dx: 59.2 in 3D, 44.3 in 2D;
-  // the paper's R_3 = 41.3 and R_2 = 41.4 give 70 % and 94 % of Gamma_g on that surface.
+  // R_d = 1 / sum_k g_k / R_d down a column of the lattice under the surface. At h = 3 dx with
+  // the default core: 32.3 in 2D, 50.7 in 3D; the paper's R_2 = 41.4 and R_3 = 41.3 give 128 %
+  // and 81 % of Gamma_g on that surface.
   static Real calibratedEnergyFactor(int dimension, Real supportRadius, Real spacing,
                                      Real coreRadius);
 
@@ -93,6 +99,7 @@ class SurfaceEnergyTension : public FluidForceModel {
   template <int Dim>
   void addForces();
   void updateGasTension();
+  double largestTension(const std::vector<Real>& gasTension) const;  // of Gamma_g and |Gamma_s|
 
   SurfaceTensionSettings settings_;
   Real energyFactor_;
@@ -105,7 +112,7 @@ class SurfaceEnergyTension : public FluidForceModel {
   std::vector<Real> gasTension_;
   std::vector<Real> energyDerivative_;  // phi_i = dE/ds_i
   std::vector<Vector> wallForce_;       // -R_d g V^(1-1/d) dGamma/dl n
-  mutable double largestTension_ = -1;  // of the last pass (-1: none yet)
+  double largestTension_ = -1;  // of the last pass (-1: none yet)
   double seconds_ = 0;
 };
 
