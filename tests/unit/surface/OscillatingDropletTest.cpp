@@ -214,7 +214,8 @@ struct StaticDropletResult {
 StaticDropletResult staticDroplet(int d, int across, double relaxation, Real core,
                                   double compression) {
   const Real radius = 0.01, sigma = 0.07, rho = 1000, nu = 1e-4;
-  const Real dx = 2 * radius / across, h = 3 * dx;
+  const Real dx = 2 * radius / across;
+  const Real h = static_cast<Real>(option("SPHCAST_DROPLET_HDX", 3)) * dx;
   const bool slab = std::getenv("SPHCAST_STATIC_SLAB") != nullptr;
   ParticleCloud fluid = latticeFluid(
       d, dx, Vector::Constant(-radius - dx), Vector::Constant(radius + dx),
