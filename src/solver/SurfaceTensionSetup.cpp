@@ -24,7 +24,7 @@ SurfaceTensionSetup readSurfaceTensionSetup(const CaseFolder& caseFolder, const 
   if (!models.found("surfaceTension")) return setup;
   const Dictionary& dict = models.subDict("surfaceTension");
   dict.checkKeys({"model", "energyFactor", "contactAngle", "solidTension", "wallSmoothing",
-                  "coreRadius"});
+                  "coreRadius", "densityCoupling"});
   if (dict.getChoice("model", {"none", "surfaceEnergy"}) == "none") return setup;
   if (!flow.enabled) {
     throw DictionaryError(dict.location("model"),
@@ -83,6 +83,9 @@ SurfaceTensionSetup readSurfaceTensionSetup(const CaseFolder& caseFolder, const 
                                 dict.name());
     }
   }
+
+  settings.densityCoupling =
+      dict.getChoiceOrDefault("densityCoupling", {"on", "off"}, "on") == "on";
 
   const MaterialLibrary materials =
       MaterialLibrary::read(caseFolder.constantFile("physicalProperties"));

@@ -20,6 +20,8 @@ namespace sphcast {
 //                                     // or solidTension 0.45 (Gamma_s, N/m); 180 by default
 //       wallSmoothing 0.0045;         // eps of eq. (9), m; supportRadius by default
 //       coreRadius    1;              // r0 of the granularity kernel, in spacings (1 by default)
+//       densityCoupling on;           // on | off: the energy's change through the densities
+//                                     // as a pressure (on by default; off only to compare)
 //   }
 //
 // Gamma_g(T) is the fluid material's surfaceTension (constant/physicalProperties). The surface

@@ -145,6 +145,7 @@ void SurfaceEnergyTension::computeEnergy() {
   updateGasTension();
   volume_ = particleVolumes(fluid_);
   energyDerivative_.resize(n);
+  explicitDensityDerivative_.resize(n);
   wallForce_.resize(n);
   const auto& x = fluid_.positions();
   auto& energy = fluid_.scalarField("surfaceEnergy");
@@ -186,6 +187,12 @@ void SurfaceEnergyTension::computeEnergy() {
       // dg(1 - s)/ds = -g_p
       energyDerivative_[i] = -energyFactor * exposureWeightSlope(p, q) * tension * area;
       wallForce_[i] = (-weight * area * (gas - solid) * chiSlope) * normal;
+      // e_i depends on rho_i also through q_i = 1 - V_i W(0) and V_i^(1-1/d), V_i = m_i / rho_i:
+      // rho_i de_i/drho_i = R_d Gamma_i V_i^(1-1/d) (g_q V_i W(0) - (1 - 1/d) g)
+      explicitDensityDerivative_[i] =
+          energyFactor * tension * area *
+          (exposureWeightSlopeInQ(p, q) * volume_[i] * selfKernel -
+           exposureWeight(p, q) * areaExponent);
     }
   };
   if (periodic.anyPeriodic()) {
@@ -195,7 +202,52 @@ void SurfaceEnergyTension::computeEnergy() {
   }
 }
 
-// f_k = -sum_j (phi_k V_j + phi_j V_k) grad_k W_kj + the wall's pull (the second pass).
+// Psi_j = dE/drho_j = -(V_j / rho_j) (phi_j W_s(0) + sum_i phi_i W_s,ij) + the explicit part
+// (s_i holds V_j = m_j / rho_j of every neighbour j, and of i itself).
+template <int Dim>
+void SurfaceEnergyTension::computeDensityDerivative() {
+  const GranularityKernel<Dim> kernel(settings_.supportRadius, settings_.spacing,
+                                      settings_.coreRadius * settings_.spacing);
+  const Real selfKernel = kernel.value(0);
+  const std::size_t n = fluid_.size();
+  densityDerivative_.resize(n);
+  const auto& x = fluid_.positions();
+  const auto& rho = fluid_.scalarField("rho");
+  const NeighbourList& pairs = neighbourhood_.pairs(fluid_, fluid_);
+  const PeriodicBox periodic = neighbourhood_.periodicBox();
+  const Real* phi = energyDerivative_.data();
+  auto passWith = [&](auto separation) {
+#pragma omp parallel for schedule(static)
+    for (std::size_t j = 0; j < n; ++j) {
+      Real sum = phi[j] * selfKernel;
+      for (const std::uint32_t i : pairs.of(j)) {
+        if (phi[i] == Real(0)) continue;
+        sum += phi[i] * kernel.value(separation(x[j], x[i]).norm());
+      }
+      densityDerivative_[j] = -volume_[j] / rho[j] * sum + explicitDensityDerivative_[j] / rho[j];
+    }
+  };
+  if (periodic.anyPeriodic()) {
+    passWith([periodic](const Vector& a, const Vector& b) { return periodic.separation(a, b); });
+  } else {
+    passWith([](const Vector& a, const Vector& b) { return Vector(a - b); });
+  }
+}
+
+std::vector<Real> SurfaceEnergyTension::densityDerivative() {
+  if (settings_.dimension == 2) {
+    computeEnergy<2>();
+    computeDensityDerivative<2>();
+  } else {
+    computeEnergy<3>();
+    computeDensityDerivative<3>();
+  }
+  return densityDerivative_;
+}
+
+// f_k = -sum_j (phi_k V_j + phi_j V_k) grad_k W_s,kj + the wall's pull (the second pass); with
+// densityCoupling also the pressure p_j = rho_j^2 Psi_j / m_j in the form of the momentum
+// equation, -sum_j (Psi_k m_j + Psi_j m_k) grad_k W_kj, with the flow's kernel W.
 template <int Dim>
 void SurfaceEnergyTension::addForces() {
   const GranularityKernel<Dim> kernel(settings_.supportRadius, settings_.spacing,
@@ -209,18 +261,31 @@ void SurfaceEnergyTension::addForces() {
   const bool surfaceOnly = settings_.surfaceParticlesOnly;
   const Real* phi = energyDerivative_.data();
   const Real* volume = volume_.data();
+  const bool coupling = settings_.densityCoupling;
+  if (coupling) computeDensityDerivative<Dim>();
+  const Real* psi = coupling ? densityDerivative_.data() : nullptr;
+  const WendlandC2Kernel<Dim> flowKernel(settings_.supportRadius);
   auto passWith = [&](auto separation) {
 #pragma omp parallel for schedule(static)
     for (std::size_t k = 0; k < n; ++k) {
       Vector force = wallForce_[k];
       const Real phiK = phi[k];
       const Real volumeK = volume[k];
+      const Real psiK = coupling ? psi[k] : Real(0);
       for (const std::uint32_t j : pairs.of(k)) {
+        const Real psiJ = coupling ? psi[j] : Real(0);
         // inside the fluid both ends have g = 0: no force, no kernel to evaluate
-        if (surfaceOnly && phiK == Real(0) && phi[j] == Real(0)) continue;
+        if (surfaceOnly && phiK == Real(0) && phi[j] == Real(0) && psiK == Real(0) &&
+            psiJ == Real(0)) {
+          continue;
+        }
         const Vector xkj = separation(x[k], x[j]);
         const Real r = xkj.norm();
-        force -= ((phiK * volume[j] + phi[j] * volumeK) * kernel.derivativeOverDistance(r)) * xkj;
+        Real coefficient = (phiK * volume[j] + phi[j] * volumeK) * kernel.derivativeOverDistance(r);
+        if (coupling) {
+          coefficient += (psiK * mass[j] + psiJ * mass[k]) * flowKernel.derivativeOverDistance(r);
+        }
+        force -= coefficient * xkj;
       }
       acceleration[k] += force / mass[k];
     }

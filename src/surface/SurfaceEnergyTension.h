@@ -31,6 +31,12 @@ struct SurfaceTensionSettings {
   Real wallSmoothing = 0;
   // r0 of the granularity kernel (GranularityKernel), in spacings
   Real coreRadius = 1;
+  // The energy depends on the densities too (V_j = m_j / rho_j in s_i, q_i, V_i^(1-1/d)); the
+  // continuity equation changes them as the particles move, and that part of -dE/dt acts as a
+  // pressure p_j = rho_j^2 Psi_j / m_j, Psi_j = dE/drho_j. Without it (off only to compare) the
+  // force is -dE/dx at fixed densities alone, and the surface layer's crowding is resisted by
+  // nothing in the energy: the static drop's pressure came out 10 times Laplace's.
+  bool densityCoupling = true;
   // Skip the pairs that carry no force (both ends inside the fluid, where g = 0); off only to
   // measure what it saves.
   bool surfaceParticlesOnly = true;
@@ -54,9 +60,17 @@ struct SurfaceTensionSettings {
 //   f_s,k = -sum_j (phi_k V_j + phi_j V_k) grad_k W_kj  -  R_d g_k V_k^(1 - 1/d) dGamma/dl n_k
 //
 // whose pair part is antisymmetric (momentum conserved pair by pair) and whose last part is the
-// wall's pull (n_k: the wall normal at k, the gradient of l). V and Gamma_g(T) are constants of
-// the positions (rho comes from the continuity equation). The energy falls along the flow of
-// this force; tests/unit/surface checks it against a finite difference of energy().
+// wall's pull (n_k: the wall normal at k, the gradient of l). Gamma_g(T) is a constant of the
+// positions; V = m / rho is one too, but rho changes by the continuity equation as the particles
+// move, and E with it: that part, Psi_j = dE/drho_j, enters as the pressure
+// p_j = rho_j^2 Psi_j / m_j of the momentum equation (densityCoupling),
+//
+//   f_k += -sum_j (Psi_k m_j + Psi_j m_k) grad_k W_kj          (W: the flow's kernel)
+//
+// so that the surface layer's crowding, which lowers s-energy, costs what it changes in the
+// densities. Without it the static 2D drop's pressure was 4.5 to 10 times Laplace's; with it,
+// 0.47 to 1.14 times (doc/validation.md §2). tests/unit/surface checks -dE/dx (at fixed rho)
+// and Psi against finite differences of energy().
 //
 // W_s is not the paper's W (GranularityKernel below; doc/physics.md §10.1): with W the energy
 // falls when two surface particles merge, the pair attraction has the shape of their pressure
@@ -83,6 +97,8 @@ class SurfaceEnergyTension : public FluidForceModel {
   // E_s,p of eq. (8) at the neighbourhood's last update, summed in particle order.
   double energy();
   Real energyFactor() const { return energyFactor_; }
+  // Psi_j = dE/drho_j of every particle, at the positions of the last energy() (for the tests).
+  std::vector<Real> densityDerivative();
   // Gamma_s at temperature T (N/m).
   Real solidTension(Real gasTension) const;
 
@@ -98,6 +114,8 @@ class SurfaceEnergyTension : public FluidForceModel {
   void computeEnergy();
   template <int Dim>
   void addForces();
+  template <int Dim>
+  void computeDensityDerivative();
   void updateGasTension();
   double largestTension(const std::vector<Real>& gasTension) const;  // of Gamma_g and |Gamma_s|
 
@@ -112,6 +130,8 @@ class SurfaceEnergyTension : public FluidForceModel {
   std::vector<Real> gasTension_;
   std::vector<Real> energyDerivative_;  // phi_i = dE/ds_i
   std::vector<Vector> wallForce_;       // -R_d g V^(1-1/d) dGamma/dl n
+  std::vector<Real> densityDerivative_;          // Psi_j = dE/drho_j (densityCoupling)
+  std::vector<Real> explicitDensityDerivative_;  // rho_j times its part through q_j, V_j^(1-1/d)
   double largestTension_ = -1;  // of the last pass (-1: none yet)
   double seconds_ = 0;
 };
@@ -172,6 +192,14 @@ inline Real exposureWeightSlope(Real p, Real q) {
   if (p >= q) return Real(1);
   const Real ratio = p / q;
   return ratio * ratio * (Real(3) - Real(2) * ratio);
+}
+
+// dg/dq / R_d of eq. (10): -1/2 for p >= q, (p/q)^3 (3/2 p/q - 2) for 0 <= p < q, 0 below.
+inline Real exposureWeightSlopeInQ(Real p, Real q) {
+  if (!(p > Real(0))) return Real(0);
+  if (p >= q) return Real(-0.5);
+  const Real ratio = p / q;
+  return ratio * ratio * ratio * (Real(1.5) * ratio - Real(2));
 }
 
 // chi(l, eps) of eq. (9) and its derivative in l.

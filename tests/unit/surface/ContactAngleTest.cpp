@@ -39,8 +39,9 @@ struct SettledDrop {
   double closest = 0;  // nearest pair, in spacings
 };
 
-// A block of width x height particles on a wall at y = 0, settled with its velocities damped.
-SettledDrop settle(double degrees, int width, int height, double capillaryTimes) {
+// A block of width x height particles on a wall at y = 0, settled with its velocities damped
+// (multiplied by `damping` every step).
+SettledDrop settle(double degrees, int width, int height, double capillaryTimes, Real damping) {
   const Real sigma = 0.07, rho = 1000, nu = 1e-5, dx = 5e-4, h = 3 * dx;
   ParticleCloud fluid = latticeFluid(
       2, dx, Vector(-width * dx / 2, 0, 0), Vector(width * dx / 2, height * dx, 0),
@@ -69,7 +70,7 @@ SettledDrop settle(double degrees, int width, int height, double capillaryTimes)
   const auto start = std::chrono::steady_clock::now();
   while (run.time < end) {
     run.step(run.stableDeltaT());
-    for (Vector& u : fluid.vectorField("U")) u *= Real(0.995);
+    for (Vector& u : fluid.vectorField("U")) u *= damping;
     ++result.steps;
   }
   result.seconds =
@@ -91,9 +92,12 @@ TEST(ContactAngle, Study) {
   if (!std::getenv("SPHCAST_CONTACT_STUDY")) GTEST_SKIP() << "set SPHCAST_CONTACT_STUDY";
   const int width = std::atoi(std::getenv("SPHCAST_CONTACT_STUDY"));
   const double times =
-      std::getenv("SPHCAST_CONTACT_TIMES") ? std::atof(std::getenv("SPHCAST_CONTACT_TIMES")) : 6;
+      std::getenv("SPHCAST_CONTACT_TIMES") ? std::atof(std::getenv("SPHCAST_CONTACT_TIMES")) : 12;
   for (const double degrees : {60.0, 90.0, 150.0, 180.0}) {
-    const SettledDrop drop = settle(degrees, width, width / 2, times);
+    const Real damping = static_cast<Real>(
+        std::getenv("SPHCAST_CONTACT_DAMPING") ? std::atof(std::getenv("SPHCAST_CONTACT_DAMPING"))
+                                               : 0.9995);
+    const SettledDrop drop = settle(degrees, width, width / 2, times, damping);
     std::cout << "theta " << degrees << ": measured " << drop.angle << " degrees, nearest pair "
               << drop.closest << " dx, " << drop.steps << " steps in " << drop.seconds << " s"
               << std::endl;

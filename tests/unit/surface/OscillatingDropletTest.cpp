@@ -13,7 +13,8 @@
 //   SPHCAST_DROPLET_STUDY=2|3 (oscillating) or SPHCAST_STATIC_STUDY=2|3 (static), the dimension;
 //   SPHCAST_DROPLET_ACROSS (20), _AMPLITUDE (a0/R, 0.05), _PERIODS (of Lamb's, 2), _RELAX
 //   (capillary times, 2), _COMPRESSION (R_d Gamma / (rho c^2 dx), 0.01), _CORE (r0/dx, 1),
-//   _HDX (h/dx, 3), _RD (R_d, calibrated), _SCHEME (densityScheme), _TRACE (print every N steps);
+//   _HDX (h/dx, 3), _RD (R_d, calibrated), _SCHEME (densityScheme), _TRACE (print every N steps),
+//   _COUPLING (0: without the density coupling);
 //   SPHCAST_STATIC_RELAXATION (capillary times, 4), SPHCAST_STATIC_SLAB (a periodic flat slab).
 
 #include <gtest/gtest.h>
@@ -107,6 +108,7 @@ DropletResult oscillatingDroplet(const DropletSetup& setup) {
   tension.supportRadius = h;
   tension.spacing = dx;
   tension.gasTension = constantTension(sigma);
+  tension.densityCoupling = option("SPHCAST_DROPLET_COUPLING", 1) > 0;
   tension.energyFactor = setup.energyFactor;
   tension.coreRadius = static_cast<Real>(setup.core);
   const Real A = setup.amplitude * omegaLamb;  // a0 omega / R
@@ -240,6 +242,7 @@ StaticDropletResult staticDroplet(int d, int across, double relaxation, Real cor
   tension.supportRadius = h;
   tension.spacing = dx;
   tension.gasTension = constantTension(sigma);
+  tension.densityCoupling = option("SPHCAST_DROPLET_COUPLING", 1) > 0;
   tension.coreRadius = core;
   for (Real& r : fluid.scalarField("rho")) r = rho + static_cast<Real>(result.laplace) / (c * c);
   CapillaryRun run(flow, tension, fluid, {});

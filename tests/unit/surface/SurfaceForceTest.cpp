@@ -73,6 +73,7 @@ TEST_P(SurfaceForceIsTheEnergyGradient, ForEveryParticleOfAJitteredDroplet) {
   settings.supportRadius = h;
   settings.spacing = dx;
   settings.gasTension = constantTension(0.07);
+  settings.densityCoupling = false;  // -dE/dx at fixed densities (the coupling: below)
   SurfaceEnergyTension tension(settings, fluid, {}, neighbourhood);
   neighbourhood.update(CloudOrder::keep);
   const std::vector<Vector> f = forces(tension, fluid);
@@ -120,6 +121,7 @@ TEST(SurfaceForce, IsTheEnergyGradientBesideAWettingWall) {
   settings.supportRadius = h;
   settings.spacing = dx;
   settings.gasTension = constantTension(0.07);
+  settings.densityCoupling = false;  // -dE/dx at fixed densities (the coupling: below)
   settings.cosContactAngle = Real(0.5);
   SurfaceEnergyTension tension(settings, fluid, {&wall}, neighbourhood);
   neighbourhood.update(CloudOrder::keep);
@@ -138,7 +140,47 @@ TEST(SurfaceForce, IsTheEnergyGradientBesideAWettingWall) {
   EXPECT_LT(wallPull, -1e-3 * largest);  // a wetting wall pulls the drop onto it
 }
 
-// Without walls the forces are pair forces, equal and opposite: the total is zero to round-off.
+// dE/drho_j, which the density coupling turns into a pressure, against central differences of
+// the energy in rho_j, for every particle of a jittered 3D drop and of a 2D drop on a wall.
+TEST(SurfaceEnergy, DensityDerivativeIsTheDerivativeOfTheEnergy) {
+  const Real dx = 1e-3, h = 3 * dx;
+  for (const int d : {2, 3}) {
+    const Real radius = (d == 2 ? 6 : 3.6) * dx;
+    ParticleCloud fluid = latticeFluid(
+        d, dx, Vector::Constant(-radius - dx), Vector::Constant(radius + dx),
+        [&](const Vector& x) { return x.norm() < radius; }, 1000, 1e-3, 0.15);
+    for (std::size_t i = 0; i < fluid.size(); ++i) {  // densities a few per cent apart
+      fluid.scalarField("rho")[i] = 1000 * (1 + Real(0.03) * std::sin(Real(i)));
+    }
+    Neighbourhood neighbourhood(h, PeriodicBox());
+    neighbourhood.addCloud(fluid, Neighbourhood::Motion::moving);
+    SurfaceTensionSettings settings;
+    settings.dimension = d;
+    settings.supportRadius = h;
+    settings.spacing = dx;
+    settings.gasTension = constantTension(0.07);
+    SurfaceEnergyTension tension(settings, fluid, {}, neighbourhood);
+    neighbourhood.update(CloudOrder::keep);
+    const std::vector<Real> psi = tension.densityDerivative();
+    Real largest = 0, worst = 0;
+    for (const Real value : psi) largest = std::max(largest, std::abs(value));
+    ASSERT_GT(largest, 0);
+    for (std::size_t j = 0; j < fluid.size(); ++j) {
+      Real& rho = fluid.scalarField("rho")[j];
+      const Real rho0 = rho, delta = Real(1e-6) * rho0;
+      rho = rho0 + delta;
+      const double plus = tension.energy();
+      rho = rho0 - delta;
+      const double minus = tension.energy();
+      rho = rho0;
+      worst = std::max(worst, std::abs(static_cast<Real>((plus - minus) / (2 * delta)) - psi[j]));
+    }
+    EXPECT_LT(worst, 1e-6 * largest) << d << "D";
+  }
+}
+
+// Without walls the forces are pair forces, equal and opposite, along x_kj (the density
+// coupling's too): the total force and torque are zero to round-off.
 TEST(SurfaceForce, ConservesMomentumPairByPair) {
   const Real dx = 1e-3, h = 3 * dx, radius = 8 * dx;
   ParticleCloud fluid = latticeFluid(
