@@ -211,6 +211,7 @@ struct StaticDropletResult {
   std::size_t particles = 0;
   double radius = 0, laplace = 0, jump = 0, spuriousVelocity = 0, capillaryVelocity = 0;
   double steps = 0, seconds = 0;
+  double energyRatio = 0;  // E_s against Gamma times the surface's length (area in 3D)
 };
 
 StaticDropletResult staticDroplet(int d, int across, double relaxation, Real core,
@@ -269,6 +270,11 @@ StaticDropletResult staticDroplet(int d, int across, double relaxation, Real cor
         std::max(result.spuriousVelocity, static_cast<double>(fluid.vectorField("U")[i].norm()));
   }
   result.jump = pressure / inner;
+  const double surface =
+      slab ? (d == 2 ? 2 * (2 * radius + 2 * dx) : 0)
+           : (d == 2 ? 2 * std::numbers::pi * result.radius
+                     : 4 * std::numbers::pi * result.radius * result.radius);
+  if (surface > 0) result.energyRatio = run.tension.energy() / (sigma * surface);
   return result;
 }
 
@@ -283,7 +289,8 @@ TEST(StaticDroplet, Study) {
   std::cout << d << "D static, " << across << " across, " << r.particles << " particles: jump "
             << r.jump << " Pa against Laplace " << r.laplace << " ("
             << 100 * (r.jump / r.laplace - 1) << " %), spurious velocity "
-            << r.spuriousVelocity / r.capillaryVelocity << " sigma/mu, " << r.steps
+            << r.spuriousVelocity / r.capillaryVelocity << " sigma/mu, E_s / (sigma surface) "
+            << r.energyRatio << ", " << r.steps
             << " steps in " << r.seconds << " s" << std::endl;
 }
 
