@@ -66,6 +66,17 @@ class PeriodicBox {
   std::array<Real, 3> inversePeriod_{0, 0, 0};
 };
 
+// Runs pass(separation) with the separation x_i - x_j the box needs: its minimum image when an
+// axis is periodic, the plain difference otherwise (chosen once per pass, not per pair).
+template <class Pass>
+void withSeparation(const PeriodicBox& periodic, Pass&& pass) {
+  if (periodic.anyPeriodic()) {
+    pass([periodic](const Vector& a, const Vector& b) { return periodic.separation(a, b); });
+  } else {
+    pass([](const Vector& a, const Vector& b) { return Vector(a - b); });
+  }
+}
+
 // A uniform grid of cubic-ish cells of edge >= the search radius h, with the particles of one
 // cloud binned into it by a counting sort (linear in particles + cells, no comparison sort).
 // Cells are numbered c = cx + nx (cy + ny cz), x fastest ("cell order"). After build():

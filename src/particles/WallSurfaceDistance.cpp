@@ -2,6 +2,17 @@
 
 namespace sphcast {
 
+std::vector<WallSurfaceView> wallSurfaceViews(const ParticleCloud& fluid,
+                                              const std::vector<const ParticleCloud*>& walls,
+                                              const Neighbourhood& neighbourhood) {
+  std::vector<WallSurfaceView> views;
+  for (const ParticleCloud* wall : walls) {
+    views.push_back({wall->positions(), wall->vectorField("normal"),
+                     wall->scalarField("wallDistance"), &neighbourhood.pairs(fluid, *wall)});
+  }
+  return views;
+}
+
 WallSurfaceDistance wallSurfaceDistance(const Vector& x, std::size_t i,
                                         const std::vector<WallSurfaceView>& walls,
                                         const PeriodicBox& periodic, Real spacing) {

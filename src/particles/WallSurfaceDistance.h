@@ -7,6 +7,8 @@
 #include "core/Real.h"
 #include "particles/CellGrid.h"
 #include "particles/NeighbourList.h"
+#include "particles/Neighbourhood.h"
+#include "particles/ParticleCloud.h"
 
 namespace sphcast {
 
@@ -48,6 +50,12 @@ struct WallSurfaceDistance {
   Real distance = 0;  // in front of the surface (negative: behind it)
   Vector normal = Vector::Zero();
 };
+
+// The views of `walls` (clouds with `normal` and `wallDistance`, as particleizeMold writes them)
+// seen from `fluid`, with the fluid's wall neighbours of the neighbourhood's last update.
+std::vector<WallSurfaceView> wallSurfaceViews(const ParticleCloud& fluid,
+                                              const std::vector<const ParticleCloud*>& walls,
+                                              const Neighbourhood& neighbourhood);
 
 WallSurfaceDistance wallSurfaceDistance(const Vector& x, std::size_t i,
                                         const std::vector<WallSurfaceView>& walls,

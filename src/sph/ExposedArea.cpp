@@ -28,7 +28,6 @@ Real calibratedFactorIn(ExposedAreaForm form, Real supportRadius, Real spacing) 
   const WendlandC2Kernel<Dim> kernel(supportRadius);
   const Real cell = std::pow(spacing, Dim);  // V = dx^d
   const int reach = static_cast<int>(std::ceil(supportRadius / spacing)) + 1;
-  const Real q = Real(1) - cell * kernel.value(0);
   // |d s / dz| of layer k: sum over the half lattice of V dW/dr dz / r
   auto layerGradient = [&](int layer) {
     Real gz = 0;
@@ -46,20 +45,10 @@ Real calibratedFactorIn(ExposedAreaForm form, Real supportRadius, Real spacing) 
   };
   // Layers k = 0, 1, ... below the free surface z = 0: s_k sums over the half lattice z <= 0.
   Real columnSum = 0;
-  for (int layer = 0; layer <= reach; ++layer) {
-    Real s = 0;
-    for (int dz = -reach; dz <= reach; ++dz) {
-      if (layer + dz < 0) continue;  // above the surface: no particle
-      const int dyRange = Dim == 3 ? reach : 0;
-      for (int dy = -dyRange; dy <= dyRange; ++dy) {
-        for (int dx = -reach; dx <= reach; ++dx) {
-          const Real r = spacing * std::sqrt(Real(dx * dx + dy * dy + dz * dz));
-          s += cell * kernel.value(r);
-        }
-      }
-    }
-    columnSum += form == ExposedAreaForm::gradient ? layerGradient(layer) * spacing
-                                                   : exposureWeight(Real(1) - s, q);
+  if (form == ExposedAreaForm::gradient) {
+    for (int layer = 0; layer <= reach; ++layer) columnSum += layerGradient(layer) * spacing;
+  } else {
+    columnSum = flatSurfaceExposureSum<Dim>(kernel, supportRadius, spacing);
   }
   if (!(columnSum > 0)) {
     throw Error("exposed area: a flat surface has no exposed particle at supportRadius/spacing " +
@@ -114,7 +103,6 @@ void ExposedArea::computeIn() {
   for (std::size_t c = 0; c < covering_.size(); ++c) {
     coveringVolume_[c] = particleVolumes(*covering_[c]);
   }
-  // the minimum image only when an axis is periodic, chosen once per pass
   auto passWith = [&](auto separation) {
     for (ParticleCloud* cloud : exposed_) {
       // an exposed cloud covers too (the solver's and the tests' do): its volumes are there
@@ -156,11 +144,7 @@ void ExposedArea::computeIn() {
       }
     }
   };
-  if (periodic.anyPeriodic()) {
-    passWith([periodic](const Vector& a, const Vector& b) { return periodic.separation(a, b); });
-  } else {
-    passWith([](const Vector& a, const Vector& b) { return Vector(a - b); });
-  }
+  withSeparation(periodic, passWith);
 }
 
 }  // namespace sphcast

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cmath>
 #include <vector>
 
 #include "particles/Neighbourhood.h"
@@ -80,6 +81,32 @@ inline Real exposureWeight(Real p, Real q) {
   if (p >= q) return Real(0.5) * q;
   const Real ratio = p / q;
   return p * ratio * ratio - Real(0.5) * p * ratio * ratio * ratio;
+}
+
+// sum_k g(1 - s_k, 1 - s_min)/R_d over the layers k = 0, 1, ... of a semi-infinite cubic
+// lattice of spacing dx under a flat free surface, s_k summed with `kernel` (value(r)) over the
+// half lattice and s_min = dx^d kernel.value(0): 1 / R_d for eq. (10)'s g to make the face's
+// area (the calibration of eq. (11) here, of the surface energy in surface/).
+template <int Dim, class Kernel>
+Real flatSurfaceExposureSum(const Kernel& kernel, Real supportRadius, Real spacing) {
+  const Real cell = std::pow(spacing, Dim);
+  const int reach = static_cast<int>(std::ceil(supportRadius / spacing)) + 1;
+  const int dyRange = Dim == 3 ? reach : 0;
+  const Real q = Real(1) - cell * kernel.value(0);
+  Real columnSum = 0;
+  for (int layer = 0; layer <= reach; ++layer) {
+    Real s = 0;
+    for (int dz = -reach; dz <= reach; ++dz) {
+      if (layer + dz < 0) continue;  // above the surface: no particle
+      for (int dy = -dyRange; dy <= dyRange; ++dy) {
+        for (int dx = -reach; dx <= reach; ++dx) {
+          s += cell * kernel.value(spacing * std::sqrt(Real(dx * dx + dy * dy + dz * dz)));
+        }
+      }
+    }
+    columnSum += exposureWeight(Real(1) - s, q);
+  }
+  return columnSum;
 }
 
 // V_i of every particle of a cloud: mass / rho where it has both, else its `volume`.

@@ -131,12 +131,7 @@ void WeaklyCompressibleFlow::requirePlane() const {
 }
 
 std::vector<WallSurfaceView> WeaklyCompressibleFlow::wallSurfaces() const {
-  std::vector<WallSurfaceView> surfaces;
-  for (std::size_t w = 0; w < walls_.size(); ++w) {
-    surfaces.push_back({walls_[w]->positions(), walls_[w]->vectorField("normal"),
-                        walls_[w]->scalarField("wallDistance"), &wallPairs(w)});
-  }
-  return surfaces;
+  return wallSurfaceViews(fluid_, walls_, neighbourhood_);
 }
 
 void WeaklyCompressibleFlow::keepClearOfWalls() {

@@ -15,28 +15,10 @@ namespace sphcast {
 
 namespace {
 
-// 1 / sum_k g_k / R_d over the layers k = 0, 1, ... of a semi-infinite cubic lattice under a
-// flat free surface (each layer's s sums over the half lattice).
 template <int Dim>
 Real flatSurfaceFactor(Real supportRadius, Real spacing, Real core) {
   const GranularityKernel<Dim> kernel(supportRadius, spacing, core);
-  const Real cell = std::pow(spacing, Dim);
-  const int reach = static_cast<int>(std::ceil(supportRadius / spacing)) + 1;
-  const Real q = Real(1) - cell * kernel.value(0);
-  Real columnSum = 0;
-  for (int layer = 0; layer <= reach; ++layer) {
-    Real s = 0;
-    for (int dz = -reach; dz <= reach; ++dz) {
-      if (layer + dz < 0) continue;  // above the surface: no particle
-      const int dyRange = Dim == 3 ? reach : 0;
-      for (int dy = -dyRange; dy <= dyRange; ++dy) {
-        for (int dx = -reach; dx <= reach; ++dx) {
-          s += cell * kernel.value(spacing * std::sqrt(Real(dx * dx + dy * dy + dz * dz)));
-        }
-      }
-    }
-    columnSum += exposureWeight(Real(1) - s, q);
-  }
+  const Real columnSum = flatSurfaceExposureSum<Dim>(kernel, supportRadius, spacing);
   if (!(columnSum > 0)) {
     throw Error("surface tension: a flat surface has no particle with g > 0 at h/dx " +
                 std::to_string(supportRadius / spacing) + " (the kernel is too narrow)");
@@ -151,11 +133,7 @@ void SurfaceEnergyTension::computeEnergy() {
   auto& energy = fluid_.scalarField("surfaceEnergy");
   const NeighbourList& pairs = neighbourhood_.pairs(fluid_, fluid_);
   const PeriodicBox periodic = neighbourhood_.periodicBox();
-  std::vector<WallSurfaceView> walls;
-  for (const ParticleCloud* wall : walls_) {
-    walls.push_back({wall->positions(), wall->vectorField("normal"),
-                     wall->scalarField("wallDistance"), &neighbourhood_.pairs(fluid_, *wall)});
-  }
+  const std::vector<WallSurfaceView> walls = wallSurfaceViews(fluid_, walls_, neighbourhood_);
   const bool fixedSolidTension = settings_.solidTension.has_value();
   const Real solidTensionValue = fixedSolidTension ? *settings_.solidTension : Real(0);
   const Real cosine = settings_.cosContactAngle ? *settings_.cosContactAngle : Real(-1);
@@ -195,11 +173,7 @@ void SurfaceEnergyTension::computeEnergy() {
            exposureWeight(p, q) * areaExponent);
     }
   };
-  if (periodic.anyPeriodic()) {
-    passWith([periodic](const Vector& a, const Vector& b) { return periodic.separation(a, b); });
-  } else {
-    passWith([](const Vector& a, const Vector& b) { return Vector(a - b); });
-  }
+  withSeparation(periodic, passWith);
 }
 
 // Psi_j = dE/drho_j = -(V_j / rho_j) (phi_j W_s(0) + sum_i phi_i W_s,ij) + the explicit part
@@ -227,11 +201,7 @@ void SurfaceEnergyTension::computeDensityDerivative() {
       densityDerivative_[j] = -volume_[j] / rho[j] * sum + explicitDensityDerivative_[j] / rho[j];
     }
   };
-  if (periodic.anyPeriodic()) {
-    passWith([periodic](const Vector& a, const Vector& b) { return periodic.separation(a, b); });
-  } else {
-    passWith([](const Vector& a, const Vector& b) { return Vector(a - b); });
-  }
+  withSeparation(periodic, passWith);
 }
 
 std::vector<Real> SurfaceEnergyTension::densityDerivative() {
@@ -290,11 +260,7 @@ void SurfaceEnergyTension::addForces() {
       acceleration[k] += force / mass[k];
     }
   };
-  if (periodic.anyPeriodic()) {
-    passWith([periodic](const Vector& a, const Vector& b) { return periodic.separation(a, b); });
-  } else {
-    passWith([](const Vector& a, const Vector& b) { return Vector(a - b); });
-  }
+  withSeparation(periodic, passWith);
 }
 
 void SurfaceEnergyTension::addAcceleration() {

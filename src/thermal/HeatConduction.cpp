@@ -96,7 +96,6 @@ void HeatConduction::addRatesIn() {
     sources.push_back({cloud.positions().data(), cloud.scalarField("T").data(),
                        cloud.scalarField("conductivity").data(), volume.data()});
   }
-  // the minimum image only when an axis is periodic, chosen once per pass (as the flow does)
   auto passWith = [&](auto separation) {
     for (std::size_t a = 0; a < context_.clouds.size(); ++a) {
       ParticleCloud& target = *context_.clouds[a].cloud;
@@ -133,11 +132,7 @@ void HeatConduction::addRatesIn() {
       }
     }
   };
-  if (periodic.anyPeriodic()) {
-    passWith([periodic](const Vector& a, const Vector& b) { return periodic.separation(a, b); });
-  } else {
-    passWith([](const Vector& a, const Vector& b) { return Vector(a - b); });
-  }
+  withSeparation(periodic, passWith);
 }
 
 }  // namespace sphcast
