@@ -2,10 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 #include <filesystem>
 #include <limits>
 #include <new>
+#include <numbers>
 #include <ostream>
 #include <sstream>
 
@@ -183,8 +183,8 @@ void CastingSolver::setUpFlow() {
     const TemperatureTable& gamma = *tension.gasTension;
     info() << "Surface tension: surface energy (paper eqs. (7)-(12)), R_d = "
            << surfaceTension_->energyFactor()
-           << (tension.energyFactor > 0 ? "" : " (calibrated on a flat lattice face)")
-           << ", Gamma_g " << gamma.description()
+           << (tension.energyFactor > 0 ? "" : " (calibrated on a relaxed surface)") << ", Gamma_g "
+           << gamma.description()
            << (gamma.isConstant() ? " = " + std::to_string(gamma(0)) + " N/m" : " (a table in T)")
            << '\n';
     if (!walls.empty()) {
@@ -192,11 +192,13 @@ void CastingSolver::setUpFlow() {
              << (tension.solidTension
                      ? "Gamma_s = " + std::to_string(*tension.solidTension) + " N/m"
                      : "contact angle " +
-                           std::to_string(std::acos(static_cast<double>(
-                               tension.cosContactAngle ? *tension.cosContactAngle : Real(-1))) *
-                                          180 / std::numbers::pi) +
+                           std::to_string(
+                               std::acos(static_cast<double>(
+                                   tension.cosContactAngle ? *tension.cosContactAngle : Real(-1))) *
+                               180 / std::numbers::pi) +
                            " degrees")
-             << ", chi over " << (tension.wallSmoothing > 0 ? tension.wallSmoothing : tension.supportRadius)
+             << ", chi over "
+             << (tension.wallSmoothing > 0 ? tension.wallSmoothing : tension.supportRadius)
              << " m\n";
     }
   }

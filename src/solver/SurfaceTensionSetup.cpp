@@ -3,12 +3,28 @@
 #include <cmath>
 #include <filesystem>
 #include <numbers>
+#include <string>
 
 #include "core/Error.h"
 #include "core/dictionary/Dictionary.h"
 #include "materials/MaterialLibrary.h"
 
 namespace sphcast {
+
+namespace {
+
+// With Gamma_s < 0 the energy (8) of a particle at the wall falls as its neighbours move away
+// (its exposed area grows), so the particles on a wetting wall spread apart without bound: a
+// 2D drop on a 60-degree wall threw particles off, then went non-finite (doc/validation.md §2).
+std::string wettingUnsupported(const std::string& dictName) {
+  return "a wetting wall (contactAngle below 90 degrees, solidTension below 0) is not supported "
+         "in " +
+         dictName +
+         ": with Gamma_s < 0 the surface energy falls as the particles at the "
+         "wall move apart, and they do (doc/physics.md section 10.1)";
+}
+
+}  // namespace
 
 namespace {
 const Dimensions dimensionless{{0, 0, 0, 0, 0, 0, 0}};
@@ -63,10 +79,16 @@ SurfaceTensionSetup readSurfaceTensionSetup(const CaseFolder& caseFolder, const 
       throw DictionaryError(dict.location("contactAngle"),
                             "'contactAngle' must lie in [0, 180] degrees in " + dict.name());
     }
+    if (degrees < 90) {
+      throw DictionaryError(dict.location("contactAngle"), wettingUnsupported(dict.name()));
+    }
     settings.cosContactAngle = static_cast<Real>(std::cos(degrees * std::numbers::pi / 180));
   }
   if (dict.found("solidTension")) {
     settings.solidTension = dict.get<Real>("solidTension", tension);
+    if (*settings.solidTension < 0) {
+      throw DictionaryError(dict.location("solidTension"), wettingUnsupported(dict.name()));
+    }
   }
   if (dict.found("wallSmoothing")) {
     settings.wallSmoothing = dict.get<Real>("wallSmoothing", length);
@@ -78,9 +100,9 @@ SurfaceTensionSetup readSurfaceTensionSetup(const CaseFolder& caseFolder, const 
   if (dict.found("coreRadius")) {
     settings.coreRadius = dict.get<Real>("coreRadius", dimensionless);
     if (!(settings.coreRadius >= 0 && settings.coreRadius < 1.5)) {
-      throw DictionaryError(dict.location("coreRadius"),
-                            "'coreRadius' (in particle spacings) must lie in [0, 1.5) in " +
-                                dict.name());
+      throw DictionaryError(
+          dict.location("coreRadius"),
+          "'coreRadius' (in particle spacings) must lie in [0, 1.5) in " + dict.name());
     }
   }
 

@@ -69,8 +69,8 @@ struct SurfaceTensionSettings {
 //
 // so that the surface layer's crowding, which lowers s-energy, costs what it changes in the
 // densities. Without it the static 2D drop's pressure was 4.5 to 10 times Laplace's; with it,
-// 0.47 to 1.14 times (doc/validation.md §2). tests/unit/surface checks -dE/dx (at fixed rho)
-// and Psi against finite differences of energy().
+// 0.47 to 1.14 times with the lattice face's R_d (doc/validation.md §2). tests/unit/surface checks
+// -dE/dx (at fixed rho) and Psi against finite differences of energy().
 //
 // W_s is not the paper's W (GranularityKernel below; doc/physics.md §10.1): with W the energy
 // falls when two surface particles merge, the pair attraction has the shape of their pressure
@@ -104,8 +104,17 @@ class SurfaceEnergyTension : public FluidForceModel {
 
   // R_d that makes the energy of a flat free surface of a cubic lattice Gamma_g per unit area:
   // R_d = 1 / sum_k g_k / R_d down a column of the lattice under the surface. At h = 3 dx with
-  // the default core: 32.3 in 2D, 50.7 in 3D; the paper's R_2 = 41.4 and R_3 = 41.3 give 128 %
-  // and 81 % of Gamma_g on that surface.
+  // the default core: 32.3 in 2D, 50.7 in 3D.
+  static Real latticeEnergyFactor(int dimension, Real supportRadius, Real spacing, Real coreRadius);
+  // The mechanical tension of a relaxed free surface, per Gamma_g, with R_d the lattice's: the
+  // work of stretching it per unit of new area (the particles stay: a surface of particles
+  // stretches, it does not draw new ones from the bulk). Measured, not derived
+  // (doc/physics.md §10.1: relaxed periodic slabs and drops at h = 3 dx, core dx; used at
+  // other h/dx and cores too, where nobody has measured it).
+  static Real relaxedTensionRatio(int dimension);
+  // R_d that gives a relaxed surface the mechanical tension Gamma_g: latticeEnergyFactor /
+  // relaxedTensionRatio. At h = 3 dx with the default core: 62.1 in 2D, 80.5 in 3D; the paper's
+  // R_2 = 41.4 and R_3 = 41.3 are 67 % and 51 % of them.
   static Real calibratedEnergyFactor(int dimension, Real supportRadius, Real spacing,
                                      Real coreRadius);
 
@@ -128,11 +137,11 @@ class SurfaceEnergyTension : public FluidForceModel {
   // per particle, from the last pass
   std::vector<Real> volume_;
   std::vector<Real> gasTension_;
-  std::vector<Real> energyDerivative_;  // phi_i = dE/ds_i
-  std::vector<Vector> wallForce_;       // -R_d g V^(1-1/d) dGamma/dl n
+  std::vector<Real> energyDerivative_;           // phi_i = dE/ds_i
+  std::vector<Vector> wallForce_;                // -R_d g V^(1-1/d) dGamma/dl n
   std::vector<Real> densityDerivative_;          // Psi_j = dE/drho_j (densityCoupling)
   std::vector<Real> explicitDensityDerivative_;  // rho_j times its part through q_j, V_j^(1-1/d)
-  double largestTension_ = -1;  // of the last pass (-1: none yet)
+  double largestTension_ = -1;                   // of the last pass (-1: none yet)
   double seconds_ = 0;
 };
 
@@ -177,8 +186,8 @@ class GranularityKernel {
     if (r >= core_) return kernel_.value(r);
     const Real t = r / core_;
     const Real m = repulsionFraction;
-    return coreValue_ - coreSlope_ * core_ / (Real(1) - m) *
-                            (Real(0.5) * (Real(1) - t * t) - m * (Real(1) - t));
+    return coreValue_ -
+           coreSlope_ * core_ / (Real(1) - m) * (Real(0.5) * (Real(1) - t * t) - m * (Real(1) - t));
   }
   WendlandC2Kernel<Dim> kernel_;
   Real core_, coreValue_, coreSlope_;

@@ -15,7 +15,7 @@ setEntry system/controlDict writeInterval 0.02
 setCastFields > log.setCastFields 2>&1 || fail "setCastFields: $(tail -3 log.setCastFields)"
 cp -r "$scratch/case" "$scratch/restarted"
 sphCastFoam > log.sphCastFoam 2>&1 || fail "sphCastFoam: $(tail -5 log.sphCastFoam)"
-grep -q "^Surface tension: surface energy (paper eqs. (7)-(12)), R_d = 32.27" log.sphCastFoam ||
+grep -q "^Surface tension: surface energy (paper eqs. (7)-(12)), R_d = 62.06" log.sphCastFoam ||
     fail "no surface-tension line in the log"
 /usr/bin/python3 compareWithLamb > log.compare 2>&1 || fail "compareWithLamb: $(tail -3 log.compare)"
 # Lamb's n = 4 quarter period is 0.043 s: the first crossing of m4 = 0 (0.046 s at 33 x 33)
@@ -45,6 +45,8 @@ expectError 's/energyFactor    calibrated;/contactAngel 90;/' constant/physicsMo
     "physicsModels:[0-9]*:.*unknown key 'contactAngel'.*did you mean 'contactAngle'"
 expectError 's/energyFactor    calibrated;/contactAngle 200;/' constant/physicsModels \
     "physicsModels:[0-9]*:.*'contactAngle' must lie in \[0, 180\] degrees"
+expectError 's/energyFactor    calibrated;/contactAngle 60;/' constant/physicsModels \
+    "physicsModels:[0-9]*:.*a wetting wall (contactAngle below 90 degrees.*is not supported"
 expectError 's/    surfaceTension .*//' constant/physicalProperties \
     "physicalProperties:[0-9]*:.*material 'liquid'.*has no 'surfaceTension'"
 expectError 's/model       weaklyCompressible;/model none;/' constant/physicsModels \

@@ -278,17 +278,18 @@ TEST(SurfaceForce, SameBitsOnOneAndTwoThreads) {
   EXPECT_LT(wallPull, 0);  // the wall term ran: a wetting floor pulls the drop down
 }
 
-// A flat free surface (a periodic slab, two faces) carries Gamma_g per unit length with the
-// calibrated R_d.
-TEST(SurfaceEnergy, OfAFlatSurfaceIsGammaTimesItsLengthWithTheCalibratedFactor) {
+// A flat free surface of the lattice (a periodic slab, two faces) carries Gamma_g per unit length
+// with the lattice's R_d, and 1 / relaxedTensionRatio times that with the calibrated one.
+TEST(SurfaceEnergy, OfALatticeFaceIsGammaTimesItsLengthWithTheLatticeFactor) {
   const Real dx = 1e-3, h = 3 * dx, width = 30 * dx, thickness = 12 * dx;
   ParticleCloud fluid = latticeFluid(
-      2, dx, Vector(0, 0, 0), Vector(width, thickness, 0), [](const Vector&) { return true; },
-      1000, 1e-3);
+      2, dx, Vector(0, 0, 0), Vector(width, thickness, 0), [](const Vector&) { return true; }, 1000,
+      1e-3);
   PeriodicBox periodic;
   periodic.setPeriodic(0, 0, width);
   const Real gamma = 0.07;
-  for (const Real factor : {Real(0), Real(41.4)}) {
+  const Real lattice = SurfaceEnergyTension::latticeEnergyFactor(2, h, dx, 1);
+  for (const Real factor : {lattice, Real(0), Real(41.4)}) {
     Neighbourhood neighbourhood(h, periodic);
     neighbourhood.addCloud(fluid, Neighbourhood::Motion::moving);
     SurfaceTensionSettings settings;
@@ -301,8 +302,10 @@ TEST(SurfaceEnergy, OfAFlatSurfaceIsGammaTimesItsLengthWithTheCalibratedFactor) 
     neighbourhood.update(CloudOrder::keep);
     const double ratio = tension.energy() / (2 * width * gamma);
     // the calibration sums a half lattice on its own; here the slab's particles do
-    const double calibrated = tension.calibratedEnergyFactor(2, h, dx, 1);
-    EXPECT_NEAR(ratio, factor == 0 ? 1.0 : 41.4 / calibrated, 1e-12);
+    const double expected =
+        (factor == 0 ? SurfaceEnergyTension::calibratedEnergyFactor(2, h, dx, 1) : factor) /
+        lattice;
+    EXPECT_NEAR(ratio, expected, 1e-12);
   }
 }
 
