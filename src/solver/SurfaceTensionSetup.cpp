@@ -12,24 +12,18 @@
 namespace sphcast {
 
 namespace {
-
-// With Gamma_s < 0 the energy (8) of a particle at the wall falls as its neighbours move away
-// (its exposed area grows), so the particles on a wetting wall spread apart without bound: a
-// 2D drop on a 60-degree wall threw particles off, then went non-finite (doc/validation.md §2).
-std::string wettingUnsupported(const std::string& dictName) {
-  return "a wetting wall (contactAngle below 90 degrees, solidTension below 0) is not supported "
-         "in " +
-         dictName +
-         ": with Gamma_s < 0 the surface energy falls as the particles at the "
-         "wall move apart, and they do (doc/physics.md section 10.1)";
-}
-
-}  // namespace
-
-namespace {
 const Dimensions dimensionless{{0, 0, 0, 0, 0, 0, 0}};
 const Dimensions length{{0, 1, 0, 0, 0, 0, 0}};
 const Dimensions tension{{1, 0, -2, 0, 0, 0, 0}};
+
+// With Gamma_s < 0 the energy (8) of a particle at the wall falls as its neighbours move away
+// (its exposed area grows), so the particles on a wetting wall spread apart: a 2D drop on a
+// 60-degree wall threw particles off, then went non-finite (doc/validation.md §2).
+std::string wettingUnsupported(const std::string& dictName) {
+  return "a wetting wall (contactAngle below 90 degrees, solidTension below 0) is not "
+         "supported in " + dictName + ": with Gamma_s < 0 the surface energy falls as the "
+         "particles at the wall move apart, and they do (doc/physics.md section 10.1)";
+}
 }  // namespace
 
 SurfaceTensionSetup readSurfaceTensionSetup(const CaseFolder& caseFolder, const FlowSetup& flow) {

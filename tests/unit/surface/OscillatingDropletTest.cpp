@@ -15,7 +15,9 @@
 //   (capillary times, 2), _COMPRESSION (R_d Gamma / (rho c^2 dx), 0.01), _CORE (r0/dx, 1),
 //   _HDX (h/dx, 3), _RD (R_d, calibrated), _SCHEME (densityScheme), _TRACE (print every N steps),
 //   _COUPLING (0: without the density coupling);
-//   SPHCAST_STATIC_RELAXATION (capillary times, 4), SPHCAST_STATIC_SLAB (a periodic flat slab).
+//   SPHCAST_STATIC_RELAXATION (capillary times, 4), SPHCAST_STATIC_SLAB=<period in spacings, or 0
+//   for across + 2> (a periodic flat slab instead of the drop: prints its mechanical tension,
+//   slabTension, at the start and averaged over one capillary time after the relaxation).
 
 #include <gtest/gtest.h>
 
