@@ -187,6 +187,32 @@ void CastingSolver::setUpFlow() {
            << gamma.description()
            << (gamma.isConstant() ? " = " + std::to_string(gamma(0)) + " N/m" : " (a table in T)")
            << '\n';
+    // The surface layer is pulled inwards by about R_d Gamma_g / dx, which only the equation
+    // of state resists: its density rises by that over rho c^2 (doc/physics.md §10.1, the
+    // calibration was measured at 0.3 to 3 %).
+    double largestGamma = gamma.isConstant() ? gamma(0) : 0;
+    if (!gamma.isConstant()) {
+      for (const Real t : fluid.scalarField("T")) largestGamma = std::max(largestGamma, gamma(t));
+    }
+    const auto& restDensity = fluid.scalarField(fluid.hasScalarField("restDensity") ? "restDensity"
+                                                                                    : "rho");
+    const double lightest =
+        restDensity.empty()
+            ? 0
+            : static_cast<double>(*std::min_element(restDensity.begin(), restDensity.end()));
+    const double compression = surfaceTension_->energyFactor() * largestGamma /
+                               (lightest * settings.soundSpeed * settings.soundSpeed *
+                                static_cast<double>(tension.spacing));
+    info() << "    surface layer's compression R_d Gamma_g / (rho c^2 dx) = " << 100 * compression
+           << " % (at the particles' T now)\n";
+    if (compression > 0.03) {
+      warning("the surface tension compresses the surface layer by " +
+              std::to_string(100 * compression) +
+              " % of its density (R_d Gamma_g / (rho c^2 dx)): raise soundSpeed in system/sphSchemes "
+              "towards " +
+              std::to_string(settings.soundSpeed * std::sqrt(compression / 0.01)) +
+              " m/s for 1 %; the calibration of R_d was measured at 0.3 to 3 %");
+    }
     if (!walls.empty()) {
       info() << "    at the walls: "
              << (tension.solidTension

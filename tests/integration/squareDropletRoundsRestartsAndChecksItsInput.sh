@@ -17,6 +17,8 @@ cp -r "$scratch/case" "$scratch/restarted"
 sphCastFoam > log.sphCastFoam 2>&1 || fail "sphCastFoam: $(tail -5 log.sphCastFoam)"
 grep -q "^Surface tension: surface energy (paper eqs. (7)-(12)), R_d = 62.06" log.sphCastFoam ||
     fail "no surface-tension line in the log"
+grep -q "surface layer's compression R_d Gamma_g / (rho c^2 dx) = 0.99" log.sphCastFoam ||
+    fail "no compression of the surface layer in the log (setResolution sets c for 1 %)"
 /usr/bin/python3 compareWithLamb > log.compare 2>&1 || fail "compareWithLamb: $(tail -3 log.compare)"
 # Lamb's n = 4 quarter period is 0.043 s: the first crossing of m4 = 0 (0.046 s at 33 x 33)
 awk 'NR == 2 { if ($2 > -0.55) exit 1 } { t = $1; m = $2 } END { if (t != 0.06 || m <= 0) exit 1 }' m4.dat ||
@@ -51,4 +53,11 @@ expectError 's/    surfaceTension .*//' constant/physicalProperties \
     "physicalProperties:[0-9]*:.*material 'liquid'.*has no 'surfaceTension'"
 expectError 's/model       weaklyCompressible;/model none;/' constant/physicsModels \
     "physicsModels:[0-9]*:.*surface tension acts on the flow's fluid"
+# A speed of sound too low for the surface tension: a warning that names the speed to use.
+cp -r "$scratch/case" "$scratch/slow" && cd "$scratch/slow" || exit 1
+sed -i 's/^soundSpeed .*/soundSpeed      [0 1 -1 0 0 0 0] 5;/' system/sphSchemes
+setEntry system/controlDict endTime 0.001
+sphCastFoam > log.slow 2>&1 || fail "the slow case: $(tail -3 log.slow)"
+grep -q "compresses the surface layer by .* raise soundSpeed in system/sphSchemes" log.slow ||
+    fail "no warning for a speed of sound too low for the surface tension"
 pass "squareDroplet: the square rounds, restart bit for bit, clear errors for bad surfaceTension input"
