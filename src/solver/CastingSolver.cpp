@@ -187,22 +187,7 @@ void CastingSolver::setUpFlow() {
            << gamma.description()
            << (gamma.isConstant() ? " = " + std::to_string(gamma(0)) + " N/m" : " (a table in T)")
            << '\n';
-    // The surface layer is pulled inwards by about R_d Gamma_g / dx, which only the equation
-    // of state resists: its density rises by that over rho c^2 (doc/physics.md §10.1, the
-    // calibration was measured at 0.3 to 3 %).
-    double largestGamma = gamma.isConstant() ? gamma(0) : 0;
-    if (!gamma.isConstant()) {
-      for (const Real t : fluid.scalarField("T")) largestGamma = std::max(largestGamma, gamma(t));
-    }
-    const auto& restDensity = fluid.scalarField(fluid.hasScalarField("restDensity") ? "restDensity"
-                                                                                    : "rho");
-    const double lightest =
-        restDensity.empty()
-            ? 0
-            : static_cast<double>(*std::min_element(restDensity.begin(), restDensity.end()));
-    const double compression = surfaceTension_->energyFactor() * largestGamma /
-                               (lightest * settings.soundSpeed * settings.soundSpeed *
-                                static_cast<double>(tension.spacing));
+    const double compression = surfaceTension_->surfaceCompression(settings.soundSpeed);
     info() << "    surface layer's compression R_d Gamma_g / (rho c^2 dx) = " << 100 * compression
            << " % (at the particles' T now)\n";
     if (compression > 0.03) {

@@ -112,25 +112,35 @@ double SurfaceEnergyTension::largestTension(const std::vector<Real>& gasTension)
   return static_cast<double>(largest);
 }
 
-double SurfaceEnergyTension::stableDeltaT() const {
-  double largest = largestTension_;
-  if (largest < 0) {  // before the first pass (a restart): Gamma_g at the particles' T now
-    const TemperatureTable& table = *settings_.gasTension;
-    std::vector<Real> gamma(fluid_.size(), static_cast<Real>(table(0)));
-    if (!table.isConstant()) {
-      const auto& temperature = fluid_.scalarField("T");
-      for (std::size_t i = 0; i < gamma.size(); ++i) {
-        gamma[i] = static_cast<Real>(table(static_cast<double>(temperature[i])));
-      }
+double SurfaceEnergyTension::currentLargestTension() const {
+  if (largestTension_ >= 0) return largestTension_;
+  // before the first pass (a restart): Gamma_g at the particles' T now
+  const TemperatureTable& table = *settings_.gasTension;
+  std::vector<Real> gamma(fluid_.size(), static_cast<Real>(table(0)));
+  if (!table.isConstant()) {
+    const auto& temperature = fluid_.scalarField("T");
+    for (std::size_t i = 0; i < gamma.size(); ++i) {
+      gamma[i] = static_cast<Real>(table(static_cast<double>(temperature[i])));
     }
-    largest = largestTension(gamma);
   }
-  if (!(largest > 0)) return std::numeric_limits<double>::max();
+  return largestTension(gamma);
+}
+
+double SurfaceEnergyTension::lightestDensity() const {
   const auto& rho = fluid_.scalarField("rho");
-  const double lightest =
-      rho.empty() ? 0 : static_cast<double>(*std::min_element(rho.begin(), rho.end()));
+  return rho.empty() ? 0 : static_cast<double>(*std::min_element(rho.begin(), rho.end()));
+}
+
+double SurfaceEnergyTension::stableDeltaT() const {
+  const double largest = currentLargestTension();
+  if (!(largest > 0)) return std::numeric_limits<double>::max();
   const double dx = static_cast<double>(settings_.spacing);
-  return 0.25 * std::sqrt(lightest * dx * dx * dx / (2 * std::numbers::pi * largest));
+  return 0.25 * std::sqrt(lightestDensity() * dx * dx * dx / (2 * std::numbers::pi * largest));
+}
+
+double SurfaceEnergyTension::surfaceCompression(double soundSpeed) const {
+  return static_cast<double>(energyFactor_) * currentLargestTension() /
+         (lightestDensity() * soundSpeed * soundSpeed * static_cast<double>(settings_.spacing));
 }
 
 // s_i, the wall distance, e_i and phi_i of every particle (the first pass).

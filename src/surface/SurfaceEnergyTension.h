@@ -93,6 +93,10 @@ class SurfaceEnergyTension : public FluidForceModel {
   // 1992): the step must resolve the fastest capillary wave the particles carry.
   double stableDeltaT() const override;
   double seconds() const override { return seconds_; }
+  // R_d Gamma_max / (rho_min c^2 dx): the surface layer is pulled inwards by about
+  // R_d Gamma / dx, which only the equation of state resists, so its density rises by that
+  // fraction (doc/physics.md §10.1: R_d was calibrated at 0.3 to 3 %).
+  double surfaceCompression(double soundSpeed) const;
 
   // E_s,p of eq. (8) at the neighbourhood's last update, summed in particle order.
   double energy();
@@ -127,6 +131,9 @@ class SurfaceEnergyTension : public FluidForceModel {
   void computeDensityDerivative();
   void updateGasTension();
   double largestTension(const std::vector<Real>& gasTension) const;  // of Gamma_g and |Gamma_s|
+  // of the last pass, or before any (a restart) at the particles' T now
+  double currentLargestTension() const;
+  double lightestDensity() const;  // of the fluid's rho now
 
   SurfaceTensionSettings settings_;
   Real energyFactor_;
