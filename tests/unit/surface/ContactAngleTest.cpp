@@ -27,8 +27,9 @@ namespace sphcast {
 namespace {
 
 using testing::CapillaryRun;
-using testing::constantTension;
+using testing::capillarySoundSpeed;
 using testing::latticeFluid;
+using testing::tensionSettings;
 
 // theta of a circular cap from H^2 / A (bisection: the ratio grows with theta).
 double capAngle(double height, double area) {
@@ -66,8 +67,7 @@ SettledDrop settle(double degrees, int width, int height, double capillaryTimes,
           ? latticeFluid(
                 2, dx, Vector(static_cast<Real>(-capRadius) - dx, 0, 0),
                 Vector(static_cast<Real>(capRadius) + dx, capCentre[1] + Real(capRadius) + dx, 0),
-                [&](const Vector& x) { return (x - capCentre).norm() < capRadius; }, rho,
-                rho * nu)
+                [&](const Vector& x) { return (x - capCentre).norm() < capRadius; }, rho, rho * nu)
           : latticeFluid(
                 2, dx, Vector(-width * dx / 2, 0, 0), Vector(width * dx / 2, height * dx, 0),
                 [](const Vector&) { return true; }, rho, rho * nu);
@@ -79,14 +79,10 @@ SettledDrop settle(double degrees, int width, int height, double capillaryTimes,
   FlowSettings flow;
   flow.dimension = 2;
   flow.supportRadius = h;
-  SurfaceTensionSettings tension;
-  tension.dimension = 2;
-  tension.supportRadius = h;
-  tension.spacing = dx;
-  tension.gasTension = constantTension(sigma);
+  SurfaceTensionSettings tension = tensionSettings(2, h, dx, sigma);
   tension.cosContactAngle = static_cast<Real>(std::cos(degrees * std::numbers::pi / 180));
   const Real factor = SurfaceEnergyTension::calibratedEnergyFactor(2, h, dx, 1);
-  flow.soundSpeed = std::sqrt(factor * sigma / (dx * rho * Real(0.01)));
+  flow.soundSpeed = capillarySoundSpeed(factor, sigma, dx, rho, Real(0.01));
   CapillaryRun run(flow, tension, fluid, {&wall});
   const double area = static_cast<double>(fluid.size()) * dx * dx;
   const double end = capillaryTimes * std::sqrt(rho * std::pow(std::sqrt(area), 3) / sigma);

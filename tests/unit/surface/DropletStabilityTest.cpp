@@ -23,14 +23,10 @@ TEST(DropletStability, AtRestForAHundredThousandSteps) {
   FlowSettings flow;
   flow.dimension = 2;
   flow.supportRadius = h;
-  SurfaceTensionSettings tension;
-  tension.dimension = 2;
-  tension.supportRadius = h;
-  tension.spacing = dx;
-  tension.gasTension = testing::constantTension(sigma);
+  const SurfaceTensionSettings tension = testing::tensionSettings(2, h, dx, sigma);
   // c from R_d Gamma / (rho c^2 dx) = 1 %, as the tutorials choose it
-  flow.soundSpeed = std::sqrt(SurfaceEnergyTension::calibratedEnergyFactor(2, h, dx, 1) * sigma /
-                              (dx * rho * Real(0.01)));
+  flow.soundSpeed = testing::capillarySoundSpeed(
+      SurfaceEnergyTension::calibratedEnergyFactor(2, h, dx, 1), sigma, dx, rho, Real(0.01));
   testing::CapillaryRun run(flow, tension, fluid, {});
   const auto& x = fluid.positions();
   double closest = 1e9, farthest = 0, densityDeviation = 0;
@@ -50,7 +46,8 @@ TEST(DropletStability, AtRestForAHundredThousandSteps) {
       }
     }
   }
-  std::cout << "after " << run.time << " s (" << run.time / std::sqrt(rho * std::pow(radius, 3) / sigma)
+  std::cout << "after " << run.time << " s ("
+            << run.time / std::sqrt(rho * std::pow(radius, 3) / sigma)
             << " capillary times): nearest pair " << closest / dx << " dx, farthest "
             << farthest / radius << " R, largest density deviation " << 100 * densityDeviation
             << " %" << std::endl;

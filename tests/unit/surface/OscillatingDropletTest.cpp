@@ -33,8 +33,9 @@ namespace sphcast {
 namespace {
 
 using testing::CapillaryRun;
-using testing::constantTension;
+using testing::capillarySoundSpeed;
 using testing::latticeFluid;
+using testing::tensionSettings;
 
 // A study switch from the environment, or its default.
 double option(const char* name, double fallback) {
@@ -95,8 +96,9 @@ DropletResult oscillatingDroplet(const DropletSetup& setup) {
   const Real factor = setup.energyFactor > 0 ? setup.energyFactor
                                              : SurfaceEnergyTension::calibratedEnergyFactor(
                                                    d, h, dx, static_cast<Real>(setup.core));
-  const Real c =
-      std::max(10 * speed, std::sqrt(factor * sigma / (dx * rho * setup.surfaceCompression)));
+  const Real c = std::max(
+      10 * speed,
+      capillarySoundSpeed(factor, sigma, dx, rho, static_cast<Real>(setup.surfaceCompression)));
   FlowSettings flow;
   flow.dimension = d;
   flow.supportRadius = h;
@@ -104,11 +106,7 @@ DropletResult oscillatingDroplet(const DropletSetup& setup) {
   if (const char* scheme = std::getenv("SPHCAST_DROPLET_SCHEME")) {
     flow.densityScheme = scheme;
   }
-  SurfaceTensionSettings tension;
-  tension.dimension = d;
-  tension.supportRadius = h;
-  tension.spacing = dx;
-  tension.gasTension = constantTension(sigma);
+  SurfaceTensionSettings tension = tensionSettings(d, h, dx, sigma);
   tension.densityCoupling = option("SPHCAST_DROPLET_COUPLING", 1) > 0;
   tension.energyFactor = setup.energyFactor;
   tension.coreRadius = static_cast<Real>(setup.core);
@@ -271,7 +269,7 @@ StaticDropletResult staticDroplet(int d, int across, double relaxation, Real cor
   result.laplace = (d - 1) * sigma / result.radius;
   result.capillaryVelocity = sigma / (rho * nu);
   const Real factor = SurfaceEnergyTension::calibratedEnergyFactor(d, h, dx, core);
-  const Real c = std::sqrt(factor * sigma / (dx * rho * static_cast<Real>(compression)));
+  const Real c = capillarySoundSpeed(factor, sigma, dx, rho, static_cast<Real>(compression));
   FlowSettings flow;
   flow.dimension = d;
   flow.supportRadius = h;
@@ -280,11 +278,7 @@ StaticDropletResult staticDroplet(int d, int across, double relaxation, Real cor
     flow.periodic.setPeriodic(0, lower, period);
     if (d == 3) flow.periodic.setPeriodic(2, lower, period);
   }
-  SurfaceTensionSettings tension;
-  tension.dimension = d;
-  tension.supportRadius = h;
-  tension.spacing = dx;
-  tension.gasTension = constantTension(sigma);
+  SurfaceTensionSettings tension = tensionSettings(d, h, dx, sigma);
   tension.densityCoupling = option("SPHCAST_DROPLET_COUPLING", 1) > 0;
   tension.coreRadius = core;
   for (Real& r : fluid.scalarField("rho")) r = rho + static_cast<Real>(result.laplace) / (c * c);

@@ -17,8 +17,8 @@
 namespace sphcast {
 namespace {
 
-using testing::constantTension;
 using testing::latticeFluid;
+using testing::tensionSettings;
 
 // The force of the model on every particle (m a, acceleration zeroed first).
 std::vector<Vector> forces(SurfaceEnergyTension& tension, ParticleCloud& fluid) {
@@ -68,11 +68,7 @@ TEST_P(SurfaceForceIsTheEnergyGradient, ForEveryParticleOfAJitteredDroplet) {
       [&](const Vector& x) { return x.norm() < radius; }, 1000, 1e-3, blob.jitter);
   Neighbourhood neighbourhood(h, PeriodicBox());
   neighbourhood.addCloud(fluid, Neighbourhood::Motion::moving);
-  SurfaceTensionSettings settings;
-  settings.dimension = d;
-  settings.supportRadius = h;
-  settings.spacing = dx;
-  settings.gasTension = constantTension(0.07);
+  SurfaceTensionSettings settings = tensionSettings(d, h, dx, 0.07);
   settings.densityCoupling = false;  // -dE/dx at fixed densities (the coupling: below)
   SurfaceEnergyTension tension(settings, fluid, {}, neighbourhood);
   neighbourhood.update(CloudOrder::keep);
@@ -116,11 +112,7 @@ TEST(SurfaceForce, IsTheEnergyGradientBesideAWettingWall) {
   Neighbourhood neighbourhood(h, PeriodicBox());
   neighbourhood.addCloud(fluid, Neighbourhood::Motion::moving);
   neighbourhood.addFixedCloud(wall);
-  SurfaceTensionSettings settings;
-  settings.dimension = 2;
-  settings.supportRadius = h;
-  settings.spacing = dx;
-  settings.gasTension = constantTension(0.07);
+  SurfaceTensionSettings settings = tensionSettings(2, h, dx, 0.07);
   settings.densityCoupling = false;  // -dE/dx at fixed densities (the coupling: below)
   settings.cosContactAngle = Real(0.5);
   SurfaceEnergyTension tension(settings, fluid, {&wall}, neighbourhood);
@@ -154,11 +146,7 @@ TEST(SurfaceEnergy, DensityDerivativeIsTheDerivativeOfTheEnergy) {
     }
     Neighbourhood neighbourhood(h, PeriodicBox());
     neighbourhood.addCloud(fluid, Neighbourhood::Motion::moving);
-    SurfaceTensionSettings settings;
-    settings.dimension = d;
-    settings.supportRadius = h;
-    settings.spacing = dx;
-    settings.gasTension = constantTension(0.07);
+    const SurfaceTensionSettings settings = tensionSettings(d, h, dx, 0.07);
     SurfaceEnergyTension tension(settings, fluid, {}, neighbourhood);
     neighbourhood.update(CloudOrder::keep);
     const std::vector<Real> psi = tension.densityDerivative();
@@ -189,10 +177,7 @@ TEST(SurfaceForce, ConservesMomentumPairByPair) {
       1e-3, 0.2);
   Neighbourhood neighbourhood(h, PeriodicBox());
   neighbourhood.addCloud(fluid, Neighbourhood::Motion::moving);
-  SurfaceTensionSettings settings;
-  settings.supportRadius = h;
-  settings.spacing = dx;
-  settings.gasTension = constantTension(0.07);
+  const SurfaceTensionSettings settings = tensionSettings(3, h, dx, 0.07);
   SurfaceEnergyTension tension(settings, fluid, {}, neighbourhood);
   neighbourhood.update();
   const std::vector<Vector> f = forces(tension, fluid);
@@ -219,10 +204,7 @@ TEST(SurfaceForce, SkippingInteriorPairsGivesTheSameBits) {
   auto forcesWith = [&](ParticleCloud& cloud, bool surfaceOnly, std::size_t& pairs) {
     Neighbourhood neighbourhood(h, PeriodicBox());
     neighbourhood.addCloud(cloud, Neighbourhood::Motion::moving);
-    SurfaceTensionSettings settings;
-    settings.supportRadius = h;
-    settings.spacing = dx;
-    settings.gasTension = constantTension(0.07);
+    SurfaceTensionSettings settings = tensionSettings(3, h, dx, 0.07);
     settings.surfaceParticlesOnly = surfaceOnly;
     SurfaceEnergyTension tension(settings, cloud, {}, neighbourhood);
     neighbourhood.update(CloudOrder::keep);
@@ -258,10 +240,7 @@ TEST(SurfaceForce, SameBitsOnOneAndTwoThreads) {
     Neighbourhood neighbourhood(h, PeriodicBox());
     neighbourhood.addCloud(fluid, Neighbourhood::Motion::moving);
     neighbourhood.addFixedCloud(wall);
-    SurfaceTensionSettings settings;
-    settings.supportRadius = h;
-    settings.spacing = dx;
-    settings.gasTension = constantTension(0.07);
+    SurfaceTensionSettings settings = tensionSettings(3, h, dx, 0.07);
     settings.cosContactAngle = Real(0.5);
     SurfaceEnergyTension tension(settings, fluid, {&wall}, neighbourhood);
     neighbourhood.update(CloudOrder::keep);
@@ -292,11 +271,7 @@ TEST(SurfaceEnergy, OfALatticeFaceIsGammaTimesItsLengthWithTheLatticeFactor) {
   for (const Real factor : {lattice, Real(0), Real(41.4)}) {
     Neighbourhood neighbourhood(h, periodic);
     neighbourhood.addCloud(fluid, Neighbourhood::Motion::moving);
-    SurfaceTensionSettings settings;
-    settings.dimension = 2;
-    settings.supportRadius = h;
-    settings.spacing = dx;
-    settings.gasTension = constantTension(gamma);
+    SurfaceTensionSettings settings = tensionSettings(2, h, dx, gamma);
     settings.energyFactor = factor;
     SurfaceEnergyTension tension(settings, fluid, {}, neighbourhood);
     neighbourhood.update(CloudOrder::keep);

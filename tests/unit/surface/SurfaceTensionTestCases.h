@@ -27,6 +27,25 @@ inline TemperatureTable constantTension(double gamma) {
   return *library.get("liquid", SourceLocation{}, "test").surfaceTension;
 }
 
+// The surface tension's settings for a fluid of spacing dx: the dimension, h, dx and a constant
+// Gamma_g (N/m); the rest as the model defaults them.
+inline SurfaceTensionSettings tensionSettings(int dimension, Real supportRadius, Real dx,
+                                              double gamma) {
+  SurfaceTensionSettings settings;
+  settings.dimension = dimension;
+  settings.supportRadius = supportRadius;
+  settings.spacing = dx;
+  settings.gasTension = constantTension(gamma);
+  return settings;
+}
+
+// The speed of sound for which the surface layer's pull, R_d Gamma / dx, is `compression` of
+// rho c^2 (the tutorials choose 1 %: doc/physics.md §10.1).
+inline Real capillarySoundSpeed(Real energyFactor, Real gamma, Real dx, Real rho,
+                                Real compression) {
+  return std::sqrt(energyFactor * gamma / (dx * rho * compression));
+}
+
 // The lattice particles (spacing dx, cell centres on (i + 1/2) dx, z = 0 in 2D) for which
 // inside(x) holds, as a fluid at rest of density rho and dynamic viscosity mu; each particle
 // moved by up to `jitter` dx along each axis when jitter > 0.
