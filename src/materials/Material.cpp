@@ -13,6 +13,7 @@ const Dimensions specificEnergyDimensions{{0, 2, -2, 0, 0, 0, 0}};
 const Dimensions specificHeatDimensions{{0, 2, -2, -1, 0, 0, 0}};
 const Dimensions surfaceTensionDimensions{{1, 0, -2, 0, 0, 0, 0}};
 const Dimensions dimensionless{{0, 0, 0, 0, 0, 0, 0}};
+const Dimensions temperatureDimensions{{0, 0, 0, 1, 0, 0, 0}};
 
 std::optional<TemperatureTable> readIfFound(const Dictionary& dict, const char* key,
                                             const Dimensions& dimensions,
@@ -27,7 +28,8 @@ std::optional<TemperatureTable> readIfFound(const Dictionary& dict, const char* 
 const std::vector<std::string>& Material::validKeys() {
   static const std::vector<std::string> keys{"temperatures",   "density",        "viscosity",
                                              "conductivity",   "internalEnergy", "specificHeat",
-                                             "surfaceTension", "emissivity"};
+                                             "surfaceTension", "emissivity",
+                                             "liquidus",       "solidus"};
   return keys;
 }
 
@@ -77,6 +79,25 @@ Material Material::read(const Dictionary& dict, const std::string& name, const s
     }
     material.emissivity = emissivity;
   }
+
+  if (dict.found("liquidus") || dict.found("solidus")) {
+    const char* absent = dict.found("liquidus") ? "solidus" : "liquidus";
+    const char* given = dict.found("liquidus") ? "liquidus" : "solidus";
+    if (!dict.found(absent)) {
+      throw DictionaryError(dict.location(given), "material '" + name + "' in " + file +
+                                                      " gives '" + given + "' but not '" +
+                                                      absent + "'; give both (K)");
+    }
+    const auto liquidus = dict.get<double>("liquidus", temperatureDimensions);
+    const auto solidus = dict.get<double>("solidus", temperatureDimensions);
+    if (!(solidus > 0 && solidus < liquidus)) {
+      std::ostringstream message;
+      message << "'solidus' " << solidus << " K of material '" << name << "' in " << file
+              << " must be positive and below its 'liquidus' " << liquidus << " K";
+      throw DictionaryError(dict.location("solidus"), message.str());
+    }
+    material.freezingRange = FreezingRange{solidus, liquidus, dict.location("liquidus")};
+  }
   return material;
 }
 
@@ -114,6 +135,11 @@ const InternalEnergyTable& Material::requireInternalEnergy(std::string_view need
 double Material::requireEmissivity(std::string_view neededBy) const {
   if (!emissivity) missing("emissivity", neededBy);
   return *emissivity;
+}
+
+const FreezingRange& Material::requireFreezingRange(std::string_view neededBy) const {
+  if (!freezingRange) missing("liquidus' and 'solidus", neededBy);
+  return *freezingRange;
 }
 
 }  // namespace sphcast

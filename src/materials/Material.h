@@ -25,7 +25,15 @@ namespace sphcast {
 //
 // density [1 -3 0 0 0 0 0], viscosity (dynamic) [1 -1 -1 0 0 0 0], conductivity
 // [1 1 -3 -1 0 0 0], internalEnergy [0 2 -2 0 0 0 0] or specificHeat [0 2 -2 -1 0 0 0] (not
-// both), surfaceTension [1 0 -2 0 0 0 0] (may be 0), emissivity (a number in [0, 1]).
+// both), surfaceTension [1 0 -2 0 0 0 0] (may be 0), emissivity (a number in [0, 1]),
+// liquidus and solidus [0 0 0 1 0 0 0] (both or neither, solidus below liquidus: the freezing
+// range that solidification reads).
+struct FreezingRange {
+  double solidus;   // K: fully solid below
+  double liquidus;  // K: fully liquid above
+  SourceLocation location;  // of 'liquidus'
+};
+
 struct Material {
   std::string name;
   SourceLocation location;  // of the material's name in its file
@@ -37,6 +45,7 @@ struct Material {
   std::optional<TemperatureTable> surfaceTension;     // Gamma_g(T), N/m, non-negative
   std::optional<InternalEnergyTable> internalEnergy;  // u(T), J/kg (or from cp(T))
   std::optional<double> emissivity;                   // beta of eq. (16), in [0, 1]
+  std::optional<FreezingRange> freezingRange;         // solidus, liquidus
 
   // The keys a material may have.
   static const std::vector<std::string>& validKeys();
@@ -53,6 +62,7 @@ struct Material {
   const TemperatureTable& requireSurfaceTension(std::string_view neededBy) const;
   const InternalEnergyTable& requireInternalEnergy(std::string_view neededBy) const;
   double requireEmissivity(std::string_view neededBy) const;
+  const FreezingRange& requireFreezingRange(std::string_view neededBy) const;
 
  private:
   [[noreturn]] void missing(std::string_view key, std::string_view neededBy) const;

@@ -25,6 +25,7 @@ CastingSolver::CastingSolver(const CaseFolder& caseFolder)
       flowSetup_(readFlowSetup(caseFolder, gravity_)),
       heatSetup_(readHeatSetup(caseFolder)),
       surfaceTensionSetup_(readSurfaceTensionSetup(caseFolder, flowSetup_)),
+      solidificationSetup_(readSolidificationSetup(caseFolder, flowSetup_, heatSetup_)),
       writer_(caseFolder, time_.settings().purgeWrite) {
   for (const std::string& repaired : repairedWrites_) {
     info() << "Repaired interrupted write: " << repaired << std::endl;
@@ -45,6 +46,7 @@ CastingSolver::CastingSolver(const CaseFolder& caseFolder)
     setUpNeighbourhood();
     if (flowSetup_.enabled) setUpFlow();
     if (heatSetup_.enabled) setUpHeat();
+    if (solidificationSetup_.enabled) setUpSolidification();
     startModels();
   } else {
     for (const ParticleCloud& cloud : clouds_) {
@@ -140,6 +142,9 @@ void CastingSolver::setUpNeighbourhood() {
 
 void CastingSolver::setUpFlow() {
   ParticleCloud& fluid = cloudNamed(flowSetup_.fluidCloud);
+  if (solidificationSetup_.enabled) {
+    flowSetup_.settings.cavitationPressure = solidificationSetup_.cavitationPressure;
+  }
   for (const std::string& added : prepareFluidFields(flowSetup_, fluid)) {
     info() << "Cloud " << fluid.name() << ": initial " << added << " from constant/\n";
   }
@@ -286,6 +291,26 @@ void CastingSolver::setUpHeat() {
   if (!flowSetup_.enabled) info() << "    no flow: the particles stay where they are\n";
 }
 
+// The fluid's rho_s, mu and solid fraction from its T before the flow's start state is computed
+// (a restart gets the same values: a frozen particle's rho_s is read back, the others follow T).
+void CastingSolver::setUpSolidification() {
+  SolidificationSettings settings = solidificationSetup_.settings;
+  const Material& material = *solidificationSetup_.material;
+  const FlowSettings& flow = flowSetup_.settings;
+  const double spacing = fluid_->attributes().at("spacing");
+  // the viscosity whose explicit limit 0.125 dx^2 rho / mu is the acoustic step maxCo dx / c
+  const double liquidDensity = (*material.density)(material.freezingRange->liquidus);
+  settings.viscosityLimit = static_cast<Real>(0.125 * liquidDensity * spacing * flow.soundSpeed /
+                                              time_.settings().maxCo);
+  solidification_ = std::make_unique<Solidification>(settings, material, *fluid_);
+  solidification_->update();
+  info() << "Solidification: " << solidification_->description() << '\n'
+         << "    frozen particles stay where they are (wall for the melt; their own contraction "
+            "moves nothing); melt below "
+         << flowSetup_.settings.cavitationPressure << " Pa opens a cavity\n";
+  logSolidification();
+}
+
 // The first search and the rates of the start state (a restart keeps the order and the rates
 // it was written with).
 void CastingSolver::startModels() {
@@ -367,6 +392,7 @@ void CastingSolver::evolve(double deltaT) {
     addWallTime(heatSeconds_, [&] {
       energy_->computeRates();
       energy_->halfKick(heatDeltaT_);
+      if (solidification_) solidification_->update();
     });
     ++heatSteps_;
   }
@@ -382,6 +408,7 @@ void CastingSolver::flushPendingHeat() {
     if (exposedArea_) exposedArea_->compute();
     energy_->computeRates();
     energy_->halfKick(heatDeltaT_);
+    if (solidification_) solidification_->update();
   });
   ++heatSteps_;
 }
@@ -452,6 +479,7 @@ void CastingSolver::logStep(bool printBlock) {
     info() << line.str();
   }
   if (energy_) logHeat();
+  if (solidification_) logSolidification();
   info() << clock_.timesLine() << '\n'
          << clock_.progressLine(time_.progress(), stepsTaken_) << '\n'
          << std::endl;  // flushed: a killed run's log ends at its last step
@@ -484,6 +512,17 @@ void CastingSolver::logHeat() {
   info() << line.str();
 }
 
+void CastingSolver::logSolidification() {
+  const SolidificationSummary s = solidification_->summary();
+  std::ostringstream line;
+  line.precision(4);
+  line << "Solidification: solid fraction " << s.solidFraction << " (by mass); of "
+       << s.particles << " particles " << s.liquid << " liquid, " << s.frozen << " frozen ("
+       << s.solid << " fully solid), " << s.particles - s.frozen << " flowing";
+  if (s.viscosityCapped > 0) line << " (" << s.viscosityCapped << " with mu capped)";
+  info() << line.str() << '\n';
+}
+
 void CastingSolver::logTimeSpent() {
   std::ostringstream line;
   line.precision(3);
@@ -511,7 +550,9 @@ std::string CastingSolver::checkHealth() {
   problem.precision(4);
   for (const ParticleCloud& cloud : clouds_) {
     if (!cloud.hasVectorField("U")) continue;  // at rest: nothing to go bad
-    const CloudHealth health = measureCloudHealth(cloud, domain_);
+    const bool cavities = &cloud == fluid_ && flowSetup_.settings.cavitationPressure >
+                                                   std::numeric_limits<Real>::lowest();
+    const CloudHealth health = measureCloudHealth(cloud, domain_, cavities);
     if (!health.finiteAndInside()) {
       problem << health.outside << " particle(s) of cloud '" << cloud.name()
               << "' left the domain and " << health.nonFinite << " went non-finite; the first, "

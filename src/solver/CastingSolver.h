@@ -14,6 +14,7 @@
 #include "solver/FlowSetup.h"
 #include "solver/HeatSetup.h"
 #include "solver/RunHealth.h"
+#include "solver/SolidificationSetup.h"
 #include "solver/SurfaceTensionSetup.h"
 #include "sph/ExposedArea.h"
 #include "sph/WeaklyCompressibleFlow.h"
@@ -45,6 +46,7 @@ class CastingSolver {
   void setUpNeighbourhood();
   void setUpFlow();
   void setUpHeat();
+  void setUpSolidification();
   void startModels();
   void setUpFunctionObjects(const Dictionary& controlDict);
   ParticleCloud* findCloud(const std::string& name);   // nullptr when absent
@@ -58,6 +60,7 @@ class CastingSolver {
   void logRereadMessage();
   void logTimeSpent();
   void logHeat();
+  void logSolidification();
   // Why the run must stop after the step just taken, or "" when every check passed; warns in
   // the log about what is bad but not yet fatal.
   std::string checkHealth();
@@ -80,6 +83,7 @@ class CastingSolver {
   FlowSetup flowSetup_;
   HeatSetup heatSetup_;
   SurfaceTensionSetup surfaceTensionSetup_;
+  SolidificationSetup solidificationSetup_;
   std::vector<ParticleCloud> clouds_;        // of the time folders: read, stepped, written
   std::vector<ParticleCloud> staticClouds_;  // of constant/particles: read only
   // The cell grids and pair lists of every model, built once per step (with flow or heat).
@@ -88,6 +92,7 @@ class CastingSolver {
   std::unique_ptr<SurfaceEnergyTension> surfaceTension_;  // a force model of the flow
   ParticleCloud* fluid_ = nullptr;
   std::unique_ptr<EnergyEquation> energy_;
+  std::unique_ptr<Solidification> solidification_;  // follows the fluid's T after heat steps
   std::unique_ptr<ExposedArea> exposedArea_;      // A_i, when a model reads it
   bool exposedAreaRestored_ = false;              // read with a restart's clouds
   std::vector<const ParticleCloud*> wallClouds_;  // the flow's walls

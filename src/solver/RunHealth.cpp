@@ -67,7 +67,8 @@ Domain defaultDomain(const std::vector<const ParticleCloud*>& clouds) {
   return box;
 }
 
-CloudHealth measureCloudHealth(const ParticleCloud& cloud, const Domain& domain) {
+CloudHealth measureCloudHealth(const ParticleCloud& cloud, const Domain& domain,
+                               bool expansionOpensCavities) {
   const auto& x = cloud.positions();
   const auto& u = cloud.vectorField("U");
   CloudHealth health;
@@ -76,6 +77,11 @@ CloudHealth measureCloudHealth(const ParticleCloud& cloud, const Domain& domain)
   static const std::vector<Real> none;
   const auto& rho = health.hasDensity ? cloud.scalarField("rho") : none;
   const auto& restDensity = health.hasDensity ? cloud.scalarField("restDensity") : none;
+  const double lowestCounted = expansionOpensCavities ? 0.0 : -1e300;
+  auto deviationOf = [&](std::size_t i) {
+    const double relative = static_cast<double>(rho[i] / restDensity[i]) - 1.0;
+    return std::abs(std::max(relative, lowestCounted));
+  };
   const Real noDensity = 1;  // a cloud without density: only position and velocity are checked
   // Counted in one pass (max and sums: the same on any number of threads); the particles named
   // in messages are found again only when needed.
@@ -91,7 +97,7 @@ CloudHealth measureCloudHealth(const ParticleCloud& cloud, const Domain& domain)
                (x[i].array() > domain.upper.array()).any()) {
       ++outside;
     } else if (health.hasDensity) {
-      deviation = std::max(deviation, std::abs(static_cast<double>(rho[i] / restDensity[i]) - 1.0));
+      deviation = std::max(deviation, deviationOf(i));
     }
   }
   health.nonFinite = nonFinite;
@@ -108,7 +114,7 @@ CloudHealth measureCloudHealth(const ParticleCloud& cloud, const Domain& domain)
   }
   if (health.hasDensity && deviation > 0) {
     for (std::size_t i = 0; i < x.size(); ++i) {
-      if (std::abs(static_cast<double>(rho[i] / restDensity[i]) - 1.0) == deviation) {
+      if (deviationOf(i) == deviation) {
         health.mostDeviating = i;
         health.mostDeviatingPosition = x[i];
         break;

@@ -51,14 +51,19 @@ struct CloudHealth {
   std::size_t firstBad = 0;   // index of the first of either
   Vector firstBadPosition = Vector::Zero();
   bool hasDensity = false;             // the cloud has rho and restDensity
-  double largestDensityDeviation = 0;  // max |rho / rho_s - 1|, fraction
+  // max |rho / rho_s - 1| (fraction); with expansionOpensCavities max(rho / rho_s - 1, 0)
+  double largestDensityDeviation = 0;
   std::size_t mostDeviating = 0;
   Vector mostDeviatingPosition = Vector::Zero();
 
   bool finiteAndInside() const { return nonFinite == 0 && outside == 0; }
 };
 
-CloudHealth measureCloudHealth(const ParticleCloud& cloud, const Domain& domain);
+// expansionOpensCavities: the melt's pressure has a floor (FlowSettings::cavitationPressure), so
+// a density below rho_s is a shrinkage cavity spread over the particles, not an error: only
+// compression counts as deviation.
+CloudHealth measureCloudHealth(const ParticleCloud& cloud, const Domain& domain,
+                               bool expansionOpensCavities = false);
 
 // The particle's place in a message: "particle id 345 (index 12) of cloud 'metal' at (0.2 0.05
 // 0.01)".

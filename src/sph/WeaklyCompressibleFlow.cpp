@@ -152,9 +152,10 @@ void WeaklyCompressibleFlow::updatePressure() {
   const auto& density = fluid_.scalarField("rho");
   const auto& restDensity = fluid_.scalarField("restDensity");
   auto& pressure = fluid_.scalarField("p");
+  const Real lowest = settings_.cavitationPressure;
 #pragma omp parallel for
   for (std::size_t i = 0; i < density.size(); ++i) {
-    pressure[i] = eos.pressure(density[i], restDensity[i]);
+    pressure[i] = std::max(eos.pressure(density[i], restDensity[i]), lowest);
   }
 }
 
@@ -446,6 +447,23 @@ void WeaklyCompressibleFlow::computeRates(RatePart part) {
   }
   if (part == RatePart::densityRate) return;
   for (FluidForceModel* model : forceModels_) model->addAcceleration();
+  holdFrozenParticles();
+}
+
+// Frozen particles (solidified metal) neither move nor accelerate: the kicks that follow keep
+// their velocity at zero, whatever it was when they froze.
+void WeaklyCompressibleFlow::holdFrozenParticles() {
+  if (!fluid_.hasScalarField("frozen")) return;
+  const auto& frozen = fluid_.scalarField("frozen");
+  auto& v = fluid_.vectorField("U");
+  auto& acceleration = fluid_.vectorField("acceleration");
+#pragma omp parallel for
+  for (std::size_t i = 0; i < frozen.size(); ++i) {
+    if (frozen[i] != 0) {
+      v[i].setZero();
+      acceleration[i].setZero();
+    }
+  }
 }
 
 void WeaklyCompressibleFlow::step(double deltaT) {

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <limits>
 #include <memory>
 #include <string>
 #include <vector>
@@ -32,6 +33,11 @@ struct FlowSettings {
   // The least distance, in particle spacings, a fluid particle keeps from a wall surface
   // (WallClearance.h, WallSurfaceDistance.h).
   Real wallClearance = Real(wallClearanceInSpacings);
+  // The lowest pressure the melt holds, Pa (gauge): below it the equation of state gives this
+  // value, so that melt pulled apart (shrinkage enclosed by solid) opens a cavity instead of
+  // clumping through the tensile instability. Solidification sets it (cavitationPressure);
+  // otherwise there is none.
+  Real cavitationPressure = std::numeric_limits<Real>::lowest();
 };
 
 // Wall time spent in each part of the flow's steps, seconds since construction.
@@ -62,7 +68,10 @@ struct FlowStepLimits {
 // integrated kick-drift-kick (deltaSPH: Stormer-Verlet with the density updated like the
 // positions, stepStormerVerlet says why).
 //
-// Fluid fields read: U, rho, mass, viscosity (mu, Pa s), restDensity (rho_s); written: p,
+// Fluid fields read: U, rho, mass, viscosity (mu, Pa s), restDensity (rho_s), and frozen when the
+// cloud has it (solidification/Solidification.h: a particle with frozen != 0 has zero velocity
+// and acceleration, so it stays where it is, a wall for the others, while its density follows
+// the continuity equation); written: p,
 // acceleration, densityRate (kept in the cloud, so a restart continues bit for bit). Cloud
 // attribute spacing (dx) for the step limits. Wall fields read (as particleizeMold writes them):
 // volume, normal (unit, out of the wall into the fluid), wallDistance (depth behind the wall
@@ -140,6 +149,7 @@ class WeaklyCompressibleFlow {
            (settings_.densityScheme == "deltaSPH" && part != RatePart::acceleration);
   }
   void computeRates(RatePart part = RatePart::both);
+  void holdFrozenParticles();
   template <int Dim>
   void computeRatesInDimension(RatePart part);
   template <int Dim, class Interface>

@@ -49,6 +49,8 @@ TEST(MaterialLibrary, AC4CHFromTheEtcFolderCarriesTable1) {
   // log-linear between 873 K and 888.64 K: the geometric mean at the midpoint
   EXPECT_NEAR(alloy.requireViscosity("the test")(880.82), std::sqrt(186 * 1.57e-3), 1e-9);
   EXPECT_FALSE(alloy.emissivity);  // the paper gives none
+  EXPECT_DOUBLE_EQ(alloy.requireFreezingRange("the test").liquidus, 888.64);
+  EXPECT_DOUBLE_EQ(alloy.requireFreezingRange("the test").solidus, 830.44);
 
   const Material& iron = library.get("mold", {}, "mold");
   EXPECT_DOUBLE_EQ(iron.requireEmissivity("radiation"), 0.3);
@@ -133,6 +135,13 @@ TEST(MaterialLibrary, ErrorsNameFileLineKeyAndRow) {
   expectError("metal\n{\n    densty 2400;\n}\n", ":4:5:", "did you mean 'density'?");
   // wrong dimensions
   expectError("metal\n{\n    conductivity [1 1 -3 0 0 0 0] 26;\n}\n", ":4:", "conductivity");
+  // a freezing range: both ends, in order
+  expectError("metal\n{\n    liquidus 888;\n}\n", ":4:5:",
+              "material 'metal' in constant/physicalProperties gives 'liquidus' but not "
+              "'solidus'");
+  expectError("metal\n{\n    liquidus 830;\n    solidus 888;\n}\n", ":5:5:",
+              "'solidus' 888 K of material 'metal' in constant/physicalProperties must be "
+              "positive and below its 'liquidus' 830 K");
 }
 
 }  // namespace

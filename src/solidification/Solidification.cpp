@@ -1,0 +1,103 @@
+#include "solidification/Solidification.h"
+
+#include <algorithm>
+#include <limits>
+#include <sstream>
+
+#include "core/Error.h"
+
+namespace sphcast {
+
+Solidification::Solidification(SolidificationSettings settings, const Material& material,
+                               ParticleCloud& metal)
+    : settings_(settings), material_(material), metal_(metal) {
+  const char* neededBy = "solidification";
+  const FreezingRange& range = material_.requireFreezingRange(neededBy);
+  const InternalEnergyTable& energy = material_.requireInternalEnergy(neededBy);
+  material_.requireDensity(neededBy);
+  material_.requireViscosity(neededBy);
+  liquidusEnergy_ = energy.energy(static_cast<Real>(range.liquidus));
+  freezingRangeEnergy_ = liquidusEnergy_ - energy.energy(static_cast<Real>(range.solidus));
+  if (!metal_.hasScalarField("T")) {
+    throw Error("solidification needs the temperature T of cloud '" + metal_.name() +
+                "': heatTransfer must carry it (its clouds)");
+  }
+  for (const std::string& name : fields()) {
+    if (!metal_.hasScalarField(name)) metal_.addScalarField(name);
+  }
+}
+
+const std::vector<std::string>& Solidification::fields() {
+  static const std::vector<std::string> names{"solidFraction", "frozen", "restDensity",
+                                              "viscosity"};
+  return names;
+}
+
+Real Solidification::solidFraction(Real temperature) const {
+  const Real released = liquidusEnergy_ - material_.internalEnergy->energy(temperature);
+  return std::clamp(released / freezingRangeEnergy_, Real(0), Real(1));
+}
+
+void Solidification::update() {
+  const auto& temperature = metal_.scalarField("T");
+  auto& fraction = metal_.scalarField("solidFraction");
+  auto& frozen = metal_.scalarField("frozen");
+  auto& restDensity = metal_.scalarField("restDensity");
+  auto& viscosity = metal_.scalarField("viscosity");
+  const TemperatureTable& density = *material_.density;
+  const TemperatureTable& mu = *material_.viscosity;
+  const Real limit = settings_.viscosityLimit > 0 ? settings_.viscosityLimit
+                                                  : std::numeric_limits<Real>::max();
+  const auto count = static_cast<std::ptrdiff_t>(metal_.size());
+#pragma omp parallel for schedule(static)
+  for (std::ptrdiff_t n = 0; n < count; ++n) {
+    const auto i = static_cast<std::size_t>(n);
+    const double T = static_cast<double>(temperature[i]);
+    fraction[i] = solidFraction(temperature[i]);
+    const bool isFrozen = fraction[i] >= settings_.frozenSolidFraction;
+    // a frozen particle keeps the rho_s it froze with (its contraction moves nothing)
+    if (!isFrozen || frozen[i] == 0) restDensity[i] = static_cast<Real>(density(T));
+    frozen[i] = isFrozen ? Real(1) : Real(0);
+    viscosity[i] = std::min(static_cast<Real>(mu(T)), limit);
+  }
+}
+
+SolidificationSummary Solidification::summary() const {
+  SolidificationSummary s;
+  const auto& temperature = metal_.scalarField("T");
+  const auto& fraction = metal_.scalarField("solidFraction");
+  const auto& frozen = metal_.scalarField("frozen");
+  const auto& mass = metal_.scalarField("mass");
+  const Real limit = settings_.viscosityLimit;
+  double totalMass = 0, solidMass = 0;
+  s.particles = metal_.size();
+  for (std::size_t i = 0; i < metal_.size(); ++i) {
+    if (fraction[i] == 0) ++s.liquid;
+    if (fraction[i] == 1) ++s.solid;
+    if (frozen[i] != 0) ++s.frozen;
+    if (limit > 0 && (*material_.viscosity)(static_cast<double>(temperature[i])) > limit &&
+        frozen[i] == 0) {
+      ++s.viscosityCapped;
+    }
+    totalMass += static_cast<double>(mass[i]);
+    solidMass += static_cast<double>(mass[i] * fraction[i]);
+  }
+  s.solidFraction = totalMass > 0 ? solidMass / totalMass : 0;
+  return s;
+}
+
+std::string Solidification::description() const {
+  const FreezingRange& range = *material_.freezingRange;
+  std::ostringstream text;
+  text << "solidification of cloud " << metal_.name() << " (material " << material_.name
+       << "): solid fraction from the heat released between liquidus " << range.liquidus
+       << " K and solidus " << range.solidus << " K (latent and sensible "
+       << freezingRangeEnergy_ << " J/kg); frozen from f_s = " << settings_.frozenSolidFraction;
+  if (settings_.viscosityLimit > 0) {
+    text << "; viscosity capped at " << settings_.viscosityLimit
+         << " Pa s below that (the acoustic step's viscous limit)";
+  }
+  return text.str();
+}
+
+}  // namespace sphcast

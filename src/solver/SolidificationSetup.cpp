@@ -1,0 +1,60 @@
+#include "solver/SolidificationSetup.h"
+
+#include <algorithm>
+#include <filesystem>
+
+#include "core/Error.h"
+#include "core/dictionary/Dictionary.h"
+
+namespace sphcast {
+
+namespace {
+const Dimensions dimensionless{{0, 0, 0, 0, 0, 0, 0}};
+const Dimensions pressure{{1, -1, -2, 0, 0, 0, 0}};
+}  // namespace
+
+SolidificationSetup readSolidificationSetup(const CaseFolder& caseFolder, const FlowSetup& flow,
+                                            const HeatSetup& heat) {
+  SolidificationSetup setup;
+  const auto modelsFile = caseFolder.constantFile("physicsModels");
+  if (!std::filesystem::exists(modelsFile)) return setup;
+  const Dictionary models = Dictionary::read(modelsFile);
+  if (!models.found("solidification")) return setup;
+  const Dictionary& dict = models.subDict("solidification");
+  dict.checkKeys({"model", "frozenSolidFraction", "cavitationPressure"});
+  if (dict.getChoice("model", {"none", "frozenSolid"}) == "none") return setup;
+  if (!flow.enabled) {
+    throw DictionaryError(dict.location("model"),
+                          "solidification acts on the flow's fluid, but " + models.name() +
+                              " has no flow (flow { model weaklyCompressible; ... })");
+  }
+  if (!heat.enabled ||
+      std::find(heat.clouds.begin(), heat.clouds.end(), flow.fluidCloud) == heat.clouds.end()) {
+    throw DictionaryError(dict.location("model"),
+                          "solidification follows the temperature of the flow's fluid '" +
+                              flow.fluidCloud + "', but heatTransfer's clouds in " +
+                              models.name() + " do not carry it");
+  }
+  setup.enabled = true;
+  if (dict.found("frozenSolidFraction")) {
+    const double fraction = dict.get<double>("frozenSolidFraction", dimensionless);
+    if (!(fraction > 0 && fraction <= 1)) {
+      throw DictionaryError(dict.location("frozenSolidFraction"),
+                            "'frozenSolidFraction' must lie in (0, 1] in " + dict.name());
+    }
+    setup.settings.frozenSolidFraction = static_cast<Real>(fraction);
+  }
+  if (dict.found("cavitationPressure")) {
+    setup.cavitationPressure = dict.get<Real>("cavitationPressure", pressure);
+  }
+  const Material& material = heat.materialOf(flow.fluidCloud);
+  // the checks now, with the material's place in the message, not at the first step
+  material.requireFreezingRange("solidification");
+  material.requireInternalEnergy("solidification");
+  material.requireDensity("solidification");
+  material.requireViscosity("solidification");
+  setup.material = material;
+  return setup;
+}
+
+}  // namespace sphcast
