@@ -86,6 +86,9 @@ class TimeControl {
   // Whether the final state must be written when the loop ends (reached endTime, or stopped
   // with writeNow/nextWrite), and it was not written by the last step.
   bool finalWriteWanted() const;
+  // Ends the run after the step just taken (a model's end condition: the casting is solid);
+  // the final state is written as at endTime.
+  void requestStop(const std::string& reason) { stopReason_ = reason; }
   // For the log: why run() returned false.
   std::string stopReason() const { return stopReason_; }
   // Any message from the last controlDict re-read (empty if nothing changed).

@@ -86,6 +86,11 @@ SolidificationSummary Solidification::summary() const {
   return s;
 }
 
+bool Solidification::allSolid() const {
+  const auto& fraction = metal_.scalarField("solidFraction");
+  return std::all_of(fraction.begin(), fraction.end(), [](Real f) { return f == 1; });
+}
+
 std::string Solidification::description() const {
   const FreezingRange& range = *material_.freezingRange;
   std::ostringstream text;

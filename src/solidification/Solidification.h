@@ -71,6 +71,8 @@ class Solidification {
 
   const SolidificationSettings& settings() const { return settings_; }
   SolidificationSummary summary() const;
+  // Every particle fully solid (f_s = 1).
+  bool allSolid() const;
   std::string description() const;
 
  private:

@@ -304,6 +304,10 @@ void CastingSolver::setUpSolidification() {
                                               time_.settings().maxCo);
   solidification_ = std::make_unique<Solidification>(settings, material, *fluid_);
   solidification_->update();
+  if (const auto mode = fluid_->attributes().find("coolingMode");
+      mode != fluid_->attributes().end()) {
+    cooling_ = solidificationSetup_.cooling && mode->second != 0;
+  }
   info() << "Solidification: " << solidification_->description() << '\n'
          << "    frozen particles stay where they are (wall for the melt; their own contraction "
             "moves nothing); melt below "
@@ -342,6 +346,11 @@ void CastingSolver::setUpFunctionObjects(const Dictionary& controlDict) {
 }
 
 double CastingSolver::stableDeltaT(std::string& limiter) const {
+  if (cooling_) {  // the flow takes its own steps within (evolveCooling)
+    const double heat = energy_->stableDeltaT(limiter);
+    limiter += " (cooling)";
+    return heat;
+  }
   if (flow_ || energy_) {
     double stable = std::numeric_limits<double>::infinity();
     if (flow_) stable = flow_->stepLimits(time_.settings().maxCo).smallest(limiter);
@@ -368,6 +377,10 @@ double CastingSolver::stableDeltaT(std::string& limiter) const {
 
 // One step: the models' passes over one neighbourhood search, kick-drift-kick.
 void CastingSolver::evolve(double deltaT) {
+  if (cooling_) {
+    evolveCooling(deltaT);
+    return;
+  }
   if (!flow_ && !energy_) {
     for (ParticleCloud& cloud : clouds_) {
       if (cloud.hasVectorField("U")) motion_.step(cloud, deltaT);
@@ -429,6 +442,66 @@ void CastingSolver::flushPendingHeat() {
 // 50 / 141 heat steps: the error of the big steps is first order in their length, the steep
 // start of a contact being what they resolve worst. 0.1 costs 50 heat steps instead of 2,621
 // (0.25 s of heat in a 21 s run, against 13.4 s of a 35 s run).
+// Once the melt is still, the heat sets the pace (DESIGN: cooling to the end): a step of the
+// heat's stable length with the particles where they are, then flowStepsPerHeatStep flow steps
+// of the acoustic length, in which the melt answers the rho_s the heat step changed (shrinkage
+// feeding). The flow's time thus runs heat step / (n acoustic steps) times slower than the heat's:
+// right for a melt that creeps, wrong for one that moves (updateCoolingMode leaves the mode then).
+void CastingSolver::evolveCooling(double deltaT) {
+  heatDeltaT_ = deltaT;
+  addWallTime(heatSeconds_, [&] {
+    energy_->halfKick(deltaT);
+    if (exposedArea_) exposedArea_->compute();
+    energy_->computeRates();
+    energy_->halfKick(deltaT);
+    solidification_->update();
+  });
+  ++heatSteps_;
+  for (int k = 0; k < solidificationSetup_.cooling->flowStepsPerHeatStep; ++k) {
+    std::string limiter;
+    const double flowDeltaT = flow_->stepLimits(time_.settings().maxCo).smallest(limiter);
+    if (!(flowDeltaT > 0) || !std::isfinite(flowDeltaT)) {
+      std::ostringstream problem;
+      problem << "the flow's stable step (" << limiter << ") is " << flowDeltaT;
+      throw Error(problem.str());
+    }
+    flow_->kickAndDrift(flowDeltaT);
+    addWallTime(searchSeconds_, [&] { neighbourhood_->update(); });
+    flow_->keepClearOfWalls();
+    flow_->computeRatesAndKick(flowDeltaT);
+    ++flowSubSteps_;
+    lastFlowSubStep_ = flowDeltaT;
+  }
+}
+
+// Enters the cooling mode when the melt is still (max|U| below stillSpeed), leaves it when the
+// melt moves (above twice that), at the start of a step: the decision depends on the state only
+// (and the mode, which the fluid carries as an attribute), so a restart takes the same one.
+void CastingSolver::updateCoolingMode() {
+  if (!solidification_ || !solidificationSetup_.cooling) return;
+  const CoolingAcceleration& cooling = *solidificationSetup_.cooling;
+  double fastest = 0;
+  for (const Vector& v : fluid_->vectorField("U")) {
+    fastest = std::max(fastest, static_cast<double>(v.norm()));
+  }
+  const bool wasCooling = cooling_;
+  if (!cooling_ && fastest < cooling.stillSpeed) cooling_ = true;
+  if (cooling_ && fastest > 2 * cooling.stillSpeed) cooling_ = false;
+  if (cooling_ == wasCooling) return;
+  fluid_->attributes()["coolingMode"] = cooling_ ? 1 : 0;
+  meanStableDeltaT_ = 0;  // the steps change length by design
+  if (cooling_) {
+    flushPendingHeat();
+    info() << "Cooling from time " << time_.timeName() << ": the melt is still (max|U| "
+           << fastest << " m/s < " << cooling.stillSpeed << "): steps of the heat's length, each "
+           << "followed by " << cooling.flowStepsPerHeatStep << " acoustic flow steps\n\n";
+  } else {
+    info() << "Cooling paused at time " << time_.timeName() << ": the melt moves (max|U| "
+           << fastest << " m/s > " << 2 * cooling.stillSpeed
+           << "): every step acoustic again\n\n";
+  }
+}
+
 bool CastingSolver::heatStepsWithFlow(double deltaT) {
   constexpr double heatStepFraction = 0.1;
   if (!flow_ || heatSetup_.heatEveryFlowStep) {
@@ -520,6 +593,11 @@ void CastingSolver::logSolidification() {
        << s.particles << " particles " << s.liquid << " liquid, " << s.frozen << " frozen ("
        << s.solid << " fully solid), " << s.particles - s.frozen << " flowing";
   if (s.viscosityCapped > 0) line << " (" << s.viscosityCapped << " with mu capped)";
+  if (cooling_) {
+    line << "\n    cooling: heat steps of " << heatDeltaT_ << " s, each with "
+         << solidificationSetup_.cooling->flowStepsPerHeatStep << " flow steps (the last "
+         << lastFlowSubStep_ << " s); " << flowSubSteps_ << " flow steps so far";
+  }
   info() << line.str() << '\n';
 }
 
@@ -687,6 +765,7 @@ void CastingSolver::run() {
   functions_.execute(time_.state(), false);
   while (time_.run()) {
     logRereadMessage();
+    updateCoolingMode();
     std::string limiter;
     const double stable = stableDeltaT(limiter);
     if (const std::string collapse = checkStepCollapse(stable, limiter); !collapse.empty()) {
@@ -719,6 +798,9 @@ void CastingSolver::run() {
     }
     if (failure.empty()) failure = addWallTime(checkSeconds_, [&] { return checkHealth(); });
     if (!failure.empty()) stopWithLastGoodState(before, true, failure);
+    if (solidificationSetup_.endWhenSolid && solidification_->allSolid()) {
+      time_.requestStop("the casting is solid (endWhenSolid)");
+    }
     const bool printBlock = stepsTaken_ % time_.settings().logInterval == 0 || time_.writeTime();
     logStep(printBlock);
     if (time_.writeTime()) addWallTime(outputSeconds_, [&] { writeResults(); });

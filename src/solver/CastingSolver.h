@@ -53,6 +53,8 @@ class CastingSolver {
   ParticleCloud& cloudNamed(const std::string& name);  // throws, listing the clouds present
   double stableDeltaT(std::string& limiter) const;
   void evolve(double deltaT);
+  void updateCoolingMode();
+  void evolveCooling(double deltaT);
   bool heatStepsWithFlow(double deltaT);
   void flushPendingHeat();
   void writeResults();
@@ -105,6 +107,11 @@ class CastingSolver {
   double heatDeltaT_ = 0;       // the length of this step's heat step
   double heatStepDue_ = 0;      // when the pending time makes a heat step (0: to be computed)
   long heatSteps_ = 0;
+  // Cooling to the end (solidificationSetup_.cooling): steps of the heat's length, each with a
+  // few flow steps; a fluid cloud attribute (coolingMode) too, so a restart goes on alike.
+  bool cooling_ = false;
+  long flowSubSteps_ = 0;
+  double lastFlowSubStep_ = 0;
   HealthSettings health_;
   HealthWarnings warnings_;
   double meanStableDeltaT_ = 0;  // running mean of the models' stable step

@@ -65,7 +65,8 @@ FlowSetup readFlowSetup(const CaseFolder& caseFolder, const Vector& gravity) {
   if (!std::filesystem::exists(modelsFile)) return setup;
   const Dictionary models = Dictionary::read(modelsFile);
   models.checkKeys(
-      {"dimension", "periodic", "materials", "flow", "heatTransfer", "surfaceTension"});
+      {"dimension", "periodic", "materials", "flow", "heatTransfer", "surfaceTension",
+       "solidification"});
   if (!models.found("flow")) return setup;
   const Dictionary& flow = models.subDict("flow");
   flow.checkKeys({"model", "fluid", "walls"});

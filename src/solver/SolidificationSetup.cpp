@@ -11,6 +11,7 @@ namespace sphcast {
 namespace {
 const Dimensions dimensionless{{0, 0, 0, 0, 0, 0, 0}};
 const Dimensions pressure{{1, -1, -2, 0, 0, 0, 0}};
+const Dimensions speed{{0, 1, -1, 0, 0, 0, 0}};
 }  // namespace
 
 SolidificationSetup readSolidificationSetup(const CaseFolder& caseFolder, const FlowSetup& flow,
@@ -21,7 +22,8 @@ SolidificationSetup readSolidificationSetup(const CaseFolder& caseFolder, const 
   const Dictionary models = Dictionary::read(modelsFile);
   if (!models.found("solidification")) return setup;
   const Dictionary& dict = models.subDict("solidification");
-  dict.checkKeys({"model", "frozenSolidFraction", "cavitationPressure"});
+  dict.checkKeys({"model", "frozenSolidFraction", "cavitationPressure", "cooling",
+                  "endWhenSolid"});
   if (dict.getChoice("model", {"none", "frozenSolid"}) == "none") return setup;
   if (!flow.enabled) {
     throw DictionaryError(dict.location("model"),
@@ -46,6 +48,26 @@ SolidificationSetup readSolidificationSetup(const CaseFolder& caseFolder, const 
   }
   if (dict.found("cavitationPressure")) {
     setup.cavitationPressure = dict.get<Real>("cavitationPressure", pressure);
+  }
+  setup.endWhenSolid = dict.getChoiceOrDefault("endWhenSolid", {"yes", "no"}, "no") == "yes";
+  if (dict.found("cooling")) {
+    const Dictionary& cooling = dict.subDict("cooling");
+    cooling.checkKeys({"flowStepsPerHeatStep", "stillSpeed"});
+    CoolingAcceleration acceleration;
+    acceleration.flowStepsPerHeatStep =
+        cooling.getOrDefault<int>("flowStepsPerHeatStep", acceleration.flowStepsPerHeatStep);
+    if (acceleration.flowStepsPerHeatStep < 1) {
+      throw DictionaryError(cooling.location("flowStepsPerHeatStep"),
+                            "'flowStepsPerHeatStep' must be at least 1 in " + cooling.name());
+    }
+    if (cooling.found("stillSpeed")) {
+      acceleration.stillSpeed = cooling.get<double>("stillSpeed", speed);
+      if (!(acceleration.stillSpeed > 0)) {
+        throw DictionaryError(cooling.location("stillSpeed"),
+                              "'stillSpeed' must be positive in " + cooling.name());
+      }
+    }
+    setup.cooling = acceleration;
   }
   const Material& material = heat.materialOf(flow.fluidCloud);
   // the checks now, with the material's place in the message, not at the first step

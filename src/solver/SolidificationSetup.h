@@ -19,16 +19,32 @@ namespace sphcast {
 //                                         // 0.5 by default
 //       cavitationPressure  0;            // Pa (gauge): the lowest pressure the melt holds
 //                                         // before it opens a cavity; 0 by default
+//       endWhenSolid        yes;          // optional: the run ends (written) once every
+//                                         // particle is fully solid (f_s = 1); no by default
+//       cooling                           // optional: once the melt is still, steps of the
+//       {                                 // heat's stable length, each followed by
+//           flowStepsPerHeatStep 10;      // this many flow steps of the acoustic length
+//           stillSpeed           0.02;    // m/s: still while max|U| of the melt stays below
+//       }                                 // (back to every acoustic step above twice that)
 //   }
 //
 // It needs the flow (its fluid solidifies) and the heat transfer carrying the fluid's cloud; the
 // fluid's material needs liquidus, solidus, internalEnergy (or specificHeat), density and
 // viscosity (constant/physicalProperties). The solver caps the mush's viscosity at the acoustic
 // step's viscous limit, 0.125 rho_s(T_liq) dx c / maxCo.
+// Cooling to the end in fewer steps (CastingSolver::evolveCooling): the flow's time runs
+// slower than the heat's by heat step / (flowStepsPerHeatStep acoustic steps).
+struct CoolingAcceleration {
+  int flowStepsPerHeatStep = 10;
+  double stillSpeed = 0.02;  // m/s
+};
+
 struct SolidificationSetup {
   bool enabled = false;
+  std::optional<CoolingAcceleration> cooling;
   SolidificationSettings settings;
   Real cavitationPressure = 0;
+  bool endWhenSolid = false;
   std::optional<Material> material;  // the fluid's
 };
 

@@ -5,7 +5,7 @@ namespace sphcast {
 WallClearanceReport enforceWallClearance(std::span<Vector> positions, std::span<Vector> velocities,
                                          const std::vector<WallSurfaceView>& walls,
                                          const PeriodicBox& periodic, Real spacing,
-                                         Real clearance) {
+                                         Real clearance, std::span<const Real> held) {
   WallClearanceReport report;
   if (walls.empty()) return report;
   const std::size_t count = positions.size();
@@ -13,6 +13,7 @@ WallClearanceReport enforceWallClearance(std::span<Vector> positions, std::span<
   std::size_t beyondSurface = 0;
 #pragma omp parallel for schedule(static) reduction(+ : corrected, beyondSurface)
   for (std::size_t i = 0; i < count; ++i) {
+    if (!held.empty() && held[i] != 0) continue;
     const WallSurfaceDistance surface =
         wallSurfaceDistance(positions[i], i, walls, periodic, spacing);
     if (!surface.found || surface.distance >= clearance) continue;

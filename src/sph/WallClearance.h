@@ -28,8 +28,12 @@ struct WallClearanceReport {
 // clearance, and its velocity towards the wall is removed (a perfectly inelastic contact with a
 // wall at rest; the tangential velocity is kept). Gather over the fluid particles: each writes
 // only its own position and velocity, the result does not depend on the thread count.
+// Particles with held[i] != 0 (frozen metal, when `held` is not empty) are left where they are:
+// their surface distance, estimated from pair lists that change from step to step, would
+// otherwise nudge them by round-off-sized amounts.
 WallClearanceReport enforceWallClearance(std::span<Vector> positions, std::span<Vector> velocities,
                                          const std::vector<WallSurfaceView>& walls,
-                                         const PeriodicBox& periodic, Real spacing, Real clearance);
+                                         const PeriodicBox& periodic, Real spacing, Real clearance,
+                                         std::span<const Real> held = {});
 
 }  // namespace sphcast

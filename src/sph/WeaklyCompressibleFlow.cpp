@@ -139,7 +139,10 @@ void WeaklyCompressibleFlow::keepClearOfWalls() {
   addWallTime(timings_.wallClearance, [&] {
     lastClearance_ =
         enforceWallClearance(fluid_.positions(), fluid_.vectorField("U"), wallSurfaces(),
-                             settings_.periodic, spacing, settings_.wallClearance * spacing);
+                             settings_.periodic, spacing, settings_.wallClearance * spacing,
+                             fluid_.hasScalarField("frozen")
+                                 ? std::span<const Real>(fluid_.scalarField("frozen"))
+                                 : std::span<const Real>());
   });
   // The lists stay those of the positions before the move (by the clearance plus the depth it
   // had reached, under 0.75 dx unless the run then stops; most moves are far smaller): a pair
@@ -451,7 +454,8 @@ void WeaklyCompressibleFlow::computeRates(RatePart part) {
 }
 
 // Frozen particles (solidified metal) neither move nor accelerate: the kicks that follow keep
-// their velocity at zero, whatever it was when they froze.
+// their velocity at zero, whatever it was when they froze. Called after the rates and before the
+// first kick, so that a particle frozen between two steps does not drift on its old velocity.
 void WeaklyCompressibleFlow::holdFrozenParticles() {
   if (!fluid_.hasScalarField("frozen")) return;
   const auto& frozen = fluid_.scalarField("frozen");
@@ -481,6 +485,7 @@ void WeaklyCompressibleFlow::step(double deltaT) {
 // Kick and drift with the rates of the current state (kick-drift-kick); deltaSPH's
 // Stormer-Verlet kicks only the velocity here (computeRatesAndKickStormerVerlet says why).
 void WeaklyCompressibleFlow::kickAndDrift(double deltaT) {
+  holdFrozenParticles();  // those frozen since the last rates (by a heat step) too
   const Real dt = static_cast<Real>(deltaT);
   const Real halfDt = Real(0.5) * dt;
   const bool kickDensity = settings_.densityScheme != "deltaSPH";

@@ -1,0 +1,111 @@
+#!/bin/bash
+# Solidification to the end on a small cup: AC4CH at 970 K dropped at 0.5 m/s onto the floor of
+# a mold held at 300 K (a thermal shock at first contact, and an impact), frozen as it solidifies,
+# cooled to the end in the cooling mode (heat steps with ten flow steps each) and stopped by
+# endWhenSolid. T stays within [300, 970] K, nothing passes the mold, frozen particles do not
+# move, a restart in the cooling mode reproduces the uninterrupted run bit for bit, and bad
+# solidification input stops with file, line and key.
+. "$SPHCAST_TEST_TOOLS"
+
+makeCup() {  # DIR
+    makeMoldCase "$1" 'SetFactory("OpenCASCADE");
+Cylinder(1) = {0, 0, 0, 0, 0, 0.045, 0.02};
+top() = Surface In BoundingBox{-0.03, -0.03, 0.045 - 1e-4, 0.03, 0.03, 0.045 + 1e-4};
+wall() = Surface{:};
+wall() -= top();
+Physical Surface("moldWall") = wall();' \
+    'melt { type cylinder; point1 (0 0 0.006); point2 (0 0 0.03); radius 0.02; }' \
+    '(0 0 -0.5)' 20 100
+    cd "$1" || fail "cannot enter $1"
+    sed -i 's/fields { U (0 0 -0.5); }/fields { U (0 0 -0.5); T 970; }/' system/setCastFieldsDict
+    cat > constant/physicalProperties <<DICT
+FoamFile { version 2.0; format ascii; class dictionary; object physicalProperties; }
+metal { #includeEtc "materials/AC4CH" }
+mold  { density 7874; conductivity 86.05; specificHeat 640; }
+DICT
+    cat >> constant/physicsModels <<DICT
+heatTransfer { clouds (metal mold); fixedTemperature { mold 300; } conduction on; }
+solidification
+{
+    model               frozenSolid;
+    frozenSolidFraction 0.5;
+    endWhenSolid        yes;
+    cooling             { flowStepsPerHeatStep 10; stillSpeed 0.02; }
+}
+DICT
+    setEntry system/controlDict writeInterval 0.5
+    setEntry system/controlDict logInterval 20
+    particleizeMold > log.particleizeMold 2>&1 || fail "particleizeMold"
+    setCastFields > log.setCastFields 2>&1 || fail "setCastFields"
+    cd - > /dev/null || exit 1
+}
+
+makeCup "$scratch/cup"
+cp -r "$scratch/cup" "$scratch/stopped"
+cp -r "$scratch/cup" "$scratch/bad"
+cd "$scratch/cup" || exit 1
+sphCastFoam > log 2>&1 || { tail -20 log >&2; fail "the solidifying cup did not run"; }
+grep -q "^Cooling from time" log || fail "the cooling mode never started"
+grep -q "cooling: heat steps of" log || fail "the log does not say how the cooling steps"
+grep -q "^Stopping: the casting is solid (endWhenSolid)" log || fail "the run did not end solid"
+last=$(ls -d [0-9]* | sort -g | tail -1)
+# T of every log line within [300, 970] K
+awk '/^T metal/ { if ($3 < 300 - 1e-9 || $5 > 970 + 1e-9) bad = 1; n++ }
+     END { exit (bad || n < 5) }' log || fail "T left [300, 970] K (or too few log lines)"
+/usr/bin/python3 - "$last" <<'PY' || fail "the solid cup"
+import sys, glob, math, vtk
+def read(time):
+    reader = vtk.vtkXMLPolyDataReader()
+    reader.SetFileName(f"{time}/metal.vtp")
+    reader.Update()
+    out = reader.GetOutput()
+    data = out.GetPointData()
+    ids = data.GetArray("id")
+    cloud = {}
+    for i in range(out.GetNumberOfPoints()):
+        cloud[int(ids.GetTuple1(i))] = dict(
+            x=out.GetPoint(i), **{name: data.GetArray(name).GetTuple1(i)
+                                  for name in ("T", "solidFraction", "frozen", "rho", "restDensity")})
+    return cloud
+times = sorted((t for t in glob.glob("[0-9]*") if t != "0"), key=float)
+end = read(sys.argv[1])
+assert all(p["solidFraction"] == 1 for p in end.values()), "not all solid at the end"
+worst = max(math.hypot(p["x"][0], p["x"][1]) for p in end.values())
+lowest = min(p["x"][2] for p in end.values())
+print(f"{len(end)} particles, solid at t = {sys.argv[1]} s; outermost r {1e3 * worst:.2f} mm, "
+      f"lowest z {1e3 * lowest:.2f} mm")
+assert worst < 0.02 and lowest > 0, "a particle passed the mold"
+compression = max(p["rho"] / p["restDensity"] - 1 for p in end.values())
+print(f"largest compression {100 * compression:.3f} %")
+assert compression < 0.03
+for t in times:
+    cloud = read(t)
+    assert all(300 - 1e-9 <= p["T"] <= 970 + 1e-9 for p in cloud.values()), f"T out at {t}"
+# particles frozen at a write keep their place to the end (bit for bit)
+for t in times[:-1]:
+    cloud = read(t)
+    moved = [k for k, p in cloud.items() if p["frozen"] == 1 and end[k]["x"] != p["x"]]
+    assert not moved, f"{len(moved)} particles frozen at {t} s moved later"
+print(f"frozen particles of {len(times) - 1} writes stayed put")
+PY
+# A restart in the cooling mode goes on bit for bit.
+cd "$scratch/stopped" || exit 1
+setEntry system/controlDict endTime 1
+sphCastFoam > log.1 2>&1 || fail "first part"
+grep -q "^Cooling from time" log.1 || fail "the first part never reached the cooling mode"
+setEntry system/controlDict endTime 1.5
+sphCastFoam > log.2 2>&1 || fail "restart"
+sameTimeFolder "$scratch/cup/1.5" 1.5 || fail "the restarted run differs at 1.5 s"
+# Bad input names file, line and key.
+cd "$scratch/bad" || exit 1
+sed -i 's/frozenSolidFraction 0.5;/frozenSolidFraction 1.5;/' constant/physicsModels
+if sphCastFoam > log.bad 2>&1; then fail "frozenSolidFraction 1.5 ran"; fi
+grep -q "physicsModels:[0-9]*:[0-9]*: 'frozenSolidFraction' must lie in (0, 1]" log.bad ||
+    { cat log.bad >&2; fail "no clear error for frozenSolidFraction 1.5"; }
+sed -i 's/frozenSolidFraction 1.5;/frozenSolidFraction 0.5;/' constant/physicsModels
+sed -i 's/^metal .*/metal { density 2400; viscosity 1e-3; conductivity 90; specificHeat 900; }/' \
+    constant/physicalProperties
+if sphCastFoam > log.bad 2>&1; then fail "a material without a freezing range ran"; fi
+grep -q "physicalProperties:[0-9]*:[0-9]*: material 'metal' in .* has no 'liquidus' and 'solidus', which solidification needs" log.bad ||
+    { cat log.bad >&2; fail "no clear error for a material without liquidus"; }
+pass "melt solidifies in a chill mold: T within [300, 970] K, frozen stay put, restart bit for bit, bad input"
