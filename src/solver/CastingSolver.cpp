@@ -298,10 +298,11 @@ void CastingSolver::setUpSolidification() {
   const Material& material = *solidificationSetup_.material;
   const FlowSettings& flow = flowSetup_.settings;
   const double spacing = fluid_->attributes().at("spacing");
-  // the viscosity whose explicit limit 0.125 dx^2 rho / mu is the acoustic step maxCo dx / c
+  // 0.9 of the viscosity whose explicit limit 0.125 dx^2 rho / mu is the acoustic step
+  // maxCo dx / c (SolidificationSetup.h)
   const double liquidDensity = (*material.density)(material.freezingRange->liquidus);
-  settings.viscosityLimit = static_cast<Real>(0.125 * liquidDensity * spacing * flow.soundSpeed /
-                                              time_.settings().maxCo);
+  settings.viscosityLimit = static_cast<Real>(0.9 * 0.125 * liquidDensity * spacing *
+                                              flow.soundSpeed / time_.settings().maxCo);
   solidification_ = std::make_unique<Solidification>(settings, material, *fluid_);
   solidification_->update();
   if (const auto mode = fluid_->attributes().find("coolingMode");
@@ -475,7 +476,7 @@ void CastingSolver::evolveCooling(double deltaT) {
 }
 
 // Enters the cooling mode when the melt is still (max|U| below stillSpeed), leaves it when the
-// melt moves (above twice that), at the start of a step: the decision depends on the state only
+// melt moves fast (above movingSpeed: a collapse), at the start of a step: the decision depends on the state only
 // (and the mode, which the fluid carries as an attribute), so a restart takes the same one.
 void CastingSolver::updateCoolingMode() {
   if (!solidification_ || !solidificationSetup_.cooling) return;
@@ -486,7 +487,7 @@ void CastingSolver::updateCoolingMode() {
   }
   const bool wasCooling = cooling_;
   if (!cooling_ && fastest < cooling.stillSpeed) cooling_ = true;
-  if (cooling_ && fastest > 2 * cooling.stillSpeed) cooling_ = false;
+  if (cooling_ && fastest > cooling.movingSpeed) cooling_ = false;
   if (cooling_ == wasCooling) return;
   fluid_->attributes()["coolingMode"] = cooling_ ? 1 : 0;
   meanStableDeltaT_ = 0;  // the steps change length by design
@@ -497,7 +498,7 @@ void CastingSolver::updateCoolingMode() {
            << "followed by " << cooling.flowStepsPerHeatStep << " acoustic flow steps\n\n";
   } else {
     info() << "Cooling paused at time " << time_.timeName() << ": the melt moves (max|U| "
-           << fastest << " m/s > " << 2 * cooling.stillSpeed
+           << fastest << " m/s > " << cooling.movingSpeed
            << "): every step acoustic again\n\n";
   }
 }
@@ -565,7 +566,8 @@ void CastingSolver::logHeat() {
     std::string limiter;
     const double limit = energy_->stableDeltaT(limiter);
     line << "Heat: " << heatSteps_ << " heat steps in " << stepsTaken_ << " steps ("
-         << (heatSetup_.heatEveryFlowStep ? "every flow step" : "interval auto") << ", the last "
+         << (cooling_ ? "cooling" : heatSetup_.heatEveryFlowStep ? "every flow step" : "interval auto")
+         << ", the last "
          << heatDeltaT_ << " s long; " << limiter << " limit " << limit << " s)\n";
   }
   for (const HeatCloud& heat : energy_->context().clouds) {

@@ -52,7 +52,7 @@ SolidificationSetup readSolidificationSetup(const CaseFolder& caseFolder, const 
   setup.endWhenSolid = dict.getChoiceOrDefault("endWhenSolid", {"yes", "no"}, "no") == "yes";
   if (dict.found("cooling")) {
     const Dictionary& cooling = dict.subDict("cooling");
-    cooling.checkKeys({"flowStepsPerHeatStep", "stillSpeed"});
+    cooling.checkKeys({"flowStepsPerHeatStep", "stillSpeed", "movingSpeed"});
     CoolingAcceleration acceleration;
     acceleration.flowStepsPerHeatStep =
         cooling.getOrDefault<int>("flowStepsPerHeatStep", acceleration.flowStepsPerHeatStep);
@@ -66,6 +66,14 @@ SolidificationSetup readSolidificationSetup(const CaseFolder& caseFolder, const 
         throw DictionaryError(cooling.location("stillSpeed"),
                               "'stillSpeed' must be positive in " + cooling.name());
       }
+    }
+    if (cooling.found("movingSpeed")) {
+      acceleration.movingSpeed = cooling.get<double>("movingSpeed", speed);
+    }
+    if (!(acceleration.movingSpeed > acceleration.stillSpeed)) {
+      throw DictionaryError(cooling.found("movingSpeed") ? cooling.location("movingSpeed")
+                                                         : cooling.location("stillSpeed"),
+                            "'movingSpeed' must exceed 'stillSpeed' in " + cooling.name());
     }
     setup.cooling = acceleration;
   }

@@ -24,19 +24,24 @@ namespace sphcast {
 //       cooling                           // optional: once the melt is still, steps of the
 //       {                                 // heat's stable length, each followed by
 //           flowStepsPerHeatStep 10;      // this many flow steps of the acoustic length
-//           stillSpeed           0.02;    // m/s: still while max|U| of the melt stays below
-//       }                                 // (back to every acoustic step above twice that)
+//           stillSpeed           0.02;    // m/s: cooling starts once max|U| of the melt is
+//                                         // below this
+//           movingSpeed          0.5;     // m/s: back to every acoustic step above this (a
+//       }                                 // collapse); the melt's flow steps, compressed in
+//                                         // time, feed the shrinkage faster than stillSpeed
 //   }
 //
 // It needs the flow (its fluid solidifies) and the heat transfer carrying the fluid's cloud; the
 // fluid's material needs liquidus, solidus, internalEnergy (or specificHeat), density and
-// viscosity (constant/physicalProperties). The solver caps the mush's viscosity at the acoustic
-// step's viscous limit, 0.125 rho_s(T_liq) dx c / maxCo.
+// viscosity (constant/physicalProperties). The solver caps the mush's viscosity at 0.9 times the
+// acoustic step's viscous limit, 0.9 x 0.125 rho_s(T_liq) dx c / maxCo (0.9: melt a few per cent
+// lighter than rho_s(T_liq), in a cavity, still steps at the acoustic limit).
 // Cooling to the end in fewer steps (CastingSolver::evolveCooling): the flow's time runs
 // slower than the heat's by heat step / (flowStepsPerHeatStep acoustic steps).
 struct CoolingAcceleration {
   int flowStepsPerHeatStep = 10;
   double stillSpeed = 0.02;  // m/s
+  double movingSpeed = 0.5;  // m/s
 };
 
 struct SolidificationSetup {
