@@ -303,6 +303,18 @@ void WeaklyCompressibleFlow::computeRatesFor() {
   const Vector* densityGradient = densityGradient_.data();
   const std::uint64_t* fluidOffsets = fluidPairs().offsets().data();
   const std::uint32_t* fluidNeighbours = fluidPairs().neighbours().data();
+  // Frozen particles with no melt within two neighbour hops (solidified metal away from the
+  // melt) have nothing to compute: no acceleration (they are held), and a density that only the
+  // melt moving against them would change. One hop is not enough: the melt feels the pressure of
+  // the frozen particles within h, and theirs depends on their own frozen neighbours (measured:
+  // with one hop a pocket of melt in frozen metal settled 0.7 dx lower, its particles to 0.44 dx).
+  const Real* frozen = fluid_.hasScalarField("frozen") ? fluid_.scalarField("frozen").data()
+                                                       : nullptr;
+  const std::uint8_t* nearMelt = nullptr;
+  if (frozen) {
+    markFrozenNearMelt();
+    nearMelt = frozenNearMelt_.data();
+  }
 
   // The pair loop, given how it takes x_i - x_j: the minimum image only when an axis is
   // periodic, chosen once per pass (with no periodic axis separation() is x_i - x_j).
@@ -329,6 +341,11 @@ void WeaklyCompressibleFlow::computeRatesFor() {
   auto ratesWith = [&](auto separation) {
 #pragma omp parallel for schedule(static)
     for (std::size_t i = 0; i < x.size(); ++i) {
+      if (frozen && frozen[i] != 0 && !nearMelt[i]) {
+        if constexpr (wantsDensityRate) densityRate[i] = 0;
+        if constexpr (wantsAcceleration) acceleration[i] = Vector::Zero();
+        continue;
+      }
       const Vector xi = x[i];
       const Vector vi = v[i];
       const Real muI = mu[i];
@@ -451,6 +468,33 @@ void WeaklyCompressibleFlow::computeRates(RatePart part) {
   if (part == RatePart::densityRate) return;
   for (FluidForceModel* model : forceModels_) model->addAcceleration();
   holdFrozenParticles();
+}
+
+// For each particle, whether a melt (not frozen) particle lies within two neighbour hops:
+// 1 for melt and the frozen particles it reaches that way (computeRatesFor skips the others).
+void WeaklyCompressibleFlow::markFrozenNearMelt() {
+  const auto& frozen = fluid_.scalarField("frozen");
+  const std::uint64_t* offsets = fluidPairs().offsets().data();
+  const std::uint32_t* neighbours = fluidPairs().neighbours().data();
+  const std::size_t count = frozen.size();
+  frozenTouchesMelt_.assign(count, 0);
+  frozenNearMelt_.assign(count, 0);
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < count; ++i) {
+    bool touches = frozen[i] == 0;
+    for (std::uint64_t k = offsets[i]; k < offsets[i + 1] && !touches; ++k) {
+      touches = frozen[neighbours[k]] == 0;
+    }
+    frozenTouchesMelt_[i] = touches ? 1 : 0;
+  }
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < count; ++i) {
+    bool near = frozenTouchesMelt_[i] != 0;
+    for (std::uint64_t k = offsets[i]; k < offsets[i + 1] && !near; ++k) {
+      near = frozenTouchesMelt_[neighbours[k]] != 0;
+    }
+    frozenNearMelt_[i] = near ? 1 : 0;
+  }
 }
 
 // Frozen particles (solidified metal) neither move nor accelerate: the kicks that follow keep

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cstdint>
 #include <limits>
 #include <memory>
 #include <string>
@@ -150,6 +151,7 @@ class WeaklyCompressibleFlow {
   }
   void computeRates(RatePart part = RatePart::both);
   void holdFrozenParticles();
+  void markFrozenNearMelt();
   template <int Dim>
   void computeRatesInDimension(RatePart part);
   template <int Dim, class Interface>
@@ -168,6 +170,7 @@ class WeaklyCompressibleFlow {
   std::vector<Vector> densityGradient_;          // renormalised grad rho (deltaSPH)
   WallClearanceReport lastClearance_;
   std::vector<FluidForceModel*> forceModels_;
+  std::vector<std::uint8_t> frozenTouchesMelt_, frozenNearMelt_;  // markFrozenNearMelt
   FlowTimings timings_;
 };
 
