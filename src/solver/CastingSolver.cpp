@@ -595,6 +595,17 @@ void CastingSolver::logSolidification() {
        << s.particles << " particles " << s.liquid << " liquid, " << s.frozen << " frozen ("
        << s.solid << " fully solid), " << s.particles - s.frozen << " flowing";
   if (s.viscosityCapped > 0) line << " (" << s.viscosityCapped << " with mu capped)";
+  // with endWhenSolid the run ends with the last liquid, not at endTime: an ETA from the rise
+  // of the solid fraction since the last print (linear: the last few per cent go slower)
+  const double clock = clock_.clockTime();
+  if (solidificationSetup_.endWhenSolid && lastSolidFraction_ >= 0 &&
+      s.solidFraction > lastSolidFraction_ && clock > lastSolidClock_) {
+    const double rate = (s.solidFraction - lastSolidFraction_) / (clock - lastSolidClock_);
+    line << "\n    solid fraction rising " << rate << " per s of wall time: all solid in about "
+         << static_cast<long>((1 - s.solidFraction) / rate) << " s at this rate (endWhenSolid)";
+  }
+  lastSolidFraction_ = s.solidFraction;
+  lastSolidClock_ = clock;
   if (cooling_) {
     line << "\n    cooling: heat steps of " << heatDeltaT_ << " s, each with "
          << solidificationSetup_.cooling->flowStepsPerHeatStep << " flow steps (the last "

@@ -110,6 +110,7 @@ class CastingSolver {
   // Cooling to the end (solidificationSetup_.cooling): steps of the heat's length, each with a
   // few flow steps; a fluid cloud attribute (coolingMode) too, so a restart goes on alike.
   bool cooling_ = false;
+  double lastSolidFraction_ = -1, lastSolidClock_ = 0;  // at the last print, for the ETA
   long flowSubSteps_ = 0;
   double lastFlowSubStep_ = 0;
   HealthSettings health_;
