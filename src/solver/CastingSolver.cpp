@@ -427,23 +427,7 @@ void CastingSolver::flushPendingHeat() {
   ++heatSteps_;
 }
 
-// Whether the heat paths run in this step, and over what time (heatDeltaT_). Without a flow,
-// or with `interval everyStep`, every step is a heat step of the step's length. Otherwise the
-// flow's steps (far shorter: acoustic, against the diffusion limit) add up until they reach
-// heatStepFraction of the heat's own stable step, and the heat then takes one step of their
-// sum at the positions of the end (the particles carry their u as they move; what lags is only
-// the exchange between them, by at most that sum). Every written time is a heat step, so that
-// a restart from it starts with nothing pending and reproduces the uninterrupted run.
-//
-// The fraction, measured (a half-full sphere of AC4CH at 900 K sloshing in an iron mold at
-// 300 K, conduction and contact, 0.2 s, 2,621 flow steps; the largest change of T from the
-// start is 16.4 K in the metal, 18.3 K in the mold): against heat at every flow step, the
-// largest difference of a metal particle's T at 0.2 s is 1.20 / 0.61 / 0.13 / 0.015 K (mean
-// 0.15 / 0.074 / 0.017 / 0.0025 K) with the fraction 0.5 / 0.25 / 0.1 / 0.03, in 10 / 20 /
-// 50 / 141 heat steps: the error of the big steps is first order in their length, the steep
-// start of a contact being what they resolve worst. 0.1 costs 50 heat steps instead of 2,621
-// (0.25 s of heat in a 21 s run, against 13.4 s of a 35 s run).
-// Once the melt is still, the heat sets the pace (DESIGN: cooling to the end): a step of the
+// Once the melt is still, the heat sets the pace (doc/physics.md §10.5): a step of the
 // heat's stable length with the particles where they are, then flowStepsPerHeatStep flow steps
 // of the acoustic length, in which the melt answers the rho_s the heat step changed (shrinkage
 // feeding). The flow's time thus runs heat step / (n acoustic steps) times slower than the heat's:
@@ -476,8 +460,9 @@ void CastingSolver::evolveCooling(double deltaT) {
 }
 
 // Enters the cooling mode when the melt is still (max|U| below stillSpeed), leaves it when the
-// melt moves fast (above movingSpeed: a collapse), at the start of a step: the decision depends on the state only
-// (and the mode, which the fluid carries as an attribute), so a restart takes the same one.
+// melt moves fast (above movingSpeed: a collapse), at the start of a step: the decision depends
+// on the state only (and the mode, which the fluid carries as an attribute), so a restart takes
+// the same one.
 void CastingSolver::updateCoolingMode() {
   if (!solidification_ || !solidificationSetup_.cooling) return;
   const CoolingAcceleration& cooling = *solidificationSetup_.cooling;
@@ -503,6 +488,22 @@ void CastingSolver::updateCoolingMode() {
   }
 }
 
+// Whether the heat paths run in this step, and over what time (heatDeltaT_). Without a flow,
+// or with `interval everyStep`, every step is a heat step of the step's length. Otherwise the
+// flow's steps (far shorter: acoustic, against the diffusion limit) add up until they reach
+// heatStepFraction of the heat's own stable step, and the heat then takes one step of their
+// sum at the positions of the end (the particles carry their u as they move; what lags is only
+// the exchange between them, by at most that sum). Every written time is a heat step, so that
+// a restart from it starts with nothing pending and reproduces the uninterrupted run.
+//
+// The fraction, measured (a half-full sphere of AC4CH at 900 K sloshing in an iron mold at
+// 300 K, conduction and contact, 0.2 s, 2,621 flow steps; the largest change of T from the
+// start is 16.4 K in the metal, 18.3 K in the mold): against heat at every flow step, the
+// largest difference of a metal particle's T at 0.2 s is 1.20 / 0.61 / 0.13 / 0.015 K (mean
+// 0.15 / 0.074 / 0.017 / 0.0025 K) with the fraction 0.5 / 0.25 / 0.1 / 0.03, in 10 / 20 /
+// 50 / 141 heat steps: the error of the big steps is first order in their length, the steep
+// start of a contact being what they resolve worst. 0.1 costs 50 heat steps instead of 2,621
+// (0.25 s of heat in a 21 s run, against 13.4 s of a 35 s run).
 bool CastingSolver::heatStepsWithFlow(double deltaT) {
   constexpr double heatStepFraction = 0.1;
   if (!flow_ || heatSetup_.heatEveryFlowStep) {

@@ -72,7 +72,8 @@ struct FlowStepLimits {
 // Fluid fields read: U, rho, mass, viscosity (mu, Pa s), restDensity (rho_s), and frozen when the
 // cloud has it (solidification/Solidification.h: a particle with frozen != 0 has zero velocity
 // and acceleration, so it stays where it is, a wall for the others, while its density follows
-// the continuity equation); written: p,
+// the continuity equation; frozen particles with no melt within two neighbour hops compute
+// nothing); written: p,
 // acceleration, densityRate (kept in the cloud, so a restart continues bit for bit). Cloud
 // attribute spacing (dx) for the step limits. Wall fields read (as particleizeMold writes them):
 // volume, normal (unit, out of the wall into the fluid), wallDistance (depth behind the wall
