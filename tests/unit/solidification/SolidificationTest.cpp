@@ -2,6 +2,8 @@
 // the solid fraction against Table 1 of the paper by hand, a frozen block that stays put while
 // the melt beside it collapses like Martin & Moyce's column against a wall, at the acoustic step,
 // and melt enclosed by frozen metal that shrinks and opens a cavity instead of holding tension.
+#include <omp.h>
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -298,6 +300,70 @@ TEST(Solidification, MeltShrinkingInsideFrozenMetalOpensACavityAtTheTop) {
   EXPECT_GE(limited.lowestPressure, 0.0);
   EXPECT_NEAR(limited.gap, limited.expectedGap, 0.25 * limited.expectedGap);
   EXPECT_GT(limited.closestPair, 0.5);
+}
+
+// Every OpenMP pass the solidification adds (update, holding frozen particles, marking those near
+// the melt, skipping the others in the rates, the wall clearance's skip) gives the same bits on
+// one thread as on two: a column of mushy melt beside a frozen block, cooled 1 K every 10 steps
+// so that particles freeze during the run.
+ParticleCloud freezeColumn(int threads, std::size_t& frozeDuringRun) {
+  const int previous = omp_get_max_threads();
+  omp_set_num_threads(threads);
+  const Material material = ac4ch();
+  const Real dx = 0.005;
+  const Real c = 20;
+  auto fluid = testing::fluidBlock2D(20, 20, dx, Vector::Zero(), 2400, 1e-3);
+  auto& T = fluid.addScalarField("T");
+  for (std::size_t i = 0; i < fluid.size(); ++i) T[i] = fluid.positions()[i].x() < 5 * dx ? 820 : 860;
+  SolidificationSettings settings;
+  settings.viscosityLimit = Real(0.9 * 0.125 * 2426.6) * dx * c / Real(0.25);
+  Solidification solidification(settings, material, fluid);
+  solidification.update();
+  for (std::size_t i = 0; i < fluid.size(); ++i) {
+    fluid.scalarField("rho")[i] = fluid.scalarField("restDensity")[i];
+    fluid.scalarField("mass")[i] = fluid.scalarField("restDensity")[i] * dx * dx;
+  }
+  const std::size_t frozenAtStart = solidification.summary().frozen;
+  auto wall = testing::emptyWall();
+  const int tank = 30;
+  auto outside = [=](int column, int row) {
+    const Real ox =
+        column < 0 ? Real(column + 0.5) : (column >= tank ? Real(column - tank + 0.5) : 0);
+    return Vector(ox, row < 0 ? Real(row + 0.5) : 0, 0);
+  };
+  auto normal = [=](int column, int row) { return Vector(-outside(column, row)); };
+  auto depth = [=](int column, int row) { return outside(column, row).norm() * dx; };
+  testing::addWallCells(wall, -3, tank + 3, -3, 0, dx, Vector::Zero(), normal, depth);
+  testing::addWallCells(wall, -3, 0, 0, 30, dx, Vector::Zero(), normal, depth);
+  testing::addWallCells(wall, tank, tank + 3, 0, 30, dx, Vector::Zero(), normal, depth);
+  FlowSettings flowSettings;
+  flowSettings.dimension = 2;
+  flowSettings.supportRadius = 3 * dx;
+  flowSettings.soundSpeed = c;
+  flowSettings.gravity = Vector(0, -9.81, 0);
+  flowSettings.cavitationPressure = 0;
+  WeaklyCompressibleFlow flow(flowSettings, fluid, {&wall});
+  std::string limiter;
+  for (int step = 0; step < 300; ++step) {
+    flow.step(flow.stepLimits(0.25).smallest(limiter));
+    if (step % 10 == 9) {
+      for (Real& t : fluid.scalarField("T")) t -= 1;
+      solidification.update();
+    }
+  }
+  frozeDuringRun = solidification.summary().frozen - frozenAtStart;
+  omp_set_num_threads(previous);
+  return fluid;
+}
+
+TEST(Solidification, SameBitsOnOneAndTwoThreads) {
+  std::size_t frozeOne = 0, frozeTwo = 0;
+  const ParticleCloud one = freezeColumn(1, frozeOne);
+  const ParticleCloud two = freezeColumn(2, frozeTwo);
+  std::printf("%zu particles froze during the run\n", frozeOne);
+  EXPECT_GT(frozeOne, 50u);  // the passes of freezing particles ran
+  EXPECT_EQ(frozeOne, frozeTwo);
+  EXPECT_TRUE(one.identicalTo(two));
 }
 
 }  // namespace
