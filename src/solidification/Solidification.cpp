@@ -100,7 +100,7 @@ std::string Solidification::description() const {
        << freezingRangeEnergy_ << " J/kg); frozen from f_s = " << settings_.frozenSolidFraction;
   if (settings_.viscosityLimit > 0) {
     text << "; viscosity capped at " << settings_.viscosityLimit
-         << " Pa s below that (the acoustic step's viscous limit)";
+         << " Pa s below that (0.9 of the acoustic step's viscous limit)";
   }
   return text.str();
 }
