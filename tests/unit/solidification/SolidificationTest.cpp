@@ -128,18 +128,7 @@ ColumnResult collapseColumn(bool frozenBackWall) {
     fluid.scalarField("mass")[i] = restDensity[i] * dx * dx;
   }
 
-  auto wall = testing::emptyWall();
-  auto outside = [=](int column, int row) {
-    const Real ox = column < 0 ? Real(column + 0.5)
-                               : (column >= tankColumns ? Real(column - tankColumns + 0.5) : 0);
-    return Vector(ox, row < 0 ? Real(row + 0.5) : 0, 0);
-  };
-  auto normal = [=](int column, int row) { return Vector(-outside(column, row)); };
-  auto depth = [=](int column, int row) { return outside(column, row).norm() * dx; };
-  testing::addWallCells(wall, -3, tankColumns + 3, -3, 0, dx, Vector::Zero(), normal, depth);
-  testing::addWallCells(wall, -3, 0, 0, 3 * columns, dx, Vector::Zero(), normal, depth);
-  testing::addWallCells(wall, tankColumns, tankColumns + 3, 0, 3 * columns, dx, Vector::Zero(),
-                        normal, depth);
+  auto wall = testing::tankWalls2D(tankColumns, 3 * columns, dx);
 
   FlowSettings flowSettings;
   flowSettings.dimension = 2;
@@ -324,18 +313,7 @@ ParticleCloud freezeColumn(int threads, std::size_t& frozeDuringRun) {
     fluid.scalarField("mass")[i] = fluid.scalarField("restDensity")[i] * dx * dx;
   }
   const std::size_t frozenAtStart = solidification.summary().frozen;
-  auto wall = testing::emptyWall();
-  const int tank = 30;
-  auto outside = [=](int column, int row) {
-    const Real ox =
-        column < 0 ? Real(column + 0.5) : (column >= tank ? Real(column - tank + 0.5) : 0);
-    return Vector(ox, row < 0 ? Real(row + 0.5) : 0, 0);
-  };
-  auto normal = [=](int column, int row) { return Vector(-outside(column, row)); };
-  auto depth = [=](int column, int row) { return outside(column, row).norm() * dx; };
-  testing::addWallCells(wall, -3, tank + 3, -3, 0, dx, Vector::Zero(), normal, depth);
-  testing::addWallCells(wall, -3, 0, 0, 30, dx, Vector::Zero(), normal, depth);
-  testing::addWallCells(wall, tank, tank + 3, 0, 30, dx, Vector::Zero(), normal, depth);
+  auto wall = testing::tankWalls2D(30, 30, dx);
   FlowSettings flowSettings;
   flowSettings.dimension = 2;
   flowSettings.supportRadius = 3 * dx;

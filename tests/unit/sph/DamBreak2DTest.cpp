@@ -73,21 +73,7 @@ DamBreakResult runDamBreak(int columns, double endT, const Numerics& numerics = 
     fluid.scalarField("rho")[i] = rho0 * (1 + g * depth / (c * c));  // hydrostatic start
   }
 
-  auto wall = testing::emptyWall();
-  const int layers = 3;
-  auto outside = [=](int column, int row) {
-    const Real ox = column < 0 ? Real(column + 0.5)
-                               : (column >= tankColumns ? Real(column - tankColumns + 0.5) : 0);
-    const Real oy = row < 0 ? Real(row + 0.5) : 0;
-    return Vector(ox, oy, 0);
-  };
-  auto normal = [=](int column, int row) { return Vector(-outside(column, row)); };
-  auto depth = [=](int column, int row) { return outside(column, row).norm() * dx; };
-  testing::addWallCells(wall, -layers, tankColumns + layers, -layers, 0, dx, Vector::Zero(), normal,
-                        depth);
-  testing::addWallCells(wall, -layers, 0, 0, wallRows, dx, Vector::Zero(), normal, depth);
-  testing::addWallCells(wall, tankColumns, tankColumns + layers, 0, wallRows, dx, Vector::Zero(),
-                        normal, depth);
+  auto wall = testing::tankWalls2D(tankColumns, wallRows, dx);
 
   FlowSettings settings;
   settings.dimension = 2;

@@ -59,4 +59,24 @@ inline ParticleCloud emptyWall() {
   return wall;
 }
 
+// A 2D open tank of three wall layers round the lattice of fluidBlock2D at the origin: a floor
+// under columns [0, columns) and side walls `rows` high at both ends, each wall particle's normal
+// towards the fluid and its depth behind the wall surface.
+inline ParticleCloud tankWalls2D(int columns, int rows, Real dx) {
+  constexpr int layers = 3;
+  auto outside = [=](int column, int row) {
+    const Real ox =
+        column < 0 ? Real(column + 0.5) : (column >= columns ? Real(column - columns + 0.5) : 0);
+    const Real oy = row < 0 ? Real(row + 0.5) : 0;
+    return Vector(ox, oy, 0);
+  };
+  auto normal = [=](int column, int row) { return Vector(-outside(column, row)); };
+  auto depth = [=](int column, int row) { return outside(column, row).norm() * dx; };
+  ParticleCloud wall = emptyWall();
+  addWallCells(wall, -layers, columns + layers, -layers, 0, dx, Vector::Zero(), normal, depth);
+  addWallCells(wall, -layers, 0, 0, rows, dx, Vector::Zero(), normal, depth);
+  addWallCells(wall, columns, columns + layers, 0, rows, dx, Vector::Zero(), normal, depth);
+  return wall;
+}
+
 }  // namespace sphcast::testing

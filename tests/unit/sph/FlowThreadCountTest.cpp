@@ -30,19 +30,7 @@ ParticleCloud runDamBreak(int threads, const Scheme& scheme, int steps, std::siz
   const Real dx = 0.005;
   auto fluid = testing::fluidBlock2D(15, 30, dx, Vector::Zero(), 1000, 1e-3);
   for (Vector& u : fluid.vectorField("U")) u = Vector(1.0, 0, 0);
-  auto wall = testing::emptyWall();
-  const int tank = 24;
-  auto outside = [=](int column, int row) {
-    const Real ox =
-        column < 0 ? Real(column + 0.5) : (column >= tank ? Real(column - tank + 0.5) : 0);
-    const Real oy = row < 0 ? Real(row + 0.5) : 0;
-    return Vector(ox, oy, 0);
-  };
-  auto normal = [=](int column, int row) { return Vector(-outside(column, row)); };
-  auto depth = [=](int column, int row) { return outside(column, row).norm() * dx; };
-  testing::addWallCells(wall, -3, tank + 3, -3, 0, dx, Vector::Zero(), normal, depth);
-  testing::addWallCells(wall, -3, 0, 0, 40, dx, Vector::Zero(), normal, depth);
-  testing::addWallCells(wall, tank, tank + 3, 0, 40, dx, Vector::Zero(), normal, depth);
+  auto wall = testing::tankWalls2D(24, 40, dx);
   FlowSettings settings;
   settings.dimension = 2;
   settings.supportRadius = 3 * dx;
