@@ -8,31 +8,9 @@
 . "$SPHCAST_TEST_TOOLS"
 
 makeCup() {  # DIR
-    makeMoldCase "$1" 'SetFactory("OpenCASCADE");
-Cylinder(1) = {0, 0, 0, 0, 0, 0.045, 0.02};
-top() = Surface In BoundingBox{-0.03, -0.03, 0.045 - 1e-4, 0.03, 0.03, 0.045 + 1e-4};
-wall() = Surface{:};
-wall() -= top();
-Physical Surface("moldWall") = wall();' \
-    'melt { type cylinder; point1 (0 0 0.006); point2 (0 0 0.03); radius 0.02; }' \
-    '(0 0 -0.5)' 20 100
+    makeChillCup "$1" 100 "model frozenSolid; frozenSolidFraction 0.5; endWhenSolid yes;
+        cooling { flowStepsPerHeatStep 10; stillSpeed 0.02; }"
     cd "$1" || fail "cannot enter $1"
-    sed -i 's/fields { U (0 0 -0.5); }/fields { U (0 0 -0.5); T 970; }/' system/setCastFieldsDict
-    cat > constant/physicalProperties <<DICT
-FoamFile { version 2.0; format ascii; class dictionary; object physicalProperties; }
-metal { #includeEtc "materials/AC4CH" }
-mold  { density 7874; conductivity 86.05; specificHeat 640; }
-DICT
-    cat >> constant/physicsModels <<DICT
-heatTransfer { clouds (metal mold); fixedTemperature { mold 300; } conduction on; }
-solidification
-{
-    model               frozenSolid;
-    frozenSolidFraction 0.5;
-    endWhenSolid        yes;
-    cooling             { flowStepsPerHeatStep 10; stillSpeed 0.02; }
-}
-DICT
     setEntry system/controlDict writeInterval 0.5
     setEntry system/controlDict logInterval 20
     particleizeMold > log.particleizeMold 2>&1 || fail "particleizeMold"

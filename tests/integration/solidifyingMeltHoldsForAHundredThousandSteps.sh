@@ -6,25 +6,8 @@
 # nothing passes the mold, and T stays within [300, 970] K.
 . "$SPHCAST_TEST_TOOLS"
 
-makeMoldCase "$scratch/cup" 'SetFactory("OpenCASCADE");
-Cylinder(1) = {0, 0, 0, 0, 0, 0.045, 0.02};
-top() = Surface In BoundingBox{-0.03, -0.03, 0.045 - 1e-4, 0.03, 0.03, 0.045 + 1e-4};
-wall() = Surface{:};
-wall() -= top();
-Physical Surface("moldWall") = wall();' \
-    'melt { type cylinder; point1 (0 0 0.006); point2 (0 0 0.03); radius 0.02; }' \
-    '(0 0 -0.5)' 20 5
+makeChillCup "$scratch/cup" 5 "model frozenSolid;"
 cd "$scratch/cup" || exit 1
-sed -i 's/fields { U (0 0 -0.5); }/fields { U (0 0 -0.5); T 970; }/' system/setCastFieldsDict
-cat > constant/physicalProperties <<DICT
-FoamFile { version 2.0; format ascii; class dictionary; object physicalProperties; }
-metal { #includeEtc "materials/AC4CH" }
-mold  { density 7874; conductivity 86.05; specificHeat 640; }
-DICT
-cat >> constant/physicsModels <<DICT
-heatTransfer { clouds (metal mold); fixedTemperature { mold 300; } conduction on; }
-solidification { model frozenSolid; }
-DICT
 setEntry system/controlDict writeInterval 1
 setEntry system/controlDict logInterval 5000
 particleizeMold > log.particleizeMold 2>&1 || fail "particleizeMold"

@@ -133,3 +133,27 @@ Physical Surface("moldWall") = Surface{:};' \
     'half { type intersection; regions { s { type sphere; centre (0 0 0); radius 0.04; }
             b { type box; min (-0.05 -0.05 -0.05); max (0.05 0.05 0); } } }' '(0.6 0 0)' 12 "$2"
 }
+# makeChillCup DIR ENDTIME SOLIDIFICATION: makeMoldCase's open cylinder of radius 20 mm and
+# height 45 mm, held at 300 K (a chill conducting like the melt), with AC4CH at 970 K from 6 to
+# 30 mm up dropped at 0.5 m/s (c = 20 m/s); SOLIDIFICATION is the body of physicsModels'
+# solidification entry. The working directory stays where it was.
+makeChillCup() {
+    makeMoldCase "$1" 'SetFactory("OpenCASCADE");
+Cylinder(1) = {0, 0, 0, 0, 0, 0.045, 0.02};
+top() = Surface In BoundingBox{-0.03, -0.03, 0.045 - 1e-4, 0.03, 0.03, 0.045 + 1e-4};
+wall() = Surface{:};
+wall() -= top();
+Physical Surface("moldWall") = wall();' \
+        'melt { type cylinder; point1 (0 0 0.006); point2 (0 0 0.03); radius 0.02; }' \
+        '(0 0 -0.5)' 20 "$2"
+    sed -i 's/fields { U (0 0 -0.5); }/fields { U (0 0 -0.5); T 970; }/' "$1/system/setCastFieldsDict"
+    cat > "$1/constant/physicalProperties" <<DICT
+FoamFile { version 2.0; format ascii; class dictionary; object physicalProperties; }
+metal { #includeEtc "materials/AC4CH" }
+mold  { density 7874; conductivity 86.05; specificHeat 640; }
+DICT
+    cat >> "$1/constant/physicsModels" <<DICT
+heatTransfer { clouds (metal mold); fixedTemperature { mold 300; } conduction on; }
+solidification { $3 }
+DICT
+}
