@@ -17,19 +17,36 @@ Solidification::Solidification(SolidificationSettings settings, const Material& 
   material_.requireDensity(neededBy);
   material_.requireViscosity(neededBy);
   liquidusEnergy_ = energy.energy(static_cast<Real>(range.liquidus));
-  freezingRangeEnergy_ = liquidusEnergy_ - energy.energy(static_cast<Real>(range.solidus));
+  solidusEnergy_ = energy.energy(static_cast<Real>(range.solidus));
+  freezingRangeEnergy_ = liquidusEnergy_ - solidusEnergy_;
+  const double criticalTemperature =
+      range.solidus + settings_.criticalTemperatureFraction * (range.liquidus - range.solidus);
+  criticalEnergy_ = energy.energy(static_cast<Real>(criticalTemperature));
+  criticalSpecificHeat_ = energy.specificHeat(static_cast<Real>(criticalTemperature));
   if (!metal_.hasScalarField("T")) {
     throw Error("solidification needs the temperature T of cloud '" + metal_.name() +
                 "': heatTransfer must carry it (its clouds)");
   }
   for (const std::string& name : fields()) {
-    if (!metal_.hasScalarField(name)) metal_.addScalarField(name);
+    if (metal_.hasScalarField(name)) continue;
+    auto& field = metal_.addScalarField(name);
+    const auto& history = historyFields();
+    if (std::find(history.begin(), history.end(), name) != history.end()) {
+      std::fill(field.begin(), field.end(), Real(-1));
+    }
   }
 }
 
 const std::vector<std::string>& Solidification::fields() {
-  static const std::vector<std::string> names{"solidFraction", "frozen", "restDensity",
-                                              "viscosity"};
+  static const std::vector<std::string> names{
+      "solidFraction", "frozen",       "restDensity", "viscosity",
+      "liquidusTime",  "criticalTime", "coolingRate", "solidusTime"};
+  return names;
+}
+
+const std::vector<std::string>& Solidification::historyFields() {
+  static const std::vector<std::string> names{"liquidusTime", "criticalTime", "coolingRate",
+                                              "solidusTime"};
   return names;
 }
 
@@ -38,8 +55,22 @@ Real Solidification::solidFraction(Real temperature) const {
   return std::clamp(released / freezingRangeEnergy_, Real(0), Real(1));
 }
 
-void Solidification::update() {
+void Solidification::update(double time, double heatDeltaT) {
   const auto& temperature = metal_.scalarField("T");
+  // du/dt of the last heat step (none without a heat model: a crossing is then placed at `time`)
+  const ParticleCloud::ScalarField* energyRate =
+      metal_.hasScalarField("energyRate") ? &metal_.scalarField("energyRate") : nullptr;
+  const InternalEnergyTable& internalEnergy = *material_.internalEnergy;
+  auto& liquidusTime = metal_.scalarField("liquidusTime");
+  auto& criticalTime = metal_.scalarField("criticalTime");
+  auto& coolingRate = metal_.scalarField("coolingRate");
+  auto& solidusTime = metal_.scalarField("solidusTime");
+  // when u(t) = u_end + rate (t - time) reached `level`, within the step
+  const auto crossing = [&](std::size_t i, Real energy, Real level) {
+    const double rate = energyRate ? static_cast<double>((*energyRate)[i]) : 0.0;
+    const double back = rate < 0 ? static_cast<double>(level - energy) / rate : 0.0;
+    return static_cast<Real>(time + std::clamp(back, -heatDeltaT, 0.0));
+  };
   auto& fraction = metal_.scalarField("solidFraction");
   auto& frozen = metal_.scalarField("frozen");
   auto& restDensity = metal_.scalarField("restDensity");
@@ -53,12 +84,27 @@ void Solidification::update() {
   for (std::ptrdiff_t n = 0; n < count; ++n) {
     const auto i = static_cast<std::size_t>(n);
     const double T = static_cast<double>(temperature[i]);
-    fraction[i] = solidFraction(temperature[i]);
+    const Real energy = internalEnergy.energy(temperature[i]);
+    fraction[i] = std::clamp((liquidusEnergy_ - energy) / freezingRangeEnergy_, Real(0), Real(1));
     const bool isFrozen = fraction[i] >= settings_.frozenSolidFraction;
     // a frozen particle keeps the rho_s it froze with (its contraction moves nothing)
     if (!isFrozen || frozen[i] == 0) restDensity[i] = static_cast<Real>(density(T));
     frozen[i] = isFrozen ? Real(1) : Real(0);
     viscosity[i] = std::min(static_cast<Real>(mu(T)), limit);
+    // the history
+    if (energy > liquidusEnergy_) {
+      liquidusTime[i] = criticalTime[i] = coolingRate[i] = solidusTime[i] = Real(-1);
+      continue;
+    }
+    if (liquidusTime[i] < 0) liquidusTime[i] = crossing(i, energy, liquidusEnergy_);
+    if (energy <= criticalEnergy_ && criticalTime[i] < 0) {
+      criticalTime[i] = crossing(i, energy, criticalEnergy_);
+      const Real rate = energyRate ? (*energyRate)[i] : Real(0);
+      coolingRate[i] = std::max(Real(0), -rate / criticalSpecificHeat_);
+    }
+    if (energy <= solidusEnergy_ && solidusTime[i] < 0) {
+      solidusTime[i] = crossing(i, energy, solidusEnergy_);
+    }
   }
 }
 

@@ -37,12 +37,24 @@ namespace sphcast {
 // A frozen particle whose f_s falls back below frozenSolidFraction (remelted by hotter melt)
 // flows again, with rho_s(T).
 //
-// Fields of the metal cloud: reads T; writes solidFraction, frozen (1 or 0), restDensity and
-// viscosity (all written with the cloud, so a restart continues bit for bit: a frozen particle's
-// rho_s is its history, not a function of T).
+// Fields of the metal cloud: reads T and energyRate (where a heat model gives it); writes solidFraction, frozen (1 or 0),
+// restDensity and viscosity (all written with the cloud, so a restart continues bit for bit: a
+// frozen particle's rho_s is its history, not a function of T).
+//
+// It also records, at every update, each particle's solidification history for castPostProcess's
+// maps (which need every heat step: a write every second would place a crossing only within a
+// second); -1 until it happens:
+//   liquidusTime   when u fell to u(T_liq)            (start of freezing)
+//   criticalTime   when u fell to u(T_c), T_c = T_sol + criticalTemperatureFraction (T_liq -
+//                  T_sol), the Niyama criterion's temperature (Carlson & Beckermann 2009)
+//   coolingRate    -dT/dt there, K/s: -(du/dt) / (du/dT)(T_c), du/dT with the latent heat
+//   solidusTime    when u fell to u(T_sol)             (end of freezing: the solidification time)
+// A crossing inside a heat step is placed by the step's rate du/dt (linear in time), within the
+// step. A particle that melts again (u above u(T_liq)) starts its history afresh.
 struct SolidificationSettings {
   Real frozenSolidFraction = Real(0.5);
   Real viscosityLimit = 0;  // Pa s; 0: no cap
+  Real criticalTemperatureFraction = Real(0.1);
 };
 
 // What the metal looks like after an update, for the log.
@@ -60,11 +72,15 @@ class Solidification {
   // material: the metal's, with liquidus, solidus, internalEnergy, density and viscosity.
   Solidification(SolidificationSettings settings, const Material& material, ParticleCloud& metal);
 
-  // The fields of the metal cloud it writes (restart state: frozen particles' rho_s).
+  // The fields of the metal cloud it writes (restart state: frozen particles' rho_s, the
+  // histories).
   static const std::vector<std::string>& fields();
+  // Of those, the solidification history (-1 until it happens).
+  static const std::vector<std::string>& historyFields();
 
-  // f_s, frozen, rho_s and mu from the particles' T; call after every change of T.
-  void update();
+  // f_s, frozen, rho_s and mu from the particles' T, and the histories; call after every change
+  // of T, with the time reached and the length of the heat step that reached it (0 at the start).
+  void update(double time, double heatDeltaT);
 
   // The solid fraction at temperature T.
   Real solidFraction(Real temperature) const;
@@ -80,6 +96,8 @@ class Solidification {
   Material material_;  // a copy: the tables it reads
   ParticleCloud& metal_;
   Real liquidusEnergy_, freezingRangeEnergy_;  // u(T_liq), u(T_liq) - u(T_sol)
+  Real criticalEnergy_, solidusEnergy_;         // u(T_c), u(T_sol)
+  Real criticalSpecificHeat_;                   // du/dT at T_c
 };
 
 }  // namespace sphcast

@@ -304,7 +304,7 @@ void CastingSolver::setUpSolidification() {
   settings.viscosityLimit = static_cast<Real>(0.9 * 0.125 * liquidDensity * spacing *
                                               flow.soundSpeed / time_.settings().maxCo);
   solidification_ = std::make_unique<Solidification>(settings, material, *fluid_);
-  solidification_->update();
+  solidification_->update(time_.value(), 0.0);
   if (const auto mode = fluid_->attributes().find("coolingMode");
       mode != fluid_->attributes().end()) {
     cooling_ = solidificationSetup_.cooling && mode->second != 0;
@@ -406,7 +406,7 @@ void CastingSolver::evolve(double deltaT) {
     addWallTime(heatSeconds_, [&] {
       energy_->computeRates();
       energy_->halfKick(heatDeltaT_);
-      if (solidification_) solidification_->update();
+      if (solidification_) solidification_->update(time_.value(), heatDeltaT_);
     });
     ++heatSteps_;
   }
@@ -422,7 +422,7 @@ void CastingSolver::flushPendingHeat() {
     if (exposedArea_) exposedArea_->compute();
     energy_->computeRates();
     energy_->halfKick(heatDeltaT_);
-    if (solidification_) solidification_->update();
+    if (solidification_) solidification_->update(time_.value(), heatDeltaT_);
   });
   ++heatSteps_;
 }
@@ -439,7 +439,7 @@ void CastingSolver::evolveCooling(double deltaT) {
     if (exposedArea_) exposedArea_->compute();
     energy_->computeRates();
     energy_->halfKick(deltaT);
-    solidification_->update();
+    solidification_->update(time_.value(), deltaT);
   });
   ++heatSteps_;
   for (int k = 0; k < solidificationSetup_.cooling->flowStepsPerHeatStep; ++k) {

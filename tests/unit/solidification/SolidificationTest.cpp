@@ -44,7 +44,7 @@ TEST(Solidification, SolidFractionIsTheShareOfTheFreezingRangesHeatGivenUp) {
   settings.frozenSolidFraction = Real(0.5);
   settings.viscosityLimit = 100;
   Solidification solidification(settings, material, metal);
-  solidification.update();
+  solidification.update(0.0, 0.0);
 
   const double range = 1.33e6 - 8.44e5;
   // 839.22 K is halfway between 830.44 and 848: u = (8.44e5 + 1.11e6) / 2
@@ -75,14 +75,54 @@ TEST(Solidification, SolidFractionIsTheShareOfTheFreezingRangesHeatGivenUp) {
   metal.scalarField("T")[3] = 820;  // frozen at 848 K above: it was not, so rho_s follows T
   metal.scalarField("T")[4] = 810;  // frozen at 839.22 K
   const Real frozenWith = restDensity[4];
-  solidification.update();
+  solidification.update(0.0, 0.0);
   EXPECT_EQ(restDensity[4], frozenWith);
   EXPECT_EQ(frozen[3], 1);
   EXPECT_NEAR(restDensity[3], (*material.density)(820.0), 1e-9);
   metal.scalarField("T")[4] = 900;
-  solidification.update();
+  solidification.update(0.0, 0.0);
   EXPECT_EQ(frozen[4], 0);
   EXPECT_NEAR(restDensity[4], (*material.density)(900.0), 1e-9);
+}
+
+// The history castPostProcess maps: a particle giving up heat at a constant du/dt = -q, stepped
+// in heat steps of 0.37 s (so no crossing falls on a step), crosses u(T_liq), u(T_c) and u(T_sol)
+// at (u_0 - u(level)) / q exactly (u is linear in time; the crossing is placed by the step's
+// rate), and -dT/dt at T_c is q over the table's slope there (Table 1: between 830.44 and 848 K,
+// (1.11e6 - 8.44e5) / 17.56 J/kg/K, worked by hand). Heated above the liquidus again, it starts
+// afresh (-1).
+TEST(Solidification, RecordsWhenEachParticleCrossesLiquidusCriticalAndSolidus) {
+  const Material material = ac4ch();
+  const InternalEnergyTable& u = *material.internalEnergy;
+  ParticleCloud metal("metal");
+  metal.resize(1);
+  metal.addScalarField("mass")[0] = 1;
+  const Real q = 2.0e4;  // W/kg
+  metal.addScalarField("energyRate")[0] = -q;
+  const double u0 = u.energy(950);
+  metal.addScalarField("T")[0] = 950;
+  Solidification solidification(SolidificationSettings{}, material, metal);
+  solidification.update(0.0, 0.0);
+  EXPECT_EQ(metal.scalarField("liquidusTime")[0], -1);
+  const double step = 0.37;
+  for (int k = 1; k * step < 40; ++k) {
+    metal.scalarField("T")[0] = u.temperature(static_cast<Real>(u0 - q * k * step));
+    solidification.update(k * step, step);
+  }
+  const double criticalT = 830.44 + 0.1 * (888.64 - 830.44);  // 836.26 K
+  EXPECT_NEAR(metal.scalarField("liquidusTime")[0], (u0 - u.energy(888.64)) / q, 1e-9);
+  EXPECT_NEAR(metal.scalarField("criticalTime")[0], (u0 - u.energy(criticalT)) / q, 1e-9);
+  EXPECT_NEAR(metal.scalarField("solidusTime")[0], (u0 - u.energy(830.44)) / q, 1e-9);
+  EXPECT_NEAR(metal.scalarField("coolingRate")[0], q / ((1.11e6 - 8.44e5) / (848 - 830.44)),
+              1e-6);
+  // solidus 24.3 s after the liquidus: 4.86e5 J/kg of the freezing range at 2e4 W/kg
+  EXPECT_NEAR(metal.scalarField("solidusTime")[0] - metal.scalarField("liquidusTime")[0],
+              (1.33e6 - 8.44e5) / q, 0.05 * (1.33e6 - 8.44e5) / q);
+  metal.scalarField("T")[0] = 900;
+  solidification.update(41.0, step);
+  for (const std::string& name : Solidification::historyFields()) {
+    EXPECT_EQ(metal.scalarField(name)[0], -1) << name;
+  }
 }
 
 // Martin & Moyce's column (width a, height 2a; Z = x / a against T = t sqrt(2 g / a)), with the
@@ -120,7 +160,7 @@ ColumnResult collapseColumn(bool frozenBackWall) {
   const Real maxCo = Real(0.25);
   settings.viscosityLimit = Real(0.125) * Real((*material.density)(888.64)) * dx * c / maxCo;
   Solidification solidification(settings, material, fluid);
-  solidification.update();
+  solidification.update(0.0, 0.0);
   const auto& restDensity = fluid.scalarField("restDensity");
   for (std::size_t i = 0; i < fluid.size(); ++i) {  // hydrostatic start
     fluid.scalarField("rho")[i] =
@@ -307,7 +347,7 @@ ParticleCloud freezeColumn(int threads, std::size_t& frozeDuringRun) {
   SolidificationSettings settings;
   settings.viscosityLimit = Real(0.9 * 0.125 * 2426.6) * dx * c / Real(0.25);
   Solidification solidification(settings, material, fluid);
-  solidification.update();
+  solidification.update(0.0, 0.0);
   for (std::size_t i = 0; i < fluid.size(); ++i) {
     fluid.scalarField("rho")[i] = fluid.scalarField("restDensity")[i];
     fluid.scalarField("mass")[i] = fluid.scalarField("restDensity")[i] * dx * dx;
@@ -326,7 +366,7 @@ ParticleCloud freezeColumn(int threads, std::size_t& frozeDuringRun) {
     flow.step(flow.stepLimits(0.25).smallest(limiter));
     if (step % 10 == 9) {
       for (Real& t : fluid.scalarField("T")) t -= 1;
-      solidification.update();
+      solidification.update(0.0, 0.0);
     }
   }
   frozeDuringRun = solidification.summary().frozen - frozenAtStart;
