@@ -29,7 +29,8 @@ const std::vector<std::string>& Material::validKeys() {
   static const std::vector<std::string> keys{"temperatures",   "density",        "viscosity",
                                              "conductivity",   "internalEnergy", "specificHeat",
                                              "surfaceTension", "emissivity",
-                                             "liquidus",       "solidus"};
+                                             "liquidus",       "solidus",
+                                             "dendriteArmSpacing"};
   return keys;
 }
 
@@ -97,6 +98,16 @@ Material Material::read(const Dictionary& dict, const std::string& name, const s
       throw DictionaryError(dict.location("solidus"), message.str());
     }
     material.freezingRange = FreezingRange{solidus, liquidus, dict.location("liquidus")};
+  }
+  if (dict.found("dendriteArmSpacing")) {
+    const auto spacing = dict.get<std::vector<double>>("dendriteArmSpacing");
+    if (spacing.size() != 2 || !(spacing[0] > 0) || !(spacing[1] > 0 && spacing[1] <= 1)) {
+      throw DictionaryError(dict.location("dendriteArmSpacing"),
+                            "'dendriteArmSpacing' of material '" + name + "' in " + file +
+                                " must be (A n): lambda_2 = A t_f^n with A > 0 (m s^-n) and n "
+                                "in (0, 1], e.g. (1.0e-5 0.333)");
+    }
+    material.dendriteArmSpacing = DendriteArmSpacing{spacing[0], spacing[1]};
   }
   return material;
 }

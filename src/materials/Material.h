@@ -27,7 +27,9 @@ namespace sphcast {
 // [1 1 -3 -1 0 0 0], internalEnergy [0 2 -2 0 0 0 0] or specificHeat [0 2 -2 -1 0 0 0] (not
 // both), surfaceTension [1 0 -2 0 0 0 0] (may be 0), emissivity (a number in [0, 1]),
 // liquidus and solidus [0 0 0 1 0 0 0] (both or neither, solidus below liquidus: the freezing
-// range that solidification reads).
+// range that solidification reads), dendriteArmSpacing (A n) (lambda_2 = A t_f^n, t_f the local
+// freezing time in s, lambda_2 in m: A in m s^-n, n in (0, 1]; castPostProcess's SDAS and
+// dimensionless Niyama maps read it).
 struct FreezingRange {
   double solidus;   // K: fully solid below
   double liquidus;  // K: fully liquid above
@@ -46,6 +48,12 @@ struct Material {
   std::optional<InternalEnergyTable> internalEnergy;  // u(T), J/kg (or from cp(T))
   std::optional<double> emissivity;                   // beta of eq. (16), in [0, 1]
   std::optional<FreezingRange> freezingRange;         // solidus, liquidus
+  // lambda_2 = coefficient t_f^exponent (m, t_f in s)
+  struct DendriteArmSpacing {
+    double coefficient;
+    double exponent;
+  };
+  std::optional<DendriteArmSpacing> dendriteArmSpacing;
 
   // The keys a material may have.
   static const std::vector<std::string>& validKeys();

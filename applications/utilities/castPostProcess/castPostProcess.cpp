@@ -1,27 +1,62 @@
-// castPostProcess: analyses of the written times. For now the cloud summary (particle count,
-// centroid, mean velocity, top speed, bounding box per cloud and time) as CSV; the casting maps
-// (solidification time, Niyama, cavities) join as their physics lands.
+// castPostProcess: the analyses of system/castPostProcessDict (castAnalysis/CastAnalysis.h,
+// doc/castPostProcess.md) over the written times, each into postProcessing/<name>/, and the
+// one-page postProcessing/castReport.md. Without the dictionary: the cloud summary of every cloud.
 #include <filesystem>
-#include <fstream>
-#include <map>
-#include <sstream>
+#include <memory>
+#include <utility>
 
-#include "core/AtomicFile.h"
+#include "castAnalysis/CastAnalysis.h"
+#include "castAnalysis/CastReport.h"
 #include "core/CaseFolder.h"
 #include "core/CommandLine.h"
 #include "core/Error.h"
 #include "core/Log.h"
 #include "io/TimeFolders.h"
-#include "post/CloudSummary.h"
+#include "solver/HeatSetup.h"
 
 namespace {
+
+// The clouds stored in a time folder, by their .vtp files.
+std::vector<std::string> cloudNames(const sphcast::CaseFolder& caseFolder,
+                                    const std::string& timeName) {
+  std::vector<std::string> names;
+  for (const auto& entry : std::filesystem::directory_iterator(caseFolder.root() / timeName)) {
+    if (entry.path().extension() == ".vtp") names.push_back(entry.path().stem().string());
+  }
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+// h and the dimension where the case gives them, and the materials of its heat clouds.
+void readCaseSetup(const sphcast::CaseFolder& caseFolder, sphcast::AnalysisContext& context) {
+  const sphcast::HeatSetup heat = sphcast::readHeatSetup(caseFolder);
+  if (heat.enabled) {
+    context.supportRadius = heat.supportRadius;
+    context.dimension = heat.dimension;
+    for (const std::string& cloud : heat.clouds) {
+      context.materials.emplace(cloud, heat.materialOf(cloud));
+    }
+    return;
+  }
+  const auto schemes = caseFolder.systemFile("sphSchemes");
+  if (std::filesystem::exists(schemes)) {
+    context.supportRadius =
+        sphcast::Dictionary::read(schemes).getOrDefault<sphcast::Real>("supportRadius", 0);
+  }
+  const auto models = caseFolder.constantFile("physicsModels");
+  if (std::filesystem::exists(models)) {
+    context.dimension = sphcast::Dictionary::read(models).getOrDefault<int>("dimension", 3);
+  }
+}
 
 int castPostProcess(int argc, const char* const argv[]) {
   sphcast::CommandLine args(
       "castPostProcess",
-      "Writes postProcessing/cloudSummary/<cloud>.csv: per written time, the particle count, "
-      "centroid, mean velocity, maximum speed and bounding box of every cloud. With -time or "
-      "-latestTime only the rows of those times are replaced or added; the others stay.");
+      "Runs the analyses named in system/castPostProcessDict (types: cloudSummary, timeSeries, "
+      "thermocouples, solidificationMaps) over the written times, each into "
+      "postProcessing/<name>/, and writes postProcessing/castReport.md. Without that file: the "
+      "cloud summary of every cloud (postProcessing/cloudSummary/<cloud>.csv). With -time or "
+      "-latestTime the time series replace or add the rows of those times only.");
   args.options()("latestTime", "only the latest time")(
       "time", boost::program_options::value<std::string>()->value_name("LIST"),
       "times to process: 0.1,0.2 or 0.1:0.5 (ranges), comma-separated");
@@ -32,32 +67,48 @@ int castPostProcess(int argc, const char* const argv[]) {
   auto times = caseFolder.times();
   if (args.has("time")) times = sphcast::selectTimes(times, args.get<std::string>("time"));
   if (args.has("latestTime") && !times.empty()) times.erase(times.begin(), times.end() - 1);
-  if (times.empty()) throw sphcast::Error("no time folder selected in " + caseFolder.root().string());
+  if (times.empty()) {
+    throw sphcast::Error("no time folder " +
+                         (args.has("time") ? "matches -time " + args.get<std::string>("time")
+                                           : std::string("to process")) +
+                         " in " + caseFolder.root().string());
+  }
 
-  std::map<std::string, std::string> csvByCloud;
+  sphcast::AnalysisContext context;
+  context.caseRoot = caseFolder.root();
+  context.times = times;
+  context.allTimes = !args.has("time") && !args.has("latestTime");
+  context.clouds = cloudNames(caseFolder, times.front().name);
+  readCaseSetup(caseFolder, context);
+
+  const auto dictFile = caseFolder.systemFile("castPostProcessDict");
+  const bool haveDict = std::filesystem::exists(dictFile);
+  const sphcast::Dictionary dict =
+      haveDict ? sphcast::Dictionary::read(dictFile)
+               : sphcast::Dictionary::parse("cloudSummary { type cloudSummary; }",
+                                            "castPostProcess's default");
+  if (!haveDict) {
+    sphcast::info() << "No system/castPostProcessDict: the cloud summary of every cloud\n";
+  }
+  const auto analyses = sphcast::readCastAnalyses(dict, context);
+  sphcast::info() << "Analyses:";
+  for (const auto& analysis : analyses) {
+    sphcast::info() << ' ' << analysis->name() << " (" << analysis->type() << ')';
+  }
+  sphcast::info() << "\n\n";
+
   for (const sphcast::TimeFolder& time : times) {
     sphcast::info() << "Time = " << time.name << '\n';
-    for (const auto& cloud : sphcast::readTimeFolderClouds(caseFolder, time.name)) {
-      std::string& csv = csvByCloud[cloud.name()];
-      if (csv.empty()) csv = sphcast::cloudSummaryCsvHeader();
-      csv += sphcast::cloudSummaryCsvRow(time.value, sphcast::summarize(cloud));
-    }
+    const sphcast::WrittenTime written{time, sphcast::readTimeFolderClouds(caseFolder, time.name)};
+    for (const auto& analysis : analyses) analysis->add(written);
   }
-  const auto folder = caseFolder.root() / "postProcessing" / "cloudSummary";
-  std::filesystem::create_directories(folder);
-  // All times: the files are written afresh. Some times: merged into the rows already there.
-  const bool someTimes = args.has("time") || args.has("latestTime");
-  for (const auto& [cloudName, csv] : csvByCloud) {
-    const auto file = folder / (cloudName + ".csv");
-    if (someTimes && std::filesystem::exists(file)) {
-      std::ostringstream existing;
-      existing << std::ifstream(file).rdbuf();
-      sphcast::writeFileAtomically(file, sphcast::mergeCloudSummaryCsv(existing.str(), csv));
-      sphcast::info() << "Updated " << file.string() << '\n';
-    } else {
-      sphcast::writeFileAtomically(file, csv);
-      sphcast::info() << "Wrote " << file.string() << '\n';
-    }
+  sphcast::info() << '\n';
+  std::vector<std::pair<const sphcast::CastAnalysis*, sphcast::ReportSection>> sections;
+  for (const auto& analysis : analyses) sections.emplace_back(analysis.get(), analysis->finish());
+  if (haveDict) {
+    std::string command = "castPostProcess";
+    for (int k = 1; k < argc; ++k) command += std::string(" ") + argv[k];
+    sphcast::writeCastReport(context, command, sections);
   }
   sphcast::info() << "\nEnd\n";
   return 0;

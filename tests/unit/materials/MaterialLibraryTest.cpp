@@ -142,6 +142,11 @@ TEST(MaterialLibrary, ErrorsNameFileLineKeyAndRow) {
   expectError("metal\n{\n    liquidus 830;\n    solidus 888;\n}\n", ":5:5:",
               "'solidus' 888 K of material 'metal' in constant/physicalProperties must be "
               "positive and below its 'liquidus' 830 K");
+  // lambda_2 = A t_f^n: two positive numbers, n at most 1
+  expectError("metal\n{\n    dendriteArmSpacing (1e-5);\n}\n", ":4:5:",
+              "'dendriteArmSpacing' of material 'metal' in constant/physicalProperties must be "
+              "(A n)");
+  expectError("metal\n{\n    dendriteArmSpacing (1e-5 1.5);\n}\n", ":4:5:", "n in (0, 1]");
 }
 
 }  // namespace

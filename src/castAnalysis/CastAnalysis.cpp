@@ -1,0 +1,89 @@
+#include "castAnalysis/CastAnalysis.h"
+
+#include <algorithm>
+
+#include "castAnalysis/CloudSummaryAnalysis.h"
+#include "castAnalysis/SolidificationMaps.h"
+#include "castAnalysis/Thermocouples.h"
+#include "castAnalysis/TimeSeries.h"
+#include "core/dictionary/SourceLocation.h"
+
+namespace sphcast {
+
+const ParticleCloud* WrittenTime::find(const std::string& cloudName) const {
+  for (const ParticleCloud& cloud : clouds) {
+    if (cloud.name() == cloudName) return &cloud;
+  }
+  return nullptr;
+}
+
+CastAnalysis::CastAnalysis(const std::string& name, const Dictionary& dict,
+                           const AnalysisContext& context, const std::vector<std::string>& keys)
+    : name_(name), type_(dict.get<std::string>("type")), dict_(dict), context_(context) {
+  std::vector<std::string> valid = keys;
+  valid.push_back("type");
+  dict.checkKeys(valid);
+}
+
+std::filesystem::path CastAnalysis::folder() const {
+  const auto path = context_.caseRoot / "postProcessing" / name_;
+  std::filesystem::create_directories(path);
+  return path;
+}
+
+std::string CastAnalysis::readCloud(const std::string& key) const {
+  const auto cloud = dict_.get<std::string>(key);
+  const auto& clouds = context_.clouds;
+  if (std::find(clouds.begin(), clouds.end(), cloud) == clouds.end()) {
+    std::string list;
+    for (const auto& known : clouds) list += (list.empty() ? "" : " ") + known;
+    throw DictionaryError(dict_.location(key), "no cloud '" + cloud + "' in the time folders of " +
+                                                   context_.caseRoot.string() + " for " +
+                                                   dict_.name() + "; they hold (" + list + ")");
+  }
+  return cloud;
+}
+
+const Material& CastAnalysis::materialOf(const std::string& cloud,
+                                         const std::string& neededBy) const {
+  const auto found = context_.materials.find(cloud);
+  if (found == context_.materials.end()) {
+    throw DictionaryError(dict_.location("cloud"),
+                          "cloud '" + cloud + "' has no material, which " + neededBy +
+                              " of " + dict_.name() +
+                              " needs: it must be a heatTransfer cloud of constant/physicsModels");
+  }
+  return found->second;
+}
+
+const std::vector<std::string>& castAnalysisTypes() {
+  static const std::vector<std::string> types{"cloudSummary", "timeSeries", "thermocouples",
+                                              "solidificationMaps"};
+  return types;
+}
+
+std::vector<std::unique_ptr<CastAnalysis>> readCastAnalyses(const Dictionary& dict,
+                                                            const AnalysisContext& context) {
+  std::vector<std::unique_ptr<CastAnalysis>> analyses;
+  for (const std::string& name : dict.keys()) {
+    if (!dict.isDict(name)) {
+      throw DictionaryError(dict.location(name),
+                            "'" + name + "' in " + dict.name() +
+                                " is not an analysis: each entry is name { type ...; }");
+    }
+    const Dictionary& entry = dict.subDict(name);
+    const std::string type = entry.getChoice("type", castAnalysisTypes());
+    if (type == "cloudSummary") {
+      analyses.push_back(std::make_unique<CloudSummaryAnalysis>(name, entry, context));
+    } else if (type == "timeSeries") {
+      analyses.push_back(std::make_unique<TimeSeries>(name, entry, context));
+    } else if (type == "thermocouples") {
+      analyses.push_back(std::make_unique<Thermocouples>(name, entry, context));
+    } else {
+      analyses.push_back(std::make_unique<SolidificationMaps>(name, entry, context));
+    }
+  }
+  return analyses;
+}
+
+}  // namespace sphcast
