@@ -1,0 +1,254 @@
+// castPostProcess's analyses (castAnalysis/): cooling-curve breaks on curves whose kinks are
+// known, grad T against a linear field, the solidification maps (G, Niyama, lambda_2, the
+// dimensionless Niyama) against values worked by hand, the heat books, and the errors a user
+// meets (unknown type, unknown key, a thermocouple outside the casting).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numeric>
+
+#include "castAnalysis/CastAnalysis.h"
+#include "castAnalysis/CoolingCurve.h"
+#include "castAnalysis/TemperatureGradient.h"
+#include "castAnalysis/TimeSeries.h"
+#include "core/dictionary/SourceLocation.h"
+#include "io/VtpCloud.h"
+#include "materials/MaterialLibrary.h"
+#include "support/TemporaryCase.h"
+
+namespace sphcast {
+namespace {
+
+Material ac4ch(const std::string& extra = "") {
+  const testing::TemporaryCase folder;
+  folder.write("constant/physicalProperties",
+               "FoamFile { version 2.0; format ascii; class dictionary; object "
+               "physicalProperties; }\nAC4CH { #includeEtc \"materials/AC4CH\" " +
+                   extra + " }\n");
+  return MaterialLibrary::read(folder.root() / "constant/physicalProperties")
+      .get("AC4CH", {}, "metal");
+}
+
+// A lumped particle of AC4CH cooling at constant heat extraction (u linear in t: T(t) piecewise
+// linear, kinks at the table's nodes) and by Newton's law into 300 K air (curved between kinks):
+// the arrest and the end of freezing are found at the liquidus and the solidus, though the
+// table's node at 848 K also quickens the cooling (by 3.2 times, against 7.6 at the solidus).
+TEST(CoolingCurve, BreaksLieAtTheLiquidusAndSolidusOfALumpedCasting) {
+  const Material material = ac4ch();
+  const InternalEnergyTable& u = *material.internalEnergy;
+  for (const bool newton : {false, true}) {
+    std::vector<double> time, temperature;
+    double energy = u.energy(950);
+    const double dt = 0.01;
+    for (int k = 0; k < 12000; ++k) {
+      const double T = u.temperature(Real(energy));
+      time.push_back(k * dt);
+      temperature.push_back(T);
+      energy -= dt * (newton ? 40.0 * (T - 300) : 1.5e4);
+    }
+    const CoolingCurveBreaks breaks = findCoolingCurveBreaks(time, temperature);
+    ASSERT_TRUE(breaks.arrest.found && breaks.end.found) << "newton " << newton;
+    EXPECT_NEAR(breaks.arrest.temperature, 888.64, newton ? 0.05 : 1e-6) << "newton " << newton;
+    EXPECT_NEAR(breaks.end.temperature, 830.44, newton ? 0.05 : 1e-6) << "newton " << newton;
+    if (!newton) {  // at u_0 - q t = u(T): exact
+      EXPECT_NEAR(breaks.arrest.time, (u.energy(950) - u.energy(888.64)) / 1.5e4, 1e-6);
+      EXPECT_NEAR(breaks.end.time, (u.energy(950) - u.energy(830.44)) / 1.5e4, 1e-6);
+      // linear between samples: within one sample's time of the kink it lies on
+      EXPECT_NEAR(firstTimeAtOrBelow(time, temperature, 888.64),
+                  (u.energy(950) - u.energy(888.64)) / 1.5e4, dt);
+    }
+  }
+  // no freezing in the curve: nothing found
+  const std::vector<double> time{0, 1, 2, 3, 4, 5, 6, 7, 8, 9};
+  const std::vector<double> linear{900, 890, 880, 870, 860, 850, 840, 830, 820, 810};
+  EXPECT_FALSE(findCoolingCurveBreaks(time, linear).arrest.found);
+  EXPECT_TRUE(std::isnan(firstTimeAtOrBelow(time, linear, 700)));
+}
+
+ParticleCloud latticeBlock(int n, Real dx, int dimension) {
+  ParticleCloud cloud("metal");
+  const int nz = dimension == 3 ? n : 1;
+  cloud.resize(std::size_t(n) * n * nz);
+  auto& mass = cloud.addScalarField("mass");
+  auto& rho = cloud.addScalarField("rho");
+  auto& id = cloud.addIdField("id");
+  std::size_t k = 0;
+  for (int z = 0; z < nz; ++z) {
+    for (int y = 0; y < n; ++y) {
+      for (int x = 0; x < n; ++x, ++k) {
+        cloud.positions()[k] = Vector((x + Real(0.5)) * dx, (y + Real(0.5)) * dx,
+                                      dimension == 3 ? (z + Real(0.5)) * dx : 0);
+        rho[k] = 2400;
+        mass[k] = 2400 * (dimension == 3 ? dx * dx * dx : dx * dx);
+        id[k] = std::int64_t(k);
+      }
+    }
+  }
+  cloud.attributes()["spacing"] = dx;
+  cloud.addScalarField("T");
+  return cloud;
+}
+
+// The corrected kernel gradient is exact for a linear field at every particle, the corners and
+// faces of the block included (where the plain kernel sum is off by about half).
+TEST(TemperatureGradient, ExactForALinearFieldUpToTheSurface) {
+  for (const int dimension : {2, 3}) {
+    ParticleCloud block = latticeBlock(8, 0.01, dimension);
+    const Vector slope = dimension == 3 ? Vector(1000, -500, 200) : Vector(1000, -500, 0);
+    for (std::size_t i = 0; i < block.size(); ++i) {
+      block.scalarField("T")[i] = 900 + slope.dot(block.positions()[i]);
+    }
+    const auto gradient = temperatureGradient(block, 0.03, dimension);
+    double worst = 0;
+    for (const Vector& g : gradient) worst = std::max(worst, double((g - slope).norm()));
+    EXPECT_LT(worst, 1e-8 * slope.norm()) << dimension << "D";
+  }
+}
+
+struct MapsCase {
+  testing::TemporaryCase folder;
+  AnalysisContext context;
+  MapsCase(const std::string& materialExtra) {
+    context.caseRoot = folder.root();
+    context.clouds = {"metal"};
+    context.supportRadius = 0.03;
+    context.dimension = 3;
+    context.materials.emplace("metal", ac4ch(materialExtra));
+    context.times = {{1, "1"}, {2, "2"}};
+  }
+  std::vector<std::unique_ptr<CastAnalysis>> read(const std::string& text) {
+    return readCastAnalyses(Dictionary::parse(text, "system/castPostProcessDict"), context);
+  }
+};
+
+// Two writes of a 6^3 block: T = 900 + 1000 x at t = 1, 850 + 3000 x at t = 2 (G = 1000 then
+// 3000 K/m); the solver's history at t = 2 says T_c was crossed at 1.25 s with -dT/dt = 4 K/s,
+// the liquidus at 0.5 s and the solidus at 2 s, and the particles come in reverse order.
+// By hand: G(T_c) = 0.75 * 1000 + 0.25 * 3000 = 1500 K/m, Niyama = 1.5 K/mm / sqrt(4 K/s) = 0.75,
+// t_f = 1.5 s, lambda_2 = 1e-5 * 1.5^(1/3) m, and with mu_l = 1.57e-3 Pa s, beta = 2565.5 /
+// 2426.6 - 1, dT_f = 58.2 K (Table 1) Ny* = lambda_2 G sqrt(1.01e5 / (mu_l beta dT_f 4)).
+TEST(SolidificationMaps, NiyamaAndArmSpacingFromTheRunsHistoryAndTheWrittenGradients) {
+  MapsCase maps("dendriteArmSpacing (1e-5 0.3333333333333333);");
+  auto analyses = maps.read("maps { type solidificationMaps; cloud metal; }");
+  ASSERT_EQ(analyses.size(), 1u);
+  ParticleCloud first = latticeBlock(6, 0.01, 3);
+  for (const char* field : {"liquidusTime", "criticalTime", "coolingRate", "solidusTime"}) {
+    auto& values = first.addScalarField(field);
+    std::fill(values.begin(), values.end(), Real(-1));
+  }
+  first.addScalarField("solidFraction");
+  ParticleCloud second = first;
+  for (std::size_t i = 0; i < first.size(); ++i) {
+    first.scalarField("T")[i] = 900 + 1000 * first.positions()[i].x();
+    second.scalarField("T")[i] = 850 + 3000 * second.positions()[i].x();
+    second.scalarField("liquidusTime")[i] = Real(0.5);
+    second.scalarField("criticalTime")[i] = Real(1.25);
+    second.scalarField("coolingRate")[i] = 4;
+    second.scalarField("solidusTime")[i] = 2;
+  }
+  second.scalarField("criticalTime")[0] = -1;  // one particle not yet at T_c
+  std::vector<std::size_t> reverse(second.size());
+  std::iota(reverse.rbegin(), reverse.rend(), std::size_t(0));
+  second.reorder(reverse);
+  std::vector<ParticleCloud> clouds1{first}, clouds2{second};
+  analyses[0]->add(WrittenTime{{1, "1"}, clouds1});
+  analyses[0]->add(WrittenTime{{2, "2"}, clouds2});
+  const ReportSection section = analyses[0]->finish();
+  EXPECT_NE(section.markdown.find("Niyama minimum: 0.75"), std::string::npos) << section.markdown;
+
+  const ParticleCloud result = readCloudVtp(maps.folder.root() / "postProcessing/maps/2/metal.vtp",
+                                            "metal");
+  const double lambda2 = 1e-5 * std::cbrt(1.5);
+  const double ny = lambda2 * 1500 *
+                    std::sqrt(1.01e5 / (1.57e-3 * (2565.5 / 2426.6 - 1) * 58.2 * 4));
+  std::size_t checked = 0;
+  for (std::size_t i = 0; i < result.size(); ++i) {
+    if (result.idField("id")[i] == 0) {
+      EXPECT_EQ(result.scalarField("niyama")[i], -1);
+      EXPECT_EQ(result.scalarField("temperatureGradient")[i], -1);
+      continue;
+    }
+    EXPECT_NEAR(result.scalarField("temperatureGradient")[i], 1500, 1e-6);
+    EXPECT_NEAR(result.scalarField("niyama")[i], 0.75, 1e-9);
+    EXPECT_NEAR(result.scalarField("localFreezingTime")[i], 1.5, 1e-12);
+    EXPECT_NEAR(result.scalarField("solidificationTime")[i], 2, 1e-12);
+    EXPECT_NEAR(result.scalarField("secondaryArmSpacing")[i], lambda2, 1e-12);
+    EXPECT_NEAR(result.scalarField("dimensionlessNiyama")[i], ny, 1e-9 * ny);
+    // the first time's T, by id (the order was reversed since)
+    EXPECT_NEAR(result.scalarField("temperatureAtFillEnd")[i],
+                900 + 1000 * result.positions()[i].x(), 1e-9);
+    ++checked;
+  }
+  EXPECT_EQ(checked, result.size() - 1);
+  EXPECT_TRUE(std::filesystem::exists(maps.folder.root() / "postProcessing/maps/maps.pvd"));
+}
+
+// The heat books sum every heat cloud: the metal's loss is the held mold's intake.
+TEST(TimeSeries, HeatBooksBalanceAcrossTheClouds) {
+  ParticleCloud metal = latticeBlock(2, 0.01, 3), mold = latticeBlock(2, 0.01, 3);
+  mold = ParticleCloud("mold");
+  mold.resize(1);
+  mold.addScalarField("mass")[0] = 1;
+  mold.addScalarField("u")[0] = 5e5;
+  mold.attributes()["internalEnergyAtStart"] = 5e5;
+  mold.attributes()["heatLost.fixedTemperature"] = 300;  // taken from the metal, held at 300 K
+  auto& u = metal.addScalarField("u");
+  std::fill(u.begin(), u.end(), Real(1e6));
+  const double metalEnergy = 8 * 2400 * 1e-6 * 1e6;
+  metal.attributes()["internalEnergyAtStart"] = metalEnergy + 300;
+  const std::string row = TimeSeries::energyBalanceRow(WrittenTime{{3, "3"}, {metal, mold}});
+  double time, change, lost, imbalance;
+  ASSERT_EQ(std::sscanf(row.c_str(), "%lf,%lf,%lf,%lf", &time, &change, &lost, &imbalance), 4);
+  EXPECT_NEAR(change, -300, 1e-6);
+  EXPECT_NEAR(lost, 300, 1e-12);
+  EXPECT_NEAR(imbalance, 0, 1e-6);
+  // T by mass, f_s by mass, counts
+  auto& T = metal.scalarField("T");
+  auto& fs = metal.addScalarField("solidFraction");
+  for (std::size_t i = 0; i < 8; ++i) {
+    T[i] = Real(800 + 10 * i);
+    fs[i] = i < 2 ? 1 : 0;
+  }
+  const std::string cloudRow = TimeSeries::csvRow(3, metal);
+  EXPECT_EQ(cloudRow.rfind("3,8,800,835,870,0.25,6,", 0), 0u) << cloudRow;
+}
+
+void expectError(MapsCase& maps, const std::string& text, const std::string& where,
+                 const std::string& message) {
+  try {
+    maps.read(text);
+    ADD_FAILURE() << "no error for " << text;
+  } catch (const DictionaryError& error) {
+    EXPECT_NE(std::string(error.what()).find(where), std::string::npos) << error.what();
+    EXPECT_NE(std::string(error.what()).find(message), std::string::npos) << error.what();
+  }
+}
+
+TEST(CastAnalysis, BadEntriesNameFileLineAndKey) {
+  MapsCase maps("");
+  expectError(maps, "a { type solidificationMap; cloud metal; }",
+              "system/castPostProcessDict:1:", "did you mean 'solidificationMaps'?");
+  expectError(maps, "a { type timeSeries;\n cluods (metal); }", "system/castPostProcessDict:2:",
+              "did you mean 'clouds'?");
+  expectError(maps, "a { type thermocouples; cloud steel; locations { c (0 0 0); } }",
+              "system/castPostProcessDict:1:", "no cloud 'steel'");
+  expectError(maps, "a 1;", "system/castPostProcessDict:1:", "is not an analysis");
+  expectError(maps, "a { type thermocouples; cloud metal; }", "system/castPostProcessDict:1:",
+              "either 'locations'");
+  // a thermocouple outside the casting, at its line
+  auto analyses = maps.read(
+      "a { type thermocouples; cloud metal;\n locations { in (0.03 0.03 0.03);\n out (1 0 0); "
+      "} }");
+  ParticleCloud block = latticeBlock(6, 0.01, 3);
+  try {
+    analyses[0]->add(WrittenTime{{1, "1"}, {block}});
+    ADD_FAILURE() << "no error for a thermocouple outside the casting";
+  } catch (const DictionaryError& error) {
+    EXPECT_NE(std::string(error.what()).find("castPostProcessDict:3:2: thermocouple 'out'"),
+              std::string::npos)
+        << error.what();
+  }
+}
+
+}  // namespace
+}  // namespace sphcast
