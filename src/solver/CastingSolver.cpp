@@ -296,23 +296,29 @@ void CastingSolver::setUpHeat() {
 void CastingSolver::setUpSolidification() {
   SolidificationSettings settings = solidificationSetup_.settings;
   const Material& material = *solidificationSetup_.material;
-  const FlowSettings& flow = flowSetup_.settings;
-  const double spacing = fluid_->attributes().at("spacing");
-  // 0.9 of the viscosity whose explicit limit 0.125 dx^2 rho / mu is the acoustic step
-  // maxCo dx / c (SolidificationSetup.h)
-  const double liquidDensity = (*material.density)(material.freezingRange->liquidus);
-  settings.viscosityLimit = static_cast<Real>(0.9 * 0.125 * liquidDensity * spacing *
-                                              flow.soundSpeed / time_.settings().maxCo);
-  solidification_ = std::make_unique<Solidification>(settings, material, *fluid_);
+  ParticleCloud& metal = cloudNamed(solidificationSetup_.cloud);
+  if (flow_) {
+    const FlowSettings& flow = flowSetup_.settings;
+    const double spacing = fluid_->attributes().at("spacing");
+    // 0.9 of the viscosity whose explicit limit 0.125 dx^2 rho / mu is the acoustic step
+    // maxCo dx / c (SolidificationSetup.h)
+    const double liquidDensity = (*material.density)(material.freezingRange->liquidus);
+    settings.viscosityLimit = static_cast<Real>(0.9 * 0.125 * liquidDensity * spacing *
+                                                flow.soundSpeed / time_.settings().maxCo);
+  }
+  solidification_ = std::make_unique<Solidification>(settings, material, metal);
   solidification_->update(time_.value(), 0.0);
-  if (const auto mode = fluid_->attributes().find("coolingMode");
-      mode != fluid_->attributes().end()) {
+  if (const auto mode = metal.attributes().find("coolingMode"); mode != metal.attributes().end()) {
     cooling_ = solidificationSetup_.cooling && mode->second != 0;
   }
-  info() << "Solidification: " << solidification_->description() << '\n'
-         << "    frozen particles stay where they are (wall for the melt; their own contraction "
-            "moves nothing); melt below "
-         << flowSetup_.settings.cavitationPressure << " Pa opens a cavity\n";
+  info() << "Solidification: " << solidification_->description() << '\n';
+  if (flow_) {
+    info() << "    frozen particles stay where they are (wall for the melt; their own "
+              "contraction moves nothing); melt below "
+           << flowSetup_.settings.cavitationPressure << " Pa opens a cavity\n";
+  } else {
+    info() << "    no flow: the metal conducts and solidifies where it is\n";
+  }
   logSolidification();
 }
 

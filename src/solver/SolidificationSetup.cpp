@@ -22,20 +22,40 @@ SolidificationSetup readSolidificationSetup(const CaseFolder& caseFolder, const 
   const Dictionary models = Dictionary::read(modelsFile);
   if (!models.found("solidification")) return setup;
   const Dictionary& dict = models.subDict("solidification");
-  dict.checkKeys({"model", "frozenSolidFraction", "cavitationPressure", "cooling",
+  dict.checkKeys({"model", "cloud", "frozenSolidFraction", "cavitationPressure", "cooling",
                   "endWhenSolid"});
   if (dict.getChoice("model", {"none", "frozenSolid"}) == "none") return setup;
-  if (!flow.enabled) {
-    throw DictionaryError(dict.location("model"),
-                          "solidification acts on the flow's fluid, but " + models.name() +
-                              " has no flow (flow { model weaklyCompressible; ... })");
+  // the flow's fluid; without a flow, the cloud named (a casting that only conducts heat)
+  if (flow.enabled) {
+    setup.cloud = flow.fluidCloud;
+    if (dict.found("cloud") && dict.get<std::string>("cloud") != flow.fluidCloud) {
+      throw DictionaryError(dict.location("cloud"),
+                            "solidification acts on the flow's fluid '" + flow.fluidCloud +
+                                "', not '" + dict.get<std::string>("cloud") + "', in " +
+                                dict.name());
+    }
+  } else {
+    if (!dict.found("cloud")) {
+      throw DictionaryError(dict.location("model"),
+                            "solidification without a flow needs the 'cloud' that solidifies "
+                            "in " + dict.name() + " (with a flow it is the flow's fluid)");
+    }
+    setup.cloud = dict.get<std::string>("cloud");
+    for (const char* key : {"cooling", "cavitationPressure"}) {
+      if (dict.found(key)) {
+        throw DictionaryError(dict.location(key), "'" + std::string(key) + "' in " +
+                                                      dict.name() +
+                                                      " needs a flow: without one nothing moves");
+      }
+    }
   }
+  const SourceLocation& cloudAt = dict.found("cloud") ? dict.location("cloud")
+                                                      : dict.location("model");
   if (!heat.enabled ||
-      std::find(heat.clouds.begin(), heat.clouds.end(), flow.fluidCloud) == heat.clouds.end()) {
-    throw DictionaryError(dict.location("model"),
-                          "solidification follows the temperature of the flow's fluid '" +
-                              flow.fluidCloud + "', but heatTransfer's clouds in " +
-                              models.name() + " do not carry it");
+      std::find(heat.clouds.begin(), heat.clouds.end(), setup.cloud) == heat.clouds.end()) {
+    throw DictionaryError(cloudAt, "solidification follows the temperature of '" + setup.cloud +
+                                       "', but heatTransfer's clouds in " + models.name() +
+                                       " do not carry it");
   }
   setup.enabled = true;
   if (dict.found("frozenSolidFraction")) {
@@ -77,7 +97,7 @@ SolidificationSetup readSolidificationSetup(const CaseFolder& caseFolder, const 
     }
     setup.cooling = acceleration;
   }
-  const Material& material = heat.materialOf(flow.fluidCloud);
+  const Material& material = heat.materialOf(setup.cloud);
   // the checks now, with the material's place in the message, not at the first step
   material.requireFreezingRange("solidification");
   material.requireInternalEnergy("solidification");

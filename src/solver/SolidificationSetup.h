@@ -15,6 +15,8 @@ namespace sphcast {
 //   solidification
 //   {
 //       model               frozenSolid;  // none | frozenSolid
+//       cloud               metal;        // without a flow: the heat cloud that solidifies
+//                                         // (with a flow it is the flow's fluid)
 //       frozenSolidFraction 0.5;          // f_s from which a particle is frozen, in (0, 1];
 //                                         // 0.5 by default
 //       cavitationPressure  0;            // Pa (gauge): the lowest pressure the melt holds
@@ -31,9 +33,11 @@ namespace sphcast {
 //                                         // time, feed the shrinkage faster than stillSpeed
 //   }
 //
-// It needs the flow (its fluid solidifies) and the heat transfer carrying the fluid's cloud; the
-// fluid's material needs liquidus, solidus, internalEnergy (or specificHeat), density and
-// viscosity (constant/physicalProperties). The solver caps the mush's viscosity at 0.9 times the
+// It needs the heat transfer carrying the cloud; its material needs liquidus, solidus,
+// internalEnergy (or specificHeat), density and viscosity
+// (constant/physicalProperties). Without a flow (a casting that only conducts: Chvorinov's
+// plates, cooling curves) it computes f_s, rho_s and the solidification history, and cooling and
+// cavitationPressure are errors. The solver caps the mush's viscosity at 0.9 times the
 // acoustic step's viscous limit, 0.9 x 0.125 rho_s(T_liq) dx c / maxCo (0.9: melt a few per cent
 // lighter than rho_s(T_liq), in a cavity, still steps at the acoustic limit).
 // Cooling to the end in fewer steps (CastingSolver::evolveCooling): the flow's time runs
@@ -50,7 +54,8 @@ struct SolidificationSetup {
   SolidificationSettings settings;
   Real cavitationPressure = 0;
   bool endWhenSolid = false;
-  std::optional<Material> material;  // the fluid's
+  std::string cloud;                 // that solidifies
+  std::optional<Material> material;  // its
 };
 
 SolidificationSetup readSolidificationSetup(const CaseFolder& caseFolder, const FlowSetup& flow,
