@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "castAnalysis/CloudSummaryAnalysis.h"
+#include "castAnalysis/ShrinkageCavities.h"
 #include "castAnalysis/SolidificationMaps.h"
 #include "castAnalysis/Thermocouples.h"
 #include "castAnalysis/TimeSeries.h"
@@ -58,7 +59,7 @@ const Material& CastAnalysis::materialOf(const std::string& cloud,
 
 const std::vector<std::string>& castAnalysisTypes() {
   static const std::vector<std::string> types{"cloudSummary", "timeSeries", "thermocouples",
-                                              "solidificationMaps"};
+                                              "solidificationMaps", "shrinkageCavities"};
   return types;
 }
 
@@ -79,8 +80,10 @@ std::vector<std::unique_ptr<CastAnalysis>> readCastAnalyses(const Dictionary& di
       analyses.push_back(std::make_unique<TimeSeries>(name, entry, context));
     } else if (type == "thermocouples") {
       analyses.push_back(std::make_unique<Thermocouples>(name, entry, context));
-    } else {
+    } else if (type == "solidificationMaps") {
       analyses.push_back(std::make_unique<SolidificationMaps>(name, entry, context));
+    } else {
+      analyses.push_back(std::make_unique<ShrinkageCavities>(name, entry, context));
     }
   }
   return analyses;

@@ -34,9 +34,10 @@ cat log.compareWithLumped
 
 report=postProcessing/castReport.md
 for section in "## history (timeSeries)" "## coolingCurves (thermocouples)" \
-               "## solidification (solidificationMaps)"; do
+               "## solidification (solidificationMaps)" "## cavities (shrinkageCavities)"; do
     grep -qF "$section" "$report" || fail "$report has no '$section'"
 done
+grep -q "^At time 40: 0 enclosed cavities" "$report" || fail "cavities found in a solid cube"
 maps=$(ls postProcessing/solidification/*/body.vtp) || fail "no solidification map"
 [ -f postProcessing/solidification/solidification.pvd ] || fail "no .pvd beside the maps"
 "$python" - "$maps" <<'PY' || fail "the maps' fields"

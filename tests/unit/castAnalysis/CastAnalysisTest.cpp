@@ -11,6 +11,7 @@
 #include "castAnalysis/CoolingCurve.h"
 #include "castAnalysis/TemperatureGradient.h"
 #include "castAnalysis/TimeSeries.h"
+#include "castAnalysis/VoxelOccupancy.h"
 #include "core/dictionary/SourceLocation.h"
 #include "io/VtpCloud.h"
 #include "materials/MaterialLibrary.h"
@@ -105,6 +106,49 @@ TEST(TemperatureGradient, ExactForALinearFieldUpToTheSurface) {
   }
 }
 
+// A void planted in a block of particles (those within R of its centre taken out) is found, and
+// its volume is the taken-out particles' share, n dx^d, within 5 % (measured in the test's
+// output); the same void opened to the outside by a channel is a sink, not a cavity.
+TEST(ShrinkageCavities, PlantedVoidMeasuredWithinFivePercent) {
+  for (const int dimension : {2, 3}) {
+    const int n = dimension == 3 ? 24 : 40;
+    const Real dx = 0.001, radius = (dimension == 3 ? 5 : 8) * dx;
+    for (const bool open : {false, true}) {
+      ParticleCloud block = latticeBlock(n, dx, dimension);
+      Vector centre = Vector::Constant(n * dx / 2);
+      if (dimension == 2) centre.z() = 0;
+      std::vector<std::size_t> keep;
+      for (std::size_t i = 0; i < block.size(); ++i) {
+        const Vector& x = block.positions()[i];
+        const bool inVoid = (x - centre).norm() < radius;
+        // the channel: a square tube 3 dx wide from the void to x = 0
+        const bool inChannel = open && x.x() < centre.x() && std::abs(x.y() - centre.y()) < 1.6 * dx &&
+                               (dimension == 2 || std::abs(x.z() - centre.z()) < 1.6 * dx);
+        if (!inVoid && !inChannel) keep.push_back(i);
+      }
+      const double planted = double(block.size() - keep.size()) * (dimension == 3 ? dx * dx * dx : dx * dx);
+      ParticleCloud holed("metal");
+      holed.resize(keep.size());
+      for (std::size_t k = 0; k < keep.size(); ++k) holed.positions()[k] = block.positions()[keep[k]];
+      auto& volume = holed.addScalarField("volume");
+      std::fill(volume.begin(), volume.end(), Real(dimension == 3 ? dx * dx * dx : dx * dx));
+      VoxelOccupancy occupancy(Vector::Zero(), Vector::Constant(n * dx), dx / 2, 3 * dx, dimension);
+      occupancy.add(holed, 0);
+      const auto voids = enclosedVoids(occupancy, 0.5);
+      if (open) {
+        EXPECT_TRUE(voids.empty()) << dimension << "D: an open void counted as a cavity";
+        continue;
+      }
+      ASSERT_EQ(voids.size(), 1u) << dimension << "D";
+      std::printf("%dD planted void %.4g, measured %.4g (%+.2f %%), centroid off by %.3g dx\n",
+                  dimension, planted, voids[0].volume, 100 * (voids[0].volume / planted - 1),
+                  double((voids[0].centroid - centre).norm() / dx));
+      EXPECT_NEAR(voids[0].volume / planted, 1, 0.05) << dimension << "D";
+      EXPECT_LT((voids[0].centroid - centre).norm(), 0.25 * dx) << dimension << "D";
+    }
+  }
+}
+
 struct MapsCase {
   testing::TemporaryCase folder;
   AnalysisContext context;
@@ -150,9 +194,13 @@ TEST(SolidificationMaps, NiyamaAndArmSpacingFromTheRunsHistoryAndTheWrittenGradi
   std::vector<std::size_t> reverse(second.size());
   std::iota(reverse.rbegin(), reverse.rend(), std::size_t(0));
   second.reorder(reverse);
-  std::vector<ParticleCloud> clouds1{first}, clouds2{second};
-  analyses[0]->add(WrittenTime{{1, "1"}, clouds1});
-  analyses[0]->add(WrittenTime{{2, "2"}, clouds2});
+  WrittenTime time1, time2;
+  time1.folder = {1, "1"};
+  time1.clouds = {first};
+  time2.folder = {2, "2"};
+  time2.clouds = {second};
+  analyses[0]->add(time1);
+  analyses[0]->add(time2);
   const ReportSection section = analyses[0]->finish();
   EXPECT_NE(section.markdown.find("Niyama minimum: 0.75"), std::string::npos) << section.markdown;
 
@@ -196,9 +244,12 @@ TEST(TimeSeries, HeatBooksBalanceAcrossTheClouds) {
   std::fill(u.begin(), u.end(), Real(1e6));
   const double metalEnergy = 8 * 2400 * 1e-6 * 1e6;
   metal.attributes()["internalEnergyAtStart"] = metalEnergy + 300;
-  const std::string row = TimeSeries::energyBalanceRow(WrittenTime{{3, "3"}, {metal, mold}});
-  double time, change, lost, imbalance;
-  ASSERT_EQ(std::sscanf(row.c_str(), "%lf,%lf,%lf,%lf", &time, &change, &lost, &imbalance), 4);
+  WrittenTime time;
+  time.folder = {3, "3"};
+  time.clouds = {metal, mold};
+  const std::string row = TimeSeries::energyBalanceRow(time);
+  double at, change, lost, imbalance;
+  ASSERT_EQ(std::sscanf(row.c_str(), "%lf,%lf,%lf,%lf", &at, &change, &lost, &imbalance), 4);
   EXPECT_NEAR(change, -300, 1e-6);
   EXPECT_NEAR(lost, 300, 1e-12);
   EXPECT_NEAR(imbalance, 0, 1e-6);
@@ -240,8 +291,11 @@ TEST(CastAnalysis, BadEntriesNameFileLineAndKey) {
       "a { type thermocouples; cloud metal;\n locations { in (0.03 0.03 0.03);\n out (1 0 0); "
       "} }");
   ParticleCloud block = latticeBlock(6, 0.01, 3);
+  WrittenTime time;
+  time.folder = {1, "1"};
+  time.clouds = {block};
   try {
-    analyses[0]->add(WrittenTime{{1, "1"}, {block}});
+    analyses[0]->add(time);
     ADD_FAILURE() << "no error for a thermocouple outside the casting";
   } catch (const DictionaryError& error) {
     EXPECT_NE(std::string(error.what()).find("castPostProcessDict:3:2: thermocouple 'out'"),

@@ -1,0 +1,259 @@
+#include "castAnalysis/ShrinkageCavities.h"
+
+#include <vtkFloatArray.h>
+#include <vtkImageData.h>
+#include <vtkIntArray.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkXMLImageDataWriter.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <sstream>
+
+#include "castAnalysis/VoxelOccupancy.h"
+#include "core/AtomicFile.h"
+#include "core/Error.h"
+#include "core/Log.h"
+#include "io/VtpCloud.h"
+
+namespace sphcast {
+
+namespace {
+
+std::string number(double value, int digits = 6) {
+  char text[64];
+  std::snprintf(text, sizeof text, "%.*g", digits, value);
+  return text;
+}
+
+}  // namespace
+
+ShrinkageCavities::ShrinkageCavities(const std::string& name, const Dictionary& dict,
+                                     const AnalysisContext& context)
+    : CastAnalysis(name, dict, context, {"cloud", "molds", "voxelSize", "threshold"}) {
+  cloud_ = readCloud();
+  if (dict.found("molds")) {
+    molds_ = dict.get<std::vector<std::string>>("molds");
+  } else {
+    for (const auto& other : context.clouds) {
+      if (other != cloud_) molds_.push_back(other);
+    }
+    const auto constantParticles = context.caseRoot / "constant" / "particles";
+    if (std::filesystem::exists(constantParticles)) {
+      for (const auto& entry : std::filesystem::directory_iterator(constantParticles)) {
+        const std::string other = entry.path().stem().string();
+        if (entry.path().extension() == ".vtp" && other != cloud_ &&
+            std::find(molds_.begin(), molds_.end(), other) == molds_.end()) {
+          molds_.push_back(other);
+        }
+      }
+    }
+  }
+  for (const auto& mold : molds_) {
+    const bool inTimes =
+        std::find(context.clouds.begin(), context.clouds.end(), mold) != context.clouds.end();
+    const auto file = context.caseRoot / "constant" / "particles" / (mold + ".vtp");
+    if (!inTimes && !std::filesystem::exists(file)) {
+      throw DictionaryError(dict.found("molds") ? dict.location("molds") : dict.location(),
+                            "no mold cloud '" + mold + "' in the time folders or " +
+                                file.string() + ", for " + dict.name());
+    }
+  }
+  voxelSize_ = dict.getOrDefault<Real>("voxelSize", 0);
+  threshold_ = dict.getOrDefault<double>("threshold", 0.5);
+  if (dict.found("voxelSize") && !(voxelSize_ > 0)) {
+    throw DictionaryError(dict.location("voxelSize"), "'voxelSize' must be positive in " +
+                                                          dict.name());
+  }
+  if (!(threshold_ > 0 && threshold_ < 1)) {
+    throw DictionaryError(dict.location("threshold"),
+                          "'threshold' must lie in (0, 1) in " + dict.name());
+  }
+  if (!(context.supportRadius > 0)) {
+    throw DictionaryError(dict.location(), dict.name() + " needs h (supportRadius of "
+                                                         "system/sphSchemes) for the voxels' fill");
+  }
+}
+
+const ParticleCloud& ShrinkageCavities::mold(const WrittenTime& time, const std::string& name) {
+  if (const ParticleCloud* cloud = time.find(name)) return *cloud;
+  auto found = constantMolds_.find(name);
+  if (found == constantMolds_.end()) {
+    const auto file = context_.caseRoot / "constant" / "particles" / (name + ".vtp");
+    found = constantMolds_.emplace(name, readCloudVtp(file, name)).first;
+  }
+  return found->second;
+}
+
+void ShrinkageCavities::add(const WrittenTime& time) {
+  const ParticleCloud* metal = time.find(cloud_);
+  if (!metal || metal->size() == 0) return;
+  std::vector<const ParticleCloud*> molds;
+  for (const auto& name : molds_) molds.push_back(&mold(time, name));
+  Vector lower = metal->positions().front(), upper = lower;
+  for (const Vector& x : metal->positions()) {
+    lower = lower.cwiseMin(x);
+    upper = upper.cwiseMax(x);
+  }
+  for (const ParticleCloud* cloud : molds) {
+    for (const Vector& x : cloud->positions()) {
+      lower = lower.cwiseMin(x);
+      upper = upper.cwiseMax(x);
+    }
+  }
+  Real voxel = voxelSize_;
+  if (voxel <= 0) {
+    const auto spacing = metal->attributes().find("spacing");
+    voxel = spacing != metal->attributes().end() ? Real(spacing->second / 2)
+                                                 : context_.supportRadius / 6;
+  }
+  VoxelOccupancy occupancy(lower, upper, voxel, context_.supportRadius, context_.dimension);
+  occupancy.add(*metal, 0);
+  for (const ParticleCloud* cloud : molds) occupancy.add(*cloud, 1);
+  const std::vector<EnclosedVoid> voids = enclosedVoids(occupancy, threshold_);
+
+  // the envelope: not joined to the outside, the metal filling more than the molds
+  const auto& metalFill = occupancy.channel(0);
+  const auto& moldFill = occupancy.channel(1);
+  std::size_t filled = 0;
+  for (std::size_t v = 0; v < occupancy.size(); ++v) {
+    if (metalFill[v] >= moldFill[v] && double(metalFill[v] + moldFill[v]) >= threshold_) ++filled;
+  }
+  double cavityVolume = 0;
+  for (const EnclosedVoid& group : voids) cavityVolume += group.volume;
+  const double envelope = double(filled) * occupancy.voxelVolume() + cavityVolume;
+  // the mass balance: sum m / rho_s(T), rho_s(T) of the material's table (a frozen particle's
+  // restDensity is the one it froze with: what the flow holds it to, not what the metal is)
+  double balance = 0;
+  const auto material = context_.materials.find(cloud_);
+  const bool table = material != context_.materials.end() && material->second.density &&
+                     metal->hasScalarField("T");
+  // setCastFields' start has volume and rho, the solver's times mass
+  const bool mass = metal->hasScalarField("mass") ||
+                    (metal->hasScalarField("volume") && metal->hasScalarField("rho"));
+  if (mass && (table || metal->hasScalarField("restDensity"))) {
+    for (std::size_t i = 0; i < metal->size(); ++i) {
+      const double rhoS = table ? (*material->second.density)(double(metal->scalarField("T")[i]))
+                                : double(metal->scalarField("restDensity")[i]);
+      const double m = metal->hasScalarField("mass")
+                           ? double(metal->scalarField("mass")[i])
+                           : double(metal->scalarField("volume")[i] * metal->scalarField("rho")[i]);
+      balance += m / rhoS;
+    }
+  }
+  if (firstBalance_ < 0) {
+    firstBalance_ = balance;
+    firstEnvelope_ = envelope;
+  }
+  const double expected = firstBalance_ - balance;
+  if (rows_.empty()) {
+    rows_ = "time,cavities,cavityVolume,largestCavity,envelopeVolume,envelopeChange,"
+            "massBalanceShrinkage\n";
+  }
+  rows_ += number(time.folder.value, 12) + "," + std::to_string(voids.size()) + "," +
+           number(cavityVolume, 10) + "," + number(voids.empty() ? 0.0 : voids[0].volume, 10) +
+           "," + number(envelope, 10) + "," + number(envelope - firstEnvelope_, 10) + "," +
+           number(expected, 10) + "\n";
+
+  last_ = Last{};
+  last_.timeName = time.folder.name;
+  last_.time = time.folder.value;
+  last_.balance = balance;
+  last_.envelope = envelope;
+  last_.expected = expected;
+  last_.voxel = double(voxel);
+  last_.count = voids.size();
+  last_.total = cavityVolume;
+  std::ostringstream csv;
+  csv << "cavity,volume,centroidX,centroidY,centroidZ,minX,minY,minZ,maxX,maxY,maxZ\n";
+  for (std::size_t g = 0; g < voids.size(); ++g) {
+    const EnclosedVoid& v = voids[g];
+    csv << g + 1 << ',' << number(v.volume, 10);
+    for (const Vector* x : {&v.centroid, &v.lower, &v.upper}) {
+      csv << ',' << number((*x).x(), 8) << ',' << number((*x).y(), 8) << ',' << number((*x).z(), 8);
+    }
+    csv << '\n';
+  }
+  last_.cavities = csv.str();
+  if (!voids.empty()) {
+    last_.largest = voids[0].volume;
+    last_.largestAt = voids[0].centroid;
+  }
+  // the voxels of the latest time for ParaView (the folder is this time's; an earlier time's
+  // image is replaced by the next)
+  const auto out = folder() / time.folder.name;
+  std::filesystem::create_directories(out);
+  vtkNew<vtkImageData> image;
+  const auto [nx, ny, nz] = occupancy.counts();
+  image->SetDimensions(nx, ny, nz);
+  image->SetOrigin(double(occupancy.origin().x()), double(occupancy.origin().y()),
+                   double(occupancy.origin().z()));
+  image->SetSpacing(double(voxel), double(voxel), double(voxel));
+  for (const auto& [channel, label] : {std::pair{0, "metal"}, std::pair{1, "molds"}}) {
+    vtkNew<vtkFloatArray> array;
+    array->SetName(label);
+    array->SetNumberOfValues(vtkIdType(occupancy.size()));
+    for (std::size_t v = 0; v < occupancy.size(); ++v) {
+      array->SetValue(vtkIdType(v), occupancy.channel(channel)[v]);
+    }
+    image->GetPointData()->AddArray(array);
+  }
+  vtkNew<vtkXMLImageDataWriter> writer;
+  const auto file = out / "occupancy.vti";
+  writer->SetFileName((file.string() + ".tmp").c_str());
+  writer->SetInputData(image);
+  writer->SetDataModeToAppended();
+  writer->SetCompressorTypeToZLib();
+  if (writer->Write() != 1) throw Error("could not write " + file.string());
+  std::filesystem::rename(file.string() + ".tmp", file);
+  // keep only the latest time's image
+  if (!previousImageFolder_.empty() && previousImageFolder_ != out) {
+    std::filesystem::remove(previousImageFolder_ / "occupancy.vti");
+    std::error_code ignored;
+    std::filesystem::remove(previousImageFolder_, ignored);  // if empty
+  }
+  previousImageFolder_ = out;
+}
+
+ReportSection ShrinkageCavities::finish() {
+  ReportSection section;
+  if (last_.timeName.empty()) {
+    section.markdown = "No selected time holds cloud " + cloud_ + ".\n";
+    return section;
+  }
+  const auto out = folder();
+  writeFileAtomically(out / "cavities.csv", rows_);
+  writeFileAtomically(out / last_.timeName / "cavities.csv", last_.cavities);
+  info() << "    " << name_ << ": wrote " << (out / "cavities.csv").string() << " and "
+         << (out / last_.timeName / "occupancy.vti").string() << '\n';
+  const bool twoD = context_.dimension == 2;
+  const double toUnit = twoD ? 1e6 : 1e6;  // m^3 -> cm^3 (m^2 -> mm^2 in 2D)
+  const char* unit = twoD ? "mm^2" : "cm^3";
+  std::ostringstream text;
+  text << "At time " << last_.timeName << ": " << last_.count << " enclosed cavit"
+       << (last_.count == 1 ? "y" : "ies") << ", " << number(last_.total * toUnit, 4) << ' '
+       << unit;
+  if (last_.count > 0) {
+    text << "; the largest " << number(last_.largest * toUnit, 4) << ' ' << unit << " at ("
+         << number(last_.largestAt.x(), 4) << ' ' << number(last_.largestAt.y(), 4) << ' '
+         << number(last_.largestAt.z(), 4) << ") m";
+  }
+  text << ".\n\n- The mass balance of rho_s asks for " << number(last_.expected * toUnit, 4)
+       << ' ' << unit << " of shrinkage since the first time ("
+       << number(100 * last_.expected / firstBalance_, 3) << " % of the metal's volume);\n"
+       << "- the casting's envelope (cavities included) changed by "
+       << number((last_.envelope - firstEnvelope_) * toUnit, 4) << ' ' << unit
+       << " (a sink at the open surface shows here), the enclosed cavities hold "
+       << number(last_.total * toUnit, 4) << ' ' << unit << ";\n"
+       << "- the rest, " << number((last_.expected + (last_.envelope - firstEnvelope_) - last_.total) * toUnit, 4)
+       << ' ' << unit
+       << ", is contraction no particle shows (frozen metal keeps its place) and the voxels' "
+          "error.\n\nVoxels of " << number(last_.voxel, 3) << " m; void where metal and molds fill "
+       << "less than " << threshold_ << " (cavities.csv by time; " << last_.timeName
+       << "/cavities.csv each cavity; " << last_.timeName << "/occupancy.vti for ParaView).\n";
+  section.markdown = text.str();
+  return section;
+}
+
+}  // namespace sphcast
