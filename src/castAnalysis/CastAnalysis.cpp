@@ -3,11 +3,14 @@
 #include <algorithm>
 
 #include "castAnalysis/CloudSummaryAnalysis.h"
+#include "castAnalysis/HotSpots.h"
 #include "castAnalysis/ShrinkageCavities.h"
+#include "castAnalysis/Slice.h"
 #include "castAnalysis/SolidificationMaps.h"
 #include "castAnalysis/Thermocouples.h"
 #include "castAnalysis/TimeSeries.h"
 #include "core/dictionary/SourceLocation.h"
+#include "io/VtpCloud.h"
 
 namespace sphcast {
 
@@ -57,9 +60,37 @@ const Material& CastAnalysis::materialOf(const std::string& cloud,
   return found->second;
 }
 
+const ParticleCloud* CastAnalysis::cloudAt(const WrittenTime& time, const std::string& cloudName) {
+  if (const ParticleCloud* cloud = time.find(cloudName)) return cloud;
+  if (const auto found = constantClouds_.find(cloudName); found != constantClouds_.end()) {
+    return &found->second;
+  }
+  const auto file = context_.caseRoot / "constant" / "particles" / (cloudName + ".vtp");
+  if (!std::filesystem::exists(file)) return nullptr;
+  return &constantClouds_.emplace(cloudName, readCloudVtp(file, cloudName)).first->second;
+}
+
+std::vector<std::string> CastAnalysis::cloudsAt(const WrittenTime& time) const {
+  std::vector<std::string> names;
+  for (const ParticleCloud& cloud : time.clouds) names.push_back(cloud.name());
+  const auto folder = context_.caseRoot / "constant" / "particles";
+  if (std::filesystem::exists(folder)) {
+    for (const auto& entry : std::filesystem::directory_iterator(folder)) {
+      const std::string name = entry.path().stem().string();
+      if (entry.path().extension() == ".vtp" &&
+          std::find(names.begin(), names.end(), name) == names.end()) {
+        names.push_back(name);
+      }
+    }
+  }
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
 const std::vector<std::string>& castAnalysisTypes() {
   static const std::vector<std::string> types{"cloudSummary", "timeSeries", "thermocouples",
-                                              "solidificationMaps", "shrinkageCavities"};
+                                              "solidificationMaps", "shrinkageCavities", "slice",
+                                              "hotSpots"};
   return types;
 }
 
@@ -82,8 +113,12 @@ std::vector<std::unique_ptr<CastAnalysis>> readCastAnalyses(const Dictionary& di
       analyses.push_back(std::make_unique<Thermocouples>(name, entry, context));
     } else if (type == "solidificationMaps") {
       analyses.push_back(std::make_unique<SolidificationMaps>(name, entry, context));
-    } else {
+    } else if (type == "shrinkageCavities") {
       analyses.push_back(std::make_unique<ShrinkageCavities>(name, entry, context));
+    } else if (type == "slice") {
+      analyses.push_back(std::make_unique<Slice>(name, entry, context));
+    } else {
+      analyses.push_back(std::make_unique<HotSpots>(name, entry, context));
     }
   }
   return analyses;

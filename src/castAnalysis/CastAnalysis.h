@@ -75,11 +75,19 @@ class CastAnalysis {
   std::string readCloud(const std::string& key = "cloud") const;
   // The material of a cloud, or an error at `key` naming what needs it.
   const Material& materialOf(const std::string& cloud, const std::string& neededBy) const;
+  // A cloud of the time, or else of constant/particles (a mold that the solver does not write
+  // into the time folders; read once); nullptr when neither has it.
+  const ParticleCloud* cloudAt(const WrittenTime& time, const std::string& cloudName);
+  // The clouds of the time and those of constant/particles that it lacks, sorted.
+  std::vector<std::string> cloudsAt(const WrittenTime& time) const;
 
   std::string name_;
   std::string type_;
   Dictionary dict_;
   const AnalysisContext& context_;
+
+ private:
+  std::map<std::string, ParticleCloud> constantClouds_;
 };
 
 // The analyses of castPostProcessDict in file order. An entry that is not a sub-dictionary, an

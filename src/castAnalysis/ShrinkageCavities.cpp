@@ -76,21 +76,15 @@ ShrinkageCavities::ShrinkageCavities(const std::string& name, const Dictionary& 
   }
 }
 
-const ParticleCloud& ShrinkageCavities::mold(const WrittenTime& time, const std::string& name) {
-  if (const ParticleCloud* cloud = time.find(name)) return *cloud;
-  auto found = constantMolds_.find(name);
-  if (found == constantMolds_.end()) {
-    const auto file = context_.caseRoot / "constant" / "particles" / (name + ".vtp");
-    found = constantMolds_.emplace(name, readCloudVtp(file, name)).first;
-  }
-  return found->second;
-}
-
 void ShrinkageCavities::add(const WrittenTime& time) {
   const ParticleCloud* metal = time.find(cloud_);
   if (!metal || metal->size() == 0) return;
   std::vector<const ParticleCloud*> molds;
-  for (const auto& name : molds_) molds.push_back(&mold(time, name));
+  for (const auto& name : molds_) {
+    const ParticleCloud* mold = cloudAt(time, name);
+    if (!mold) throw Error("no mold cloud '" + name + "' at time " + time.folder.name);
+    molds.push_back(mold);
+  }
   Vector lower = metal->positions().front(), upper = lower;
   for (const Vector& x : metal->positions()) {
     lower = lower.cwiseMin(x);

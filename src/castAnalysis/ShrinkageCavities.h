@@ -40,13 +40,10 @@ class ShrinkageCavities : public CastAnalysis {
   ReportSection finish() override;
 
  private:
-  const ParticleCloud& mold(const WrittenTime& time, const std::string& name);
-
   std::string cloud_;
   std::vector<std::string> molds_;
   Real voxelSize_ = 0;
   double threshold_ = 0.5;
-  std::map<std::string, ParticleCloud> constantMolds_;  // read once from constant/particles
   std::string rows_;
   double firstBalance_ = -1, firstEnvelope_ = -1;
   struct Last {

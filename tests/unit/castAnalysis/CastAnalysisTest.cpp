@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <fstream>
 #include <numeric>
 
 #include "castAnalysis/CastAnalysis.h"
@@ -262,6 +263,39 @@ TEST(TimeSeries, HeatBooksBalanceAcrossTheClouds) {
   }
   const std::string cloudRow = TimeSeries::csvRow(3, metal);
   EXPECT_EQ(cloudRow.rfind("3,8,800,835,870,0.25,6,", 0), 0u) << cloudRow;
+}
+
+// A liquid pool that splits: at t = 1 one region, at t = 2 a pocket of 2 x 2 x 2 particles cut
+// off from it (a solid wall of particles between), at t = 3 the pocket frozen. One hot spot,
+// closed between 1 and 2 s, of 8 dx^3 at the pocket's centre, last seen at 2 s.
+TEST(HotSpots, APocketCutOffFromTheFeedingPathIsFollowedUntilItFreezes) {
+  MapsCase maps("");
+  auto analyses = maps.read("spots { type hotSpots; cloud metal; }");
+  const Real dx = 0.01;
+  ParticleCloud block = latticeBlock(8, dx, 3);
+  block.attributes()["spacing"] = dx;
+  auto& fs = block.addScalarField("solidFraction");
+  const auto at = [&](int t) {
+    for (std::size_t i = 0; i < block.size(); ++i) {
+      const Vector x = block.positions()[i] / dx;  // (k + 0.5)
+      const bool pocket = x.x() > 6 && x.y() > 6 && x.z() > 6;  // the corner 2 x 2 x 2
+      const bool wall = !pocket && x.x() > 5 && x.y() > 5 && x.z() > 5;  // one layer round it
+      fs[i] = t == 1 ? 0 : (wall || (pocket && t == 3)) ? 1 : 0;
+    }
+    WrittenTime time;
+    time.folder = {double(t), std::to_string(t)};
+    time.clouds = {block};
+    return time;
+  };
+  for (int t = 1; t <= 3; ++t) analyses[0]->add(at(t));
+  const ReportSection section = analyses[0]->finish();
+  EXPECT_NE(section.markdown.find("1 isolated liquid region "), std::string::npos) << section.markdown;
+  std::ifstream list(maps.folder.root() / "postProcessing/spots/hotSpotList.csv");
+  std::string header, row;
+  std::getline(list, header);
+  std::getline(list, row);
+  // closed after 1, by 2; 8 particles of 2400 dx^3 / 2400; centroid (7 7 7) dx; last seen 2
+  EXPECT_EQ(row, "1,1,2,8,8e-06,0.07,0.07,0.07,2") << row;
 }
 
 void expectError(MapsCase& maps, const std::string& text, const std::string& where,

@@ -1,0 +1,236 @@
+#include "castAnalysis/Slice.h"
+
+#include <Eigen/Geometry>
+#include <vtkImageData.h>
+#include <vtkNew.h>
+#include <vtkPNGWriter.h>
+#include <vtkPointData.h>
+#include <vtkUnsignedCharArray.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+
+#include "core/Error.h"
+#include "core/Log.h"
+#include "io/VtpCloud.h"
+
+namespace sphcast {
+
+namespace {
+
+// blue - cyan - green - yellow - red over [0, 1]
+std::array<unsigned char, 3> colourOf(double f) {
+  static const double stops[5][3] = {
+      {0, 0, 255}, {0, 255, 255}, {0, 200, 0}, {255, 255, 0}, {255, 0, 0}};
+  f = std::clamp(f, 0.0, 1.0) * 4;
+  const int k = std::min(3, int(f));
+  const double w = f - k;
+  std::array<unsigned char, 3> c{};
+  for (int i = 0; i < 3; ++i) {
+    c[i] = static_cast<unsigned char>(std::lround((1 - w) * stops[k][i] + w * stops[k + 1][i]));
+  }
+  return c;
+}
+
+std::string number(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.4g", value);
+  return text;
+}
+
+}  // namespace
+
+Slice::Slice(const std::string& name, const Dictionary& dict, const AnalysisContext& context)
+    : CastAnalysis(name, dict, context,
+                   {"point", "normal", "thickness", "field", "range", "clouds", "times", "pixel"}) {
+  point_ = dict.get<Vector>("point");
+  normal_ = dict.get<Vector>("normal");
+  if (!(normal_.norm() > 0)) {
+    throw DictionaryError(dict.location("normal"), "'normal' of " + dict.name() + " is zero");
+  }
+  normal_.normalize();
+  thickness_ = dict.get<Real>("thickness");
+  if (!(thickness_ > 0)) {
+    throw DictionaryError(dict.location("thickness"),
+                          "'thickness' must be positive in " + dict.name());
+  }
+  field_ = dict.get<std::string>("field");
+  if (dict.found("range")) {
+    const auto range = dict.get<std::vector<double>>("range");
+    if (range.size() != 2 || !(range[0] < range[1])) {
+      throw DictionaryError(dict.location("range"),
+                            "'range' of " + dict.name() + " must be (low high), low < high");
+    }
+    fixedRange_ = true;
+    low_ = range[0];
+    high_ = range[1];
+  }
+  clouds_ = dict.getOrDefault<std::vector<std::string>>("clouds", {});  // empty: every cloud
+  allTimes_ = dict.getChoiceOrDefault("times", {"latest", "all"}, "latest") == "all";
+  pixel_ = dict.getOrDefault<Real>("pixel", 0);
+  // up: +z projected into the plane (+y when the plane is normal to z)
+  Vector up = Vector::UnitZ() - normal_.dot(Vector::UnitZ()) * normal_;
+  if (up.norm() < 1e-6) up = Vector::UnitY() - normal_.dot(Vector::UnitY()) * normal_;
+  up_ = up.normalized();
+  right_ = up_.cross(normal_);  // seen along -normal: right x up = normal
+  if (context.dimension == 2) {  // a 2D case is drawn in its own plane
+    normal_ = Vector::UnitZ();
+    up_ = Vector::UnitY();
+    right_ = Vector::UnitX();
+  }
+}
+
+void Slice::add(const WrittenTime& time) {
+  if (allTimes_) {
+    draw(time);
+  } else {
+    latest_ = time;  // drawn in finish()
+  }
+}
+
+void Slice::draw(const WrittenTime& time) {
+  struct Dot {
+    Real u, v, depth, radius;
+    std::array<unsigned char, 3> colour;
+  };
+  std::vector<Dot> dots;
+  const auto out = folder() / time.folder.name;
+  std::filesystem::create_directories(out);
+  double low = std::numeric_limits<double>::max(), high = -low;
+  Real finest = std::numeric_limits<Real>::max();
+  std::vector<std::pair<const ParticleCloud*, std::vector<std::size_t>>> sliced;
+  for (const std::string& name : clouds_.empty() ? cloudsAt(time) : clouds_) {
+    const ParticleCloud* cloud = cloudAt(time, name);
+    if (!cloud) continue;
+    std::vector<std::size_t> inside;
+    for (std::size_t i = 0; i < cloud->size(); ++i) {
+      if (std::abs((cloud->positions()[i] - point_).dot(normal_)) <= thickness_ / 2 ||
+          context_.dimension == 2) {
+        inside.push_back(i);
+      }
+    }
+    if (cloud->hasScalarField(field_) && !fixedRange_) {
+      for (const std::size_t i : inside) {
+        low = std::min(low, double(cloud->scalarField(field_)[i]));
+        high = std::max(high, double(cloud->scalarField(field_)[i]));
+      }
+    }
+    const auto spacing = cloud->attributes().find("spacing");
+    if (spacing != cloud->attributes().end()) finest = std::min(finest, Real(spacing->second));
+    // the sliced particles with all their fields
+    ParticleCloud part(cloud->name());
+    part.resize(inside.size());
+    part.attributes() = cloud->attributes();
+    for (std::size_t k = 0; k < inside.size(); ++k) part.positions()[k] = cloud->positions()[inside[k]];
+    for (const auto& [field, values] : cloud->scalarFields()) {
+      auto& copy = part.addScalarField(field);
+      for (std::size_t k = 0; k < inside.size(); ++k) copy[k] = values[inside[k]];
+    }
+    for (const auto& [field, values] : cloud->vectorFields()) {
+      auto& copy = part.addVectorField(field);
+      for (std::size_t k = 0; k < inside.size(); ++k) copy[k] = values[inside[k]];
+    }
+    for (const auto& [field, values] : cloud->idFields()) {
+      auto& copy = part.addIdField(field);
+      for (std::size_t k = 0; k < inside.size(); ++k) copy[k] = values[inside[k]];
+    }
+    writeCloudVtp(part, out / (name + ".vtp"));
+    sliced.emplace_back(cloud, std::move(inside));
+  }
+  if (fixedRange_) {
+    low = low_;
+    high = high_;
+  }
+  if (!(high > low)) high = low + 1;
+  if (finest == std::numeric_limits<Real>::max()) finest = context_.supportRadius / 3;
+  const Real pixel = pixel_ > 0 ? pixel_ : finest / 10;
+  for (const auto& [cloud, inside] : sliced) {
+    const auto spacing = cloud->attributes().find("spacing");
+    const Real radius = Real(0.45) * (spacing != cloud->attributes().end() ? Real(spacing->second)
+                                                                           : finest);
+    const bool coloured = cloud->hasScalarField(field_);
+    for (const std::size_t i : inside) {
+      const Vector d = cloud->positions()[i] - point_;
+      const auto colour = coloured ? colourOf((double(cloud->scalarField(field_)[i]) - low) /
+                                             (high - low))
+                                   : std::array<unsigned char, 3>{150, 150, 150};
+      dots.push_back({d.dot(right_), d.dot(up_), std::abs(d.dot(normal_)), radius, colour});
+    }
+  }
+  if (dots.empty()) {
+    warning("slice " + name_ + ": no particle within " + number(thickness_ / 2) +
+            " m of the plane at time " + time.folder.name);
+    return;
+  }
+  Real uMin = dots[0].u, uMax = uMin, vMin = dots[0].v, vMax = vMin;
+  for (const Dot& dot : dots) {
+    uMin = std::min(uMin, dot.u - dot.radius);
+    uMax = std::max(uMax, dot.u + dot.radius);
+    vMin = std::min(vMin, dot.v - dot.radius);
+    vMax = std::max(vMax, dot.v + dot.radius);
+  }
+  const int bar = 16, margin = 4;
+  const int width = int(std::ceil((uMax - uMin) / pixel)) + 2 * margin;
+  const int height = int(std::ceil((vMax - vMin) / pixel)) + 2 * margin + bar + margin;
+  if (double(width) * height > 6e7) {
+    throw Error("slice " + name_ + ": a picture of " + std::to_string(width) + " x " +
+                std::to_string(height) + " pixels; give a larger 'pixel'");
+  }
+  vtkNew<vtkImageData> image;
+  image->SetDimensions(width, height, 1);
+  image->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
+  auto* pixels = static_cast<unsigned char*>(image->GetScalarPointer());
+  std::fill(pixels, pixels + std::size_t(width) * height * 3, 255);
+  const auto put = [&](int x, int y, const std::array<unsigned char, 3>& c) {
+    unsigned char* p = pixels + (std::size_t(y) * width + x) * 3;
+    p[0] = c[0];
+    p[1] = c[1];
+    p[2] = c[2];
+  };
+  // farthest from the plane first: the nearest particles end on top
+  std::sort(dots.begin(), dots.end(), [](const Dot& a, const Dot& b) { return a.depth > b.depth; });
+  const int base = bar + 2 * margin;  // rows below the picture: the colour bar
+  for (const Dot& dot : dots) {
+    const Real cx = (dot.u - uMin) / pixel + margin, cy = (dot.v - vMin) / pixel + base;
+    const Real r = dot.radius / pixel;
+    for (int y = std::max(0, int(cy - r)); y <= std::min(height - 1, int(cy + r) + 1); ++y) {
+      for (int x = std::max(0, int(cx - r)); x <= std::min(width - 1, int(cx + r) + 1); ++x) {
+        const Real dx = x + Real(0.5) - cx, dy = y + Real(0.5) - cy;
+        if (dx * dx + dy * dy <= r * r) put(x, y, dot.colour);
+      }
+    }
+  }
+  for (int x = margin; x < width - margin; ++x) {
+    const auto c = colourOf(double(x - margin) / std::max(1, width - 2 * margin - 1));
+    for (int y = margin; y < margin + bar; ++y) put(x, y, c);
+  }
+  vtkNew<vtkPNGWriter> writer;
+  const auto png = out / (field_ + ".png");
+  writer->SetFileName(png.string().c_str());
+  writer->SetInputData(image);
+  writer->Write();
+  if (writer->GetErrorCode() != 0) throw Error("could not write " + png.string());
+  drawn_.push_back(name_ + "/" + time.folder.name + "/" + field_ + ".png");
+  captions_.push_back("time " + time.folder.name + ": " + field_ + " from " + number(low) +
+                      " (blue) to " + number(high) + " (red), grey: clouds without it; " +
+                      std::to_string(width) + " x " + std::to_string(height) + " pixels of " +
+                      number(pixel * 1e3) + " mm");
+  info() << "    " << name_ << ": wrote " << png.string() << '\n';
+}
+
+ReportSection Slice::finish() {
+  if (!allTimes_ && !latest_.folder.name.empty()) draw(latest_);
+  ReportSection section;
+  section.markdown = "A slice " + number(thickness_ * 1e3) + " mm thick through (" +
+                     number(point_.x()) + " " + number(point_.y()) + " " + number(point_.z()) +
+                     ") normal to (" + number(normal_.x()) + " " + number(normal_.y()) + " " +
+                     number(normal_.z()) + "):\n";
+  for (const std::string& caption : captions_) section.markdown += "- " + caption + "\n";
+  section.images = drawn_;
+  return section;
+}
+
+}  // namespace sphcast

@@ -1,0 +1,55 @@
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "castAnalysis/CastAnalysis.h"
+
+namespace sphcast {
+
+// type slice: the particles within half a thickness of a plane, as the paper's 9 mm slice
+// through the cone's axis (Figs. 13, 14), for ParaView and as a picture for the report.
+//
+//   section
+//   {
+//       type        slice;
+//       point       (0 0 0);  normal (0 1 0);   // the plane
+//       thickness   0.009;                       // m
+//       field       solidFraction;               // colours the clouds that have it (others grey)
+//       range       (0 1);                       // optional: the field's range at that time
+//       clouds      (metal mold);                // optional: every cloud of the time and of
+//                                                // constant/particles
+//       times       latest;                      // optional: latest | all (the selected times)
+//       pixel       0.0003;                      // optional, m: a tenth of the finest spacing
+//   }
+//
+// Writes postProcessing/<name>/<time>/<cloud>.vtp (the sliced particles with all their fields)
+// and <time>/<field>.png: each particle a disc of 0.45 of its spacing, nearest the plane on top,
+// seen along -normal with "up" the plane's direction closest to +z (+y for a plane normal to z),
+// coloured blue (low) - cyan - green - yellow - red (high), with a colour bar along the bottom.
+// Drawn pixel by pixel into a VTK image and written with VTK's PNG writer: no rendering, no
+// display, no gnuplot needed.
+class Slice : public CastAnalysis {
+ public:
+  Slice(const std::string& name, const Dictionary& dict, const AnalysisContext& context);
+
+  void add(const WrittenTime& time) override;
+  ReportSection finish() override;
+
+ private:
+  void draw(const WrittenTime& time);
+
+  Vector point_, normal_, right_, up_;
+  Real thickness_ = 0, pixel_ = 0;
+  std::string field_;
+  bool fixedRange_ = false;
+  double low_ = 0, high_ = 1;
+  std::vector<std::string> clouds_;
+  bool allTimes_ = false;
+  std::vector<std::string> drawn_;  // PNGs, relative to postProcessing/
+  std::vector<std::string> captions_;
+  const WrittenTime* pending_ = nullptr;
+  WrittenTime latest_;
+};
+
+}  // namespace sphcast
