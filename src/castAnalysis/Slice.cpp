@@ -228,8 +228,14 @@ ReportSection Slice::finish() {
                      number(point_.x()) + " " + number(point_.y()) + " " + number(point_.z()) +
                      ") normal to (" + number(normal_.x()) + " " + number(normal_.y()) + " " +
                      number(normal_.z()) + "):\n";
-  for (const std::string& caption : captions_) section.markdown += "- " + caption + "\n";
-  section.images = drawn_;
+  // one picture in the one-page report: the latest; the others are listed by folder
+  if (!captions_.empty()) section.markdown += "- " + captions_.back() + "\n";
+  if (drawn_.size() > 1) {
+    section.markdown += "- and " + std::to_string(drawn_.size() - 1) + " earlier time" +
+                        (drawn_.size() > 2 ? "s" : "") + " in " + name_ + "/<time>/" + field_ +
+                        ".png\n";
+  }
+  if (!drawn_.empty()) section.images = {drawn_.back()};
   return section;
 }
 

@@ -28,7 +28,7 @@ namespace sphcast {
 // seen along -normal with "up" the plane's direction closest to +z (+y for a plane normal to z),
 // coloured blue (low) - cyan - green - yellow - red (high), with a colour bar along the bottom.
 // Drawn pixel by pixel into a VTK image and written with VTK's PNG writer: no rendering, no
-// display, no gnuplot needed.
+// display, no gnuplot needed. The report shows the latest time's picture.
 class Slice : public CastAnalysis {
  public:
   Slice(const std::string& name, const Dictionary& dict, const AnalysisContext& context);
