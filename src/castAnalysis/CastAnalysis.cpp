@@ -53,8 +53,8 @@ const Material& CastAnalysis::materialOf(const std::string& cloud,
   const auto found = context_.materials.find(cloud);
   if (found == context_.materials.end()) {
     throw DictionaryError(dict_.location("cloud"),
-                          "cloud '" + cloud + "' has no material, which " + neededBy +
-                              " of " + dict_.name() +
+                          "cloud '" + cloud + "' has no material, which " + neededBy + " of " +
+                              dict_.name() +
                               " needs: it must be a heatTransfer cloud of constant/physicsModels");
   }
   return found->second;
@@ -88,9 +88,9 @@ std::vector<std::string> CastAnalysis::cloudsAt(const WrittenTime& time) const {
 }
 
 const std::vector<std::string>& castAnalysisTypes() {
-  static const std::vector<std::string> types{"cloudSummary", "timeSeries", "thermocouples",
-                                              "solidificationMaps", "shrinkageCavities", "slice",
-                                              "hotSpots"};
+  static const std::vector<std::string> types{
+      "cloudSummary",      "timeSeries", "thermocouples", "solidificationMaps",
+      "shrinkageCavities", "slice",      "hotSpots"};
   return types;
 }
 

@@ -36,8 +36,8 @@ struct WrittenTime {
 // What an analysis may know of the case besides its own entry.
 struct AnalysisContext {
   std::filesystem::path caseRoot;
-  std::vector<TimeFolder> times;  // selected, ascending
-  bool allTimes = true;           // false under -time / -latestTime
+  std::vector<TimeFolder> times;    // selected, ascending
+  bool allTimes = true;             // false under -time / -latestTime
   std::vector<std::string> clouds;  // the clouds of the first selected time
   Real supportRadius = 0;           // h of system/sphSchemes (0 when the case has none)
   int dimension = 3;

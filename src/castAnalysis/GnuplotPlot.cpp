@@ -65,17 +65,17 @@ bool drawPlot(const Plot& plot, const std::filesystem::path& png) {
   if (!gnuplotFound()) {
     static bool told = false;
     if (!told) {
-      warning("gnuplot is not on the PATH: the plots' scripts (.gp) are written, not drawn "
-              "(apt-get install gnuplot-nox)");
+      warning(
+          "gnuplot is not on the PATH: the plots' scripts (.gp) are written, not drawn "
+          "(apt-get install gnuplot-nox)");
       told = true;
     }
     return false;
   }
   std::filesystem::remove(png);  // a picture of an earlier run must not pass for this one
   // gnuplot runs in the plot's folder, so the script names files without their paths
-  const std::string command = "cd " + shellQuoted(png.parent_path().string()) +
-                              " && gnuplot " + shellQuoted(scriptFile.filename().string()) +
-                              " > /dev/null 2>&1";
+  const std::string command = "cd " + shellQuoted(png.parent_path().string()) + " && gnuplot " +
+                              shellQuoted(scriptFile.filename().string()) + " > /dev/null 2>&1";
   if (std::system(command.c_str()) != 0 || !std::filesystem::exists(png)) {
     warning("gnuplot could not draw " + png.string() + " (run " + scriptFile.string() +
             " by hand to see why)");

@@ -143,10 +143,10 @@ ReportSection HotSpots::finish() {
   list << "hotSpot,closedAfter,closedBy,particles,volume,centroidX,centroidY,centroidZ,lastSeen\n";
   for (std::size_t s = 0; s < spots_.size(); ++s) {
     const Spot& spot = spots_[s];
-    list << s + 1 << ',' << number(spot.closedAfter, 10) << ',' << number(spot.closedBy, 10)
-         << ',' << spot.particles << ',' << number(spot.volume, 10) << ','
-         << number(spot.centroid.x(), 8) << ',' << number(spot.centroid.y(), 8) << ','
-         << number(spot.centroid.z(), 8) << ',' << number(spot.lastSeen, 10) << '\n';
+    list << s + 1 << ',' << number(spot.closedAfter, 10) << ',' << number(spot.closedBy, 10) << ','
+         << spot.particles << ',' << number(spot.volume, 10) << ',' << number(spot.centroid.x(), 8)
+         << ',' << number(spot.centroid.y(), 8) << ',' << number(spot.centroid.z(), 8) << ','
+         << number(spot.lastSeen, 10) << '\n';
   }
   writeFileAtomically(out / "hotSpotList.csv", list.str());
   info() << "    " << name_ << ": wrote " << (out / "hotSpots.csv").string() << " and "
@@ -158,16 +158,18 @@ ReportSection HotSpots::finish() {
        << " (below f_s " << feeding_ << ", cut off from the largest region) seen at the "
        << "written times.\n";
   if (!spots_.empty()) {
-    const auto worst = std::max_element(spots_.begin(), spots_.end(),
-                                        [](const Spot& a, const Spot& b) { return a.volume < b.volume; });
+    const auto worst =
+        std::max_element(spots_.begin(), spots_.end(),
+                         [](const Spot& a, const Spot& b) { return a.volume < b.volume; });
     text << "- The largest: " << number(worst->volume * unit, 4) << ' ' << unitName << " ("
          << worst->particles << " particles) at " << point(worst->centroid) << ", cut off between "
          << number(worst->closedAfter, 5) << " and " << number(worst->closedBy, 5)
          << " s, last seen at " << number(worst->lastSeen, 5) << " s.\n";
   }
   if (lastFeedingTime_ >= 0) {
-    text << "- Last feeding metal seen at " << number(lastFeedingTime_, 5) << " s: "
-         << lastFeedingParticles_ << " particles around " << point(lastFeedingCentroid_) << ".\n";
+    text << "- Last feeding metal seen at " << number(lastFeedingTime_, 5)
+         << " s: " << lastFeedingParticles_ << " particles around " << point(lastFeedingCentroid_)
+         << ".\n";
   }
   ReportSection section;
   section.markdown = text.str();

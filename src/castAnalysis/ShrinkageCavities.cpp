@@ -56,23 +56,24 @@ ShrinkageCavities::ShrinkageCavities(const std::string& name, const Dictionary& 
     const auto file = context.caseRoot / "constant" / "particles" / (mold + ".vtp");
     if (!inTimes && !std::filesystem::exists(file)) {
       throw DictionaryError(dict.found("molds") ? dict.location("molds") : dict.location(),
-                            "no mold cloud '" + mold + "' in the time folders or " +
-                                file.string() + ", for " + dict.name());
+                            "no mold cloud '" + mold + "' in the time folders or " + file.string() +
+                                ", for " + dict.name());
     }
   }
   voxelSize_ = dict.getOrDefault<Real>("voxelSize", 0);
   threshold_ = dict.getOrDefault<double>("threshold", 0.5);
   if (dict.found("voxelSize") && !(voxelSize_ > 0)) {
-    throw DictionaryError(dict.location("voxelSize"), "'voxelSize' must be positive in " +
-                                                          dict.name());
+    throw DictionaryError(dict.location("voxelSize"),
+                          "'voxelSize' must be positive in " + dict.name());
   }
   if (!(threshold_ > 0 && threshold_ < 1)) {
     throw DictionaryError(dict.location("threshold"),
                           "'threshold' must lie in (0, 1) in " + dict.name());
   }
   if (!(context.supportRadius > 0)) {
-    throw DictionaryError(dict.location(), dict.name() + " needs h (supportRadius of "
-                                                         "system/sphSchemes) for the voxels' fill");
+    throw DictionaryError(dict.location(), dict.name() +
+                                               " needs h (supportRadius of "
+                                               "system/sphSchemes) for the voxels' fill");
   }
 }
 
@@ -142,8 +143,9 @@ void ShrinkageCavities::add(const WrittenTime& time) {
   }
   const double expected = firstBalance_ - balance;
   if (rows_.empty()) {
-    rows_ = "time,cavities,cavityVolume,largestCavity,envelopeVolume,envelopeChange,"
-            "massBalanceShrinkage\n";
+    rows_ =
+        "time,cavities,cavityVolume,largestCavity,envelopeVolume,envelopeChange,"
+        "massBalanceShrinkage\n";
   }
   rows_ += number(time.folder.value, 12) + "," + std::to_string(voids.size()) + "," +
            number(cavityVolume, 10) + "," + number(voids.empty() ? 0.0 : voids[0].volume, 10) +
@@ -233,17 +235,19 @@ ReportSection ShrinkageCavities::finish() {
          << number(last_.largestAt.x(), 4) << ' ' << number(last_.largestAt.y(), 4) << ' '
          << number(last_.largestAt.z(), 4) << ") m";
   }
-  text << ".\n\n- The mass balance of rho_s asks for " << number(last_.expected * toUnit, 4)
-       << ' ' << unit << " of shrinkage since the first time ("
+  text << ".\n\n- The mass balance of rho_s asks for " << number(last_.expected * toUnit, 4) << ' '
+       << unit << " of shrinkage since the first time ("
        << number(100 * last_.expected / firstBalance_, 3) << " % of the metal's volume);\n"
        << "- the casting's envelope (cavities included) changed by "
        << number((last_.envelope - firstEnvelope_) * toUnit, 4) << ' ' << unit
        << " (a sink at the open surface shows here), the enclosed cavities hold "
        << number(last_.total * toUnit, 4) << ' ' << unit << ";\n"
-       << "- the rest, " << number((last_.expected + (last_.envelope - firstEnvelope_) - last_.total) * toUnit, 4)
+       << "- the rest, "
+       << number((last_.expected + (last_.envelope - firstEnvelope_) - last_.total) * toUnit, 4)
        << ' ' << unit
        << ", is contraction no particle shows (frozen metal keeps its place) and the voxels' "
-          "error.\n\nVoxels of " << number(last_.voxel, 3) << " m; void where metal and molds fill "
+          "error.\n\nVoxels of "
+       << number(last_.voxel, 3) << " m; void where metal and molds fill "
        << "less than " << threshold_ << " (cavities.csv by time; " << last_.timeName
        << "/cavities.csv each cavity; " << last_.timeName << "/occupancy.vti for ParaView).\n";
   section.markdown = text.str();

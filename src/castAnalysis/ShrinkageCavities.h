@@ -15,7 +15,8 @@ namespace sphcast {
 //       type        shrinkageCavities;
 //       cloud       metal;
 //       molds       (mold);          // optional: the clouds that bound the casting (of the time
-//                                    // folder, or constant/particles); every other cloud by default
+//                                    // folder, or constant/particles); every other cloud by
+//                                    default
 //       voxelSize   0.0015;          // optional, m: half the metal's spacing by default
 //       threshold   0.5;             // optional: void where metal + molds fill less than this
 //   }

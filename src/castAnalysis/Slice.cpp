@@ -1,11 +1,11 @@
 #include "castAnalysis/Slice.h"
 
-#include <Eigen/Geometry>
 #include <vtkImageData.h>
 #include <vtkNew.h>
 #include <vtkPNGWriter.h>
 #include <vtkPointData.h>
 #include <vtkUnsignedCharArray.h>
+#include <Eigen/Geometry>
 
 #include <algorithm>
 #include <array>
@@ -75,7 +75,7 @@ Slice::Slice(const std::string& name, const Dictionary& dict, const AnalysisCont
   Vector up = Vector::UnitZ() - normal_.dot(Vector::UnitZ()) * normal_;
   if (up.norm() < 1e-6) up = Vector::UnitY() - normal_.dot(Vector::UnitY()) * normal_;
   up_ = up.normalized();
-  right_ = up_.cross(normal_);  // seen along -normal: right x up = normal
+  right_ = up_.cross(normal_);   // seen along -normal: right x up = normal
   if (context.dimension == 2) {  // a 2D case is drawn in its own plane
     normal_ = Vector::UnitZ();
     up_ = Vector::UnitY();
@@ -124,7 +124,8 @@ void Slice::draw(const WrittenTime& time) {
     ParticleCloud part(cloud->name());
     part.resize(inside.size());
     part.attributes() = cloud->attributes();
-    for (std::size_t k = 0; k < inside.size(); ++k) part.positions()[k] = cloud->positions()[inside[k]];
+    for (std::size_t k = 0; k < inside.size(); ++k)
+      part.positions()[k] = cloud->positions()[inside[k]];
     for (const auto& [field, values] : cloud->scalarFields()) {
       auto& copy = part.addScalarField(field);
       for (std::size_t k = 0; k < inside.size(); ++k) copy[k] = values[inside[k]];
@@ -149,14 +150,14 @@ void Slice::draw(const WrittenTime& time) {
   const Real pixel = pixel_ > 0 ? pixel_ : finest / 10;
   for (const auto& [cloud, inside] : sliced) {
     const auto spacing = cloud->attributes().find("spacing");
-    const Real radius = Real(0.45) * (spacing != cloud->attributes().end() ? Real(spacing->second)
-                                                                           : finest);
+    const Real radius =
+        Real(0.45) * (spacing != cloud->attributes().end() ? Real(spacing->second) : finest);
     const bool coloured = cloud->hasScalarField(field_);
     for (const std::size_t i : inside) {
       const Vector d = cloud->positions()[i] - point_;
-      const auto colour = coloured ? colourOf((double(cloud->scalarField(field_)[i]) - low) /
-                                             (high - low))
-                                   : std::array<unsigned char, 3>{150, 150, 150};
+      const auto colour =
+          coloured ? colourOf((double(cloud->scalarField(field_)[i]) - low) / (high - low))
+                   : std::array<unsigned char, 3>{150, 150, 150};
       dots.push_back({d.dot(right_), d.dot(up_), std::abs(d.dot(normal_)), radius, colour});
     }
   }

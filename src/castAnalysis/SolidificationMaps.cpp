@@ -46,8 +46,9 @@ SolidificationMaps::SolidificationMaps(const std::string& name, const Dictionary
     }
   }
   if (context.supportRadius <= 0) {
-    throw DictionaryError(dict.location(), dict.name() + " needs h (supportRadius of "
-                                                         "system/sphSchemes) for grad T");
+    throw DictionaryError(dict.location(), dict.name() +
+                                               " needs h (supportRadius of "
+                                               "system/sphSchemes) for grad T");
   }
 }
 
@@ -117,7 +118,8 @@ ReportSection SolidificationMaps::finish() {
     throw DictionaryError(dict_.location("cloud"),
                           "cloud '" + cloud_ + "' at time " + lastTimeName_ +
                               " has no solidification history (liquidusTime, criticalTime, "
-                              "coolingRate, solidusTime): " + dict_.name() +
+                              "coolingRate, solidusTime): " +
+                              dict_.name() +
                               " maps what the solver records; run with solidification { model "
                               "frozenSolid; } in constant/physicsModels");
   }
@@ -145,8 +147,8 @@ ReportSection SolidificationMaps::finish() {
   const auto& criticalTime = last_.scalarField("criticalTime");
   for (std::size_t i = 0; i < n; ++i) {
     solidification[i] = solidusTime[i];
-    freezing[i] = solidusTime[i] >= 0 && liquidusTime[i] >= 0 ? solidusTime[i] - liquidusTime[i]
-                                                               : Real(-1);
+    freezing[i] =
+        solidusTime[i] >= 0 && liquidusTime[i] >= 0 ? solidusTime[i] - liquidusTime[i] : Real(-1);
     rate[i] = criticalTime[i] >= 0 ? coolingRate[i] : Real(-1);
     const auto G = criticalGradient_.find(ids[i]);
     gradient[i] = G != criticalGradient_.end() ? Real(G->second) : Real(-1);
@@ -169,17 +171,16 @@ ReportSection SolidificationMaps::finish() {
     auto& dimensionless = maps.addScalarField("dimensionlessNiyama");
     for (std::size_t i = 0; i < n; ++i) {
       spacing[i] = freezing[i] > 0 ? Real(A * std::pow(double(freezing[i]), exponent)) : Real(-1);
-      dimensionless[i] =
-          spacing[i] > 0 && niyama[i] >= 0 && beta > 0
-              ? Real(double(spacing[i]) * double(gradient[i]) *
-                     std::sqrt(criticalPressureDrop_ /
-                               (muLiquid * beta * deltaTf * double(rate[i]))))
-              : Real(-1);
+      dimensionless[i] = spacing[i] > 0 && niyama[i] >= 0 && beta > 0
+                             ? Real(double(spacing[i]) * double(gradient[i]) *
+                                    std::sqrt(criticalPressureDrop_ /
+                                              (muLiquid * beta * deltaTf * double(rate[i]))))
+                             : Real(-1);
     }
     text << "Secondary dendrite arm spacing lambda_2 = " << A << " t_f^" << exponent
-         << " m; dimensionless Niyama with mu_l = " << number(muLiquid) << " Pa s, beta = "
-         << number(beta) << ", dT_f = " << number(deltaTf) << " K, dP_cr = "
-         << number(criticalPressureDrop_) << " Pa.\n\n";
+         << " m; dimensionless Niyama with mu_l = " << number(muLiquid)
+         << " Pa s, beta = " << number(beta) << ", dT_f = " << number(deltaTf)
+         << " K, dP_cr = " << number(criticalPressureDrop_) << " Pa.\n\n";
   } else {
     text << "No secondary arm spacing or dimensionless Niyama: material " << material.name
          << " gives no dendriteArmSpacing (A n).\n\n";
@@ -188,8 +189,7 @@ ReportSection SolidificationMaps::finish() {
   std::filesystem::create_directories(folderOfTime);
   writeCloudVtp(maps, folderOfTime / (cloud_ + ".vtp"));
   writePvd(folder() / (name_ + ".pvd"),
-           {PvdEntry{lastTime_, lastTimeName_, cloud_,
-                     lastTimeName_ + "/" + cloud_ + ".vtp"}});
+           {PvdEntry{lastTime_, lastTimeName_, cloud_, lastTimeName_ + "/" + cloud_ + ".vtp"}});
   info() << "    " << name_ << ": wrote " << (folderOfTime / (cloud_ + ".vtp")).string() << '\n';
 
   // the report: extremes and where

@@ -33,9 +33,11 @@ Thermocouples::Thermocouples(const std::string& name, const Dictionary& dict,
   liquidus_ = range.liquidus;
   solidus_ = range.solidus;
   if (dict.found("locations") == dict.found("probes")) {
-    throw DictionaryError(dict.location(), dict.name() + " needs either 'locations' { name "
-                                           "(x y z); ... } or 'probes' <function object>, not " +
-                                               std::string(dict.found("probes") ? "both" : "neither"));
+    throw DictionaryError(dict.location(),
+                          dict.name() +
+                              " needs either 'locations' { name "
+                              "(x y z); ... } or 'probes' <function object>, not " +
+                              std::string(dict.found("probes") ? "both" : "neither"));
   }
   if (dict.found("probes")) {
     probes_ = dict.get<std::string>("probes");
@@ -65,13 +67,14 @@ Thermocouples::Thermocouples(const std::string& name, const Dictionary& dict,
     locations_.push_back(locations.get<Vector>(key));
   }
   if (names_.empty()) {
-    throw DictionaryError(dict.location("locations"), "'locations' names no thermocouple in " +
-                                                          dict.name());
+    throw DictionaryError(dict.location("locations"),
+                          "'locations' names no thermocouple in " + dict.name());
   }
   supportRadius_ = dict.getOrDefault<Real>("supportRadius", context.supportRadius);
   if (!(supportRadius_ > 0)) {
-    throw DictionaryError(dict.location(), dict.name() + " needs 'supportRadius' (m): the case "
-                                                         "has no system/sphSchemes to take h from");
+    throw DictionaryError(dict.location(), dict.name() +
+                                               " needs 'supportRadius' (m): the case "
+                                               "has no system/sphSchemes to take h from");
   }
   temperatures_.resize(names_.size());
 }
@@ -88,8 +91,8 @@ void Thermocouples::add(const WrittenTime& time) {
       const Dictionary& locations = dict_.subDict("locations");
       std::ostringstream message;
       message << "thermocouple '" << names_[k] << "' of " << dict_.name()
-              << " lies outside the casting: no particle of cloud '" << cloud_ << "' within h = "
-              << supportRadius_ << " m of it at time " << time.folder.name;
+              << " lies outside the casting: no particle of cloud '" << cloud_
+              << "' within h = " << supportRadius_ << " m of it at time " << time.folder.name;
       throw DictionaryError(locations.location(names_[k]), message.str());
     }
     temperatures_[k].push_back(T);
@@ -122,11 +125,10 @@ ReportSection Thermocouples::finish() {
     const auto at = [&](const CoolingCurveBreak& b, bool temperature) {
       return !b.found ? nan : temperature ? b.temperature : b.time;
     };
-    breaks << names_[k] << ',' << number(liquidusTime, 10) << ',' << number(solidusTime, 10)
-           << ',' << number(solidusTime - liquidusTime, 10) << ','
-           << number(at(found.arrest, false), 10) << ',' << number(at(found.arrest, true), 10)
-           << ',' << number(at(found.end, false), 10) << ',' << number(at(found.end, true), 10)
-           << '\n';
+    breaks << names_[k] << ',' << number(liquidusTime, 10) << ',' << number(solidusTime, 10) << ','
+           << number(solidusTime - liquidusTime, 10) << ',' << number(at(found.arrest, false), 10)
+           << ',' << number(at(found.arrest, true), 10) << ',' << number(at(found.end, false), 10)
+           << ',' << number(at(found.end, true), 10) << '\n';
     report << "| " << names_[k] << " | " << number(liquidusTime, 4) << " / "
            << number(solidusTime, 4) << " | " << number(solidusTime - liquidusTime, 4) << " | "
            << number(at(found.arrest, true), 5) << " / " << number(at(found.end, true), 5)

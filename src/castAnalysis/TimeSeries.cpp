@@ -20,10 +20,22 @@ namespace {
 constexpr double nan = std::numeric_limits<double>::quiet_NaN();
 
 const std::vector<std::string>& columns() {
-  static const std::vector<std::string> names{
-      "time",   "particles", "Tmin",  "Tmean",  "Tmax", "solidFraction", "liquid",
-      "frozen", "flowing",   "solid", "densityDeviationMin", "densityDeviationMax",
-      "kineticEnergy", "internalEnergy", "internalEnergyChange", "heatLost"};
+  static const std::vector<std::string> names{"time",
+                                              "particles",
+                                              "Tmin",
+                                              "Tmean",
+                                              "Tmax",
+                                              "solidFraction",
+                                              "liquid",
+                                              "frozen",
+                                              "flowing",
+                                              "solid",
+                                              "densityDeviationMin",
+                                              "densityDeviationMax",
+                                              "kineticEnergy",
+                                              "internalEnergy",
+                                              "internalEnergyChange",
+                                              "heatLost"};
   return names;
 }
 
@@ -104,7 +116,8 @@ std::string TimeSeries::csvRow(double time, const ParticleCloud& cloud) {
     }
   }
   if (frozen) {
-    frozenCount = double(std::count_if(frozen->begin(), frozen->end(), [](Real f) { return f != 0; }));
+    frozenCount =
+        double(std::count_if(frozen->begin(), frozen->end(), [](Real f) { return f != 0; }));
     flowing = double(n) - frozenCount;
   }
   if (!U) flowing = 0;
@@ -137,8 +150,8 @@ std::string TimeSeries::csvRow(double time, const ParticleCloud& cloud) {
   std::snprintf(row, sizeof row,
                 "%.17g,%zu,%.10g,%.10g,%.10g,%.10g,%.0f,%.0f,%.0f,%.0f,%.10g,%.10g,%.10g,%.17g,"
                 "%.17g,%.17g\n",
-                time, n, tMin, tMean, tMax, solid, liquid, frozenCount, flowing, solidCount,
-                devMin, devMax, kinetic, internal, change, lost);
+                time, n, tMin, tMean, tMax, solid, liquid, frozenCount, flowing, solidCount, devMin,
+                devMax, kinetic, internal, change, lost);
   return row;
 }
 
@@ -171,7 +184,8 @@ std::string TimeSeries::energyBalanceRow(const WrittenTime& time) {
 
 void TimeSeries::add(const WrittenTime& time) {
   if (const std::string row = energyBalanceRow(time); !row.empty()) {
-    if (energy_.empty()) energy_ = "time,internalEnergyChange,heatLost,imbalance,relativeImbalance\n";
+    if (energy_.empty())
+      energy_ = "time,internalEnergyChange,heatLost,imbalance,relativeImbalance\n";
     energy_ += row;
     lastEnergyRow_ = row;
   }
@@ -220,7 +234,10 @@ ReportSection TimeSeries::finish() {
       {"temperature", "Temperature", "T (K)", {"Tmin", "Tmean", "Tmax"}},
       {"solidFraction", "Solid fraction (by mass)", "f_s", {"solidFraction"}},
       {"particles", "Particles", "count", {"liquid", "frozen", "flowing", "solid"}},
-      {"density", "Density deviation", "rho / rho_s - 1", {"densityDeviationMin", "densityDeviationMax"}},
+      {"density",
+       "Density deviation",
+       "rho / rho_s - 1",
+       {"densityDeviationMin", "densityDeviationMax"}},
       {"kineticEnergy", "Kinetic energy", "J", {"kineticEnergy"}},
       {"internalEnergy", "Change of internal energy", "J", {"internalEnergyChange"}}};
   ReportSection section;

@@ -17,10 +17,10 @@ namespace sphcast {
 // ("nan" where the cloud lacks the field), and PNG plots of them (<quantity>_<cloud>.png); and
 // the heat books of the case in energyBalance.csv (time, internalEnergyChange and heatLost summed
 // over the heat clouds, imbalance = their sum, relativeImbalance = that over the clouds' start
-// heat content), plotted in energyBalance.png. Under -time / -latestTime the rows of those times are replaced or added.
-// Written times only: a quantity that needs every step (the energy balance's round-off, the
-// largest speed) is the run's function objects' (energyBalance, fieldMinMax).
-// Keys: clouds (optional; every cloud of the case by default).
+// heat content), plotted in energyBalance.png. Under -time / -latestTime the rows of those times
+// are replaced or added. Written times only: a quantity that needs every step (the energy balance's
+// round-off, the largest speed) is the run's function objects' (energyBalance, fieldMinMax). Keys:
+// clouds (optional; every cloud of the case by default).
 class TimeSeries : public CastAnalysis {
  public:
   TimeSeries(const std::string& name, const Dictionary& dict, const AnalysisContext& context);

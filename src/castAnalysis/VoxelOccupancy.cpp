@@ -50,8 +50,9 @@ void VoxelOccupancy::add(const ParticleCloud& cloud, int channel) {
   } else {
     const auto spacing = cloud.attributes().find("spacing");
     if (spacing == cloud.attributes().end()) {
-      throw Error("cloud '" + cloud.name() + "' has no volume, mass and rho, or spacing: its "
-                                             "particles' volumes are unknown");
+      throw Error("cloud '" + cloud.name() +
+                  "' has no volume, mass and rho, or spacing: its "
+                  "particles' volumes are unknown");
     }
     const Real dx = Real(spacing->second);
     std::fill(volume.begin(), volume.end(), dimension_ == 2 ? dx * dx : dx * dx * dx);
@@ -120,8 +121,8 @@ std::vector<EnclosedVoid> enclosedVoids(const VoxelOccupancy& occupancy, double 
   for (std::size_t v = 0; v < n; ++v) {
     const int i = int(v % std::size_t(nx)), j = int((v / std::size_t(nx)) % std::size_t(ny)),
               k = int(v / (std::size_t(nx) * std::size_t(ny)));
-    const bool face = i == 0 || i == nx - 1 || j == 0 || j == ny - 1 ||
-                      (nz > 1 && (k == 0 || k == nz - 1));
+    const bool face =
+        i == 0 || i == nx - 1 || j == 0 || j == ny - 1 || (nz > 1 && (k == 0 || k == nz - 1));
     if (face && state[v] == 1) fill(v, 2);
   }
   std::vector<EnclosedVoid> voids;
@@ -135,8 +136,8 @@ std::vector<EnclosedVoid> enclosedVoids(const VoxelOccupancy& occupancy, double 
   std::vector<double> deficit(voids.size(), 0.0);
   // the filled voxels within h of each void (face steps: sqrt(3) h / voxel of them reach h in
   // every direction), each given to the void it was reached from first
-  const int reach = static_cast<int>(std::ceil(std::sqrt(3.0) * double(occupancy.supportRadius()) /
-                                               double(occupancy.voxel())));
+  const int reach = static_cast<int>(
+      std::ceil(std::sqrt(3.0) * double(occupancy.supportRadius()) / double(occupancy.voxel())));
   std::vector<std::uint32_t> owner(n, 0);
   std::vector<std::size_t> front, next;
   for (std::size_t v = 0; v < n; ++v) {

@@ -37,9 +37,9 @@ namespace sphcast {
 // A frozen particle whose f_s falls back below frozenSolidFraction (remelted by hotter melt)
 // flows again, with rho_s(T).
 //
-// Fields of the metal cloud: reads T and energyRate (where a heat model gives it); writes solidFraction, frozen (1 or 0),
-// restDensity and viscosity (all written with the cloud, so a restart continues bit for bit: a
-// frozen particle's rho_s is its history, not a function of T).
+// Fields of the metal cloud: reads T and energyRate (where a heat model gives it); writes
+// solidFraction, frozen (1 or 0), restDensity and viscosity (all written with the cloud, so a
+// restart continues bit for bit: a frozen particle's rho_s is its history, not a function of T).
 //
 // It also records, at every update, each particle's solidification history for castPostProcess's
 // maps (which need every heat step: a write every second would place a crossing only within a

@@ -123,14 +123,17 @@ TEST(ShrinkageCavities, PlantedVoidMeasuredWithinFivePercent) {
         const Vector& x = block.positions()[i];
         const bool inVoid = (x - centre).norm() < radius;
         // the channel: a square tube 3 dx wide from the void to x = 0
-        const bool inChannel = open && x.x() < centre.x() && std::abs(x.y() - centre.y()) < 1.6 * dx &&
+        const bool inChannel = open && x.x() < centre.x() &&
+                               std::abs(x.y() - centre.y()) < 1.6 * dx &&
                                (dimension == 2 || std::abs(x.z() - centre.z()) < 1.6 * dx);
         if (!inVoid && !inChannel) keep.push_back(i);
       }
-      const double planted = double(block.size() - keep.size()) * (dimension == 3 ? dx * dx * dx : dx * dx);
+      const double planted =
+          double(block.size() - keep.size()) * (dimension == 3 ? dx * dx * dx : dx * dx);
       ParticleCloud holed("metal");
       holed.resize(keep.size());
-      for (std::size_t k = 0; k < keep.size(); ++k) holed.positions()[k] = block.positions()[keep[k]];
+      for (std::size_t k = 0; k < keep.size(); ++k)
+        holed.positions()[k] = block.positions()[keep[k]];
       auto& volume = holed.addScalarField("volume");
       std::fill(volume.begin(), volume.end(), Real(dimension == 3 ? dx * dx * dx : dx * dx));
       VoxelOccupancy occupancy(Vector::Zero(), Vector::Constant(n * dx), dx / 2, 3 * dx, dimension);
@@ -205,11 +208,11 @@ TEST(SolidificationMaps, NiyamaAndArmSpacingFromTheRunsHistoryAndTheWrittenGradi
   const ReportSection section = analyses[0]->finish();
   EXPECT_NE(section.markdown.find("Niyama minimum: 0.75"), std::string::npos) << section.markdown;
 
-  const ParticleCloud result = readCloudVtp(maps.folder.root() / "postProcessing/maps/2/metal.vtp",
-                                            "metal");
+  const ParticleCloud result =
+      readCloudVtp(maps.folder.root() / "postProcessing/maps/2/metal.vtp", "metal");
   const double lambda2 = 1e-5 * std::cbrt(1.5);
-  const double ny = lambda2 * 1500 *
-                    std::sqrt(1.01e5 / (1.57e-3 * (2565.5 / 2426.6 - 1) * 58.2 * 4));
+  const double ny =
+      lambda2 * 1500 * std::sqrt(1.01e5 / (1.57e-3 * (2565.5 / 2426.6 - 1) * 58.2 * 4));
   std::size_t checked = 0;
   for (std::size_t i = 0; i < result.size(); ++i) {
     if (result.idField("id")[i] == 0) {
@@ -277,8 +280,8 @@ TEST(HotSpots, APocketCutOffFromTheFeedingPathIsFollowedUntilItFreezes) {
   auto& fs = block.addScalarField("solidFraction");
   const auto at = [&](int t) {
     for (std::size_t i = 0; i < block.size(); ++i) {
-      const Vector x = block.positions()[i] / dx;  // (k + 0.5)
-      const bool pocket = x.x() > 6 && x.y() > 6 && x.z() > 6;  // the corner 2 x 2 x 2
+      const Vector x = block.positions()[i] / dx;                        // (k + 0.5)
+      const bool pocket = x.x() > 6 && x.y() > 6 && x.z() > 6;           // the corner 2 x 2 x 2
       const bool wall = !pocket && x.x() > 5 && x.y() > 5 && x.z() > 5;  // one layer round it
       fs[i] = t == 1 ? 0 : (wall || (pocket && t == 3)) ? 1 : 0;
     }
@@ -289,7 +292,8 @@ TEST(HotSpots, APocketCutOffFromTheFeedingPathIsFollowedUntilItFreezes) {
   };
   for (int t = 1; t <= 3; ++t) analyses[0]->add(at(t));
   const ReportSection section = analyses[0]->finish();
-  EXPECT_NE(section.markdown.find("1 isolated liquid region "), std::string::npos) << section.markdown;
+  EXPECT_NE(section.markdown.find("1 isolated liquid region "), std::string::npos)
+      << section.markdown;
   std::ifstream list(maps.folder.root() / "postProcessing/spots/hotSpotList.csv");
   std::string header, row;
   std::getline(list, header);
@@ -313,13 +317,13 @@ TEST(CastAnalysis, BadEntriesNameFileLineAndKey) {
   MapsCase maps("");
   expectError(maps, "a { type solidificationMap; cloud metal; }",
               "system/castPostProcessDict:1:", "did you mean 'solidificationMaps'?");
-  expectError(maps, "a { type timeSeries;\n cluods (metal); }", "system/castPostProcessDict:2:",
-              "did you mean 'clouds'?");
+  expectError(maps, "a { type timeSeries;\n cluods (metal); }",
+              "system/castPostProcessDict:2:", "did you mean 'clouds'?");
   expectError(maps, "a { type thermocouples; cloud steel; locations { c (0 0 0); } }",
               "system/castPostProcessDict:1:", "no cloud 'steel'");
   expectError(maps, "a 1;", "system/castPostProcessDict:1:", "is not an analysis");
-  expectError(maps, "a { type thermocouples; cloud metal; }", "system/castPostProcessDict:1:",
-              "either 'locations'");
+  expectError(maps, "a { type thermocouples; cloud metal; }",
+              "system/castPostProcessDict:1:", "either 'locations'");
   // a thermocouple outside the casting, at its line
   auto analyses = maps.read(
       "a { type thermocouples; cloud metal;\n locations { in (0.03 0.03 0.03);\n out (1 0 0); "

@@ -343,7 +343,9 @@ ParticleCloud freezeColumn(int threads, std::size_t& frozeDuringRun) {
   const Real c = 20;
   auto fluid = testing::fluidBlock2D(20, 20, dx, Vector::Zero(), 2400, 1e-3);
   auto& T = fluid.addScalarField("T");
-  for (std::size_t i = 0; i < fluid.size(); ++i) T[i] = fluid.positions()[i].x() < 5 * dx ? 820 : 860;
+  for (std::size_t i = 0; i < fluid.size(); ++i) {
+    T[i] = fluid.positions()[i].x() < 5 * dx ? 820 : 860;
+  }
   SolidificationSettings settings;
   settings.viscosityLimit = Real(0.9 * 0.125 * 2426.6) * dx * c / Real(0.25);
   Solidification solidification(settings, material, fluid);
