@@ -138,6 +138,9 @@ ReportSection SolidificationMaps::finish() {
   auto& rate = maps.addScalarField("coolingRate");
   auto& gradient = maps.addScalarField("temperatureGradient");
   auto& niyama = maps.addScalarField("niyama");
+  // the solver's first wall contact of each particle (sph/FillTime.h), when the run has a flow
+  if (last_.hasScalarField("fillTime"))
+    maps.addScalarField("fillTime") = last_.scalarField("fillTime");
   auto& fillT = maps.addScalarField("temperatureAtFillEnd");
   auto& fillFs = maps.addScalarField("solidFractionAtFillEnd");
   const auto& ids = last_.idField("id");

@@ -23,6 +23,8 @@ namespace sphcast {
 //                         2009, Metall. Mater. Trans. A 40:163): mu_l = mu(T_liq), beta =
 //                         rho_s(T_sol) / rho_s(T_liq) - 1, dT_f = T_liq - T_sol, dP_cr the
 //                         entry criticalPressureDrop (1.01e5 Pa by default); with lambda_2 only
+//   fillTime              s, when the particle first touched the mold (-1: never; recorded by
+//                         the solver at every step, sph/FillTime.h; only with a flow)
 //   temperatureAtFillEnd, solidFractionAtFillEnd   at the first written time >= fillEnd (f_s from
 //                         the material's u(T), as the solver computes it)
 //                         (key, s; the first time by default: a case started filled)

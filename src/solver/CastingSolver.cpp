@@ -152,6 +152,7 @@ void CastingSolver::setUpFlow() {
   flow_ =
       std::make_unique<WeaklyCompressibleFlow>(flowSetup_.settings, fluid, walls, *neighbourhood_);
   fluid_ = &fluid;
+  if (!walls.empty()) fillTime_ = std::make_unique<FillTime>(fluid, walls);
   domain_ = walls.empty() ? defaultDomain({&fluid}) : defaultDomain(walls);
   const FlowSettings& settings = flowSetup_.settings;
   info() << "Flow: weakly compressible SPH (" << settings.dimension << "D), densityScheme "
@@ -328,6 +329,8 @@ void CastingSolver::startModels() {
   const bool restarted = (flow_ && flow_->restarted()) || (energy_ && energy_->restarted());
   addWallTime(searchSeconds_,
               [&] { neighbourhood_->update(restarted ? CloudOrder::keep : CloudOrder::byCell); });
+  // a restart has the contacts up to its time already (the next search is the next step's)
+  if (fillTime_ && !restarted) fillTime_->record(*neighbourhood_, time_.value());
   // A restart keeps the A_i it was written with: summed again over neighbour lists in another
   // order (the wall clearance moves particles after the search) they could differ in the last
   // bit.
@@ -401,6 +404,7 @@ void CastingSolver::evolve(double deltaT) {
   // the search at the new positions (nothing moves without a flow), the quantities models share
   if (flow_) {
     addWallTime(searchSeconds_, [&] { neighbourhood_->update(); });
+    if (fillTime_) fillTime_->record(*neighbourhood_, time_.value());
     flow_->keepClearOfWalls();
   }
   if (heatThisStep && flow_ && exposedArea_) {
@@ -458,6 +462,7 @@ void CastingSolver::evolveCooling(double deltaT) {
     }
     flow_->kickAndDrift(flowDeltaT);
     addWallTime(searchSeconds_, [&] { neighbourhood_->update(); });
+    if (fillTime_) fillTime_->record(*neighbourhood_, time_.value());
     flow_->keepClearOfWalls();
     flow_->computeRatesAndKick(flowDeltaT);
     ++flowSubSteps_;

@@ -17,6 +17,7 @@
 #include "solver/SolidificationSetup.h"
 #include "solver/SurfaceTensionSetup.h"
 #include "sph/ExposedArea.h"
+#include "sph/FillTime.h"
 #include "sph/WeaklyCompressibleFlow.h"
 #include "thermal/EnergyEquation.h"
 
@@ -96,6 +97,7 @@ class CastingSolver {
   std::unique_ptr<EnergyEquation> energy_;
   std::unique_ptr<Solidification> solidification_;  // follows the fluid's T after heat steps
   std::unique_ptr<ExposedArea> exposedArea_;      // A_i, when a model reads it
+  std::unique_ptr<FillTime> fillTime_;            // the fluid's first wall contact
   bool exposedAreaRestored_ = false;              // read with a restart's clouds
   std::vector<const ParticleCloud*> wallClouds_;  // the flow's walls
   Domain domain_;
