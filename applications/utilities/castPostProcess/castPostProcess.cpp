@@ -1,6 +1,7 @@
 // castPostProcess: the analyses of system/castPostProcessDict (castAnalysis/CastAnalysis.h,
 // doc/castPostProcess.md) over the written times, each into postProcessing/<name>/, and the
 // one-page postProcessing/castReport.md. Without the dictionary: the cloud summary of every cloud.
+#include <algorithm>
 #include <filesystem>
 #include <memory>
 #include <utility>
@@ -53,7 +54,8 @@ int castPostProcess(int argc, const char* const argv[]) {
   sphcast::CommandLine args(
       "castPostProcess",
       "Runs the analyses named in system/castPostProcessDict (types: cloudSummary, timeSeries, "
-      "thermocouples, solidificationMaps) over the written times, each into "
+      "thermocouples, solidificationMaps, shrinkageCavities, slice, hotSpots; doc/"
+      "castPostProcess.md) over the written times, each into "
       "postProcessing/<name>/, and writes postProcessing/castReport.md. Without that file: the "
       "cloud summary of every cloud (postProcessing/cloudSummary/<cloud>.csv). With -time or "
       "-latestTime the time series replace or add the rows of those times only.");
