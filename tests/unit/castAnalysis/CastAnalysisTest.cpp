@@ -3,6 +3,7 @@
 // dimensionless Niyama) against values worked by hand, the heat books, and the errors a user
 // meets (unknown type, unknown key, a thermocouple outside the casting).
 #include <gtest/gtest.h>
+#include <omp.h>
 
 #include <cmath>
 #include <fstream>
@@ -92,7 +93,8 @@ ParticleCloud latticeBlock(int n, Real dx, int dimension) {
 }
 
 // The corrected kernel gradient is exact for a linear field at every particle, the corners and
-// faces of the block included (where the plain kernel sum is off by about half).
+// faces of the block included (where the plain kernel sum is off by about half); one thread and
+// two give the same bits.
 TEST(TemperatureGradient, ExactForALinearFieldUpToTheSurface) {
   for (const int dimension : {2, 3}) {
     ParticleCloud block = latticeBlock(8, 0.01, dimension);
@@ -104,6 +106,12 @@ TEST(TemperatureGradient, ExactForALinearFieldUpToTheSurface) {
     double worst = 0;
     for (const Vector& g : gradient) worst = std::max(worst, double((g - slope).norm()));
     EXPECT_LT(worst, 1e-8 * slope.norm()) << dimension << "D";
+    // its pass on one and on two threads: the same bits
+    const int previous = omp_get_max_threads();
+    omp_set_num_threads(2);
+    const auto twoThreads = temperatureGradient(block, 0.03, dimension);
+    omp_set_num_threads(previous);
+    EXPECT_TRUE(twoThreads == gradient) << dimension << "D";
   }
 }
 
