@@ -75,7 +75,11 @@ void SolidificationMaps::add(const WrittenTime& time) {
     now[ids[i]] = G;
     if (!history) continue;
     const double tc = cloud->scalarField("criticalTime")[i];
-    if (tc < 0 || criticalGradient_.contains(ids[i])) continue;
+    if (tc < 0) {
+      criticalGradient_.erase(ids[i]);  // not yet, or melted again since
+      continue;
+    }
+    if (criticalGradient_.contains(ids[i])) continue;
     const auto before = previousGradient_.find(ids[i]);
     if (before != previousGradient_.end() && previousTime_ < t) {
       const double f = std::clamp((tc - previousTime_) / (t - previousTime_), 0.0, 1.0);
