@@ -53,7 +53,8 @@ SolidificationMaps::SolidificationMaps(const std::string& name, const Dictionary
 }
 
 bool SolidificationMaps::hasHistory(const ParticleCloud& cloud) {
-  const auto& fields = Solidification::historyFields();
+  static const std::vector<std::string> fields{"liquidusTime", "criticalTime", "coolingRate",
+                                               "solidusTime"};
   return cloud.hasIdField("id") &&
          std::all_of(fields.begin(), fields.end(),
                      [&](const std::string& field) { return cloud.hasScalarField(field); });
@@ -152,13 +153,22 @@ ReportSection SolidificationMaps::finish() {
   const auto& solidusTime = last_.scalarField("solidusTime");
   const auto& coolingRate = last_.scalarField("coolingRate");
   const auto& criticalTime = last_.scalarField("criticalTime");
+  const ParticleCloud::ScalarField* solverGradient =
+      last_.hasScalarField("criticalGradient") ? &last_.scalarField("criticalGradient") : nullptr;
+  std::size_t fromSolver = 0;
   for (std::size_t i = 0; i < n; ++i) {
     solidification[i] = solidusTime[i];
     freezing[i] =
         solidusTime[i] >= 0 && liquidusTime[i] >= 0 ? solidusTime[i] - liquidusTime[i] : Real(-1);
     rate[i] = criticalTime[i] >= 0 ? coolingRate[i] : Real(-1);
+    // the solver's G at the crossing where it wrote one, else the writes' interpolated
     const auto G = criticalGradient_.find(ids[i]);
-    gradient[i] = G != criticalGradient_.end() ? Real(G->second) : Real(-1);
+    if (solverGradient && (*solverGradient)[i] >= 0) {
+      gradient[i] = (*solverGradient)[i];
+      ++fromSolver;
+    } else {
+      gradient[i] = G != criticalGradient_.end() ? Real(G->second) : Real(-1);
+    }
     niyama[i] = gradient[i] >= 0 && rate[i] > 0
                     ? Real(gradient[i] / 1000 / std::sqrt(double(rate[i])))
                     : Real(-1);
@@ -230,11 +240,14 @@ ReportSection SolidificationMaps::finish() {
          << " K/m, cooling " << number(rate[worstNiyama]) << " K/s); " << belowThreshold << " of "
          << mapped << " particles below " << niyamaThreshold_ << " (K s)^0.5/mm.\n";
   }
-  text << "- G from grad T at the written times, interpolated to each particle's T_c = "
+  text << "- T_c = "
        << number(range.solidus + SolidificationSettings{}.criticalTemperatureFraction *
                                      (range.liquidus - range.solidus),
                  6)
-       << " K; crossing times and cooling rates from every heat step of the run.\n";
+       << " K; crossing times, cooling rates and G (" << fromSolver << " of " << n
+       << " particles) from the heat step that crossed it"
+       << (fromSolver < n ? "; the other G from the written times, interpolated in time" : "")
+       << ".\n";
   section.markdown = text.str();
   return section;
 }

@@ -16,7 +16,8 @@ namespace sphcast {
 //   solidificationTime    s, when it reached the solidus (-1: not yet)
 //   localFreezingTime     s, liquidus to solidus (-1: not yet)
 //   coolingRate           K/s, -dT/dt at T_c = T_sol + 0.1 (T_liq - T_sol)
-//   temperatureGradient   K/m, G = |grad T| at T_c (TemperatureGradient.h)
+//   temperatureGradient   K/m, G = |grad T| at T_c: the solver's (criticalGradient), else
+//                         from the written times (below)
 //   niyama                (K s)^0.5 / mm, G / sqrt(coolingRate) (Niyama et al. 1982)
 //   secondaryArmSpacing   m, lambda_2 = A t_f^n (the material's dendriteArmSpacing, if given)
 //   dimensionlessNiyama   lambda_2 G sqrt(dP_cr / (mu_l beta dT_f Tdot)) (Carlson & Beckermann
@@ -29,11 +30,12 @@ namespace sphcast {
 //                         the material's u(T), as the solver computes it)
 //                         (key, s; the first time by default: a case started filled)
 //
-// The crossing times and the cooling rate are the solver's (solidification/Solidification.h
-// records them at every heat step); G comes from the written times: at each, grad T of the
-// cloud, interpolated linearly in time to each particle's crossing of T_c between the two writes
-// around it (particles are followed by id). G is therefore as good as the write interval lets a
-// linear interpolation be; -latestTime gives G at that time only.
+// The crossing times, the cooling rate and G are the solver's (solidification/Solidification.h
+// records them at the heat step that crossed). For a run without criticalGradient (written
+// before it existed) G comes from the written times: at each, grad T of the cloud, interpolated
+// linearly in time to each particle's crossing of T_c between the two writes around it
+// (particles are followed by id): as good as the write interval lets a linear interpolation be
+// (towards the start's uniform T, zero, for what crosses in the first interval).
 // Keys: cloud; fillEnd, criticalPressureDrop, niyamaThreshold (optional; (K s)^0.5 / mm, 1 by
 // default: the report counts the volume below it).
 class SolidificationMaps : public CastAnalysis {

@@ -39,14 +39,14 @@ Solidification::Solidification(SolidificationSettings settings, const Material& 
 
 const std::vector<std::string>& Solidification::fields() {
   static const std::vector<std::string> names{
-      "solidFraction", "frozen",       "restDensity", "viscosity",
-      "liquidusTime",  "criticalTime", "coolingRate", "solidusTime"};
+      "solidFraction", "frozen",       "restDensity", "viscosity",       "liquidusTime",
+      "criticalTime",  "coolingRate",  "solidusTime", "criticalGradient"};
   return names;
 }
 
 const std::vector<std::string>& Solidification::historyFields() {
   static const std::vector<std::string> names{"liquidusTime", "criticalTime", "coolingRate",
-                                              "solidusTime"};
+                                              "solidusTime", "criticalGradient"};
   return names;
 }
 
@@ -65,6 +65,7 @@ void Solidification::update(double time, double heatDeltaT) {
   auto& criticalTime = metal_.scalarField("criticalTime");
   auto& coolingRate = metal_.scalarField("coolingRate");
   auto& solidusTime = metal_.scalarField("solidusTime");
+  auto& criticalGradient = metal_.scalarField("criticalGradient");
   // when u(t) = u_end + rate (t - time) reached `level`, within the step
   const auto crossing = [&](std::size_t i, Real energy, Real level) {
     const double rate = energyRate ? static_cast<double>((*energyRate)[i]) : 0.0;
@@ -94,6 +95,7 @@ void Solidification::update(double time, double heatDeltaT) {
     // the history
     if (energy > liquidusEnergy_) {
       liquidusTime[i] = criticalTime[i] = coolingRate[i] = solidusTime[i] = Real(-1);
+      criticalGradient[i] = Real(-1);
       continue;
     }
     if (liquidusTime[i] < 0) liquidusTime[i] = crossing(i, energy, liquidusEnergy_);
@@ -106,6 +108,16 @@ void Solidification::update(double time, double heatDeltaT) {
       solidusTime[i] = crossing(i, energy, solidusEnergy_);
     }
   }
+}
+
+std::vector<std::size_t> Solidification::pendingCriticalGradients() const {
+  const auto& criticalTime = metal_.scalarField("criticalTime");
+  const auto& criticalGradient = metal_.scalarField("criticalGradient");
+  std::vector<std::size_t> pending;
+  for (std::size_t i = 0; i < metal_.size(); ++i) {
+    if (criticalTime[i] >= 0 && criticalGradient[i] < 0) pending.push_back(i);
+  }
+  return pending;
 }
 
 SolidificationSummary Solidification::summary() const {

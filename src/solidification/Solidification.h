@@ -49,6 +49,9 @@ namespace sphcast {
 //                  T_sol), the Niyama criterion's temperature (Carlson & Beckermann 2009)
 //   coolingRate    -dT/dt there, K/s: -(du/dt) / (du/dT)(T_c), du/dT with the latent heat
 //   solidusTime    when u fell to u(T_sol)             (end of freezing: the solidification time)
+//   criticalGradient  |grad T| (K/m) when T_c was crossed: this model has no neighbours, so the
+//                  solver writes it right after the update that set criticalTime
+//                  (pendingCriticalGradients; sph/CorrectedGradient.h)
 // A crossing inside a heat step is placed by the step's rate du/dt (linear in time), within the
 // step. A particle that melts again (u above u(T_liq)) starts its history afresh.
 struct SolidificationSettings {
@@ -81,6 +84,9 @@ class Solidification {
   // f_s, frozen, rho_s and mu from the particles' T, and the histories; call after every change
   // of T, with the time reached and the length of the heat step that reached it (0 at the start).
   void update(double time, double heatDeltaT);
+
+  // The particles that crossed T_c and whose criticalGradient is not yet written (-1).
+  std::vector<std::size_t> pendingCriticalGradients() const;
 
   // The solid fraction at temperature T.
   Real solidFraction(Real temperature) const;

@@ -13,6 +13,7 @@
 #include "core/Gravity.h"
 #include "core/dictionary/Dictionary.h"
 #include "io/VtpCloud.h"
+#include "sph/CorrectedGradient.h"
 
 namespace sphcast {
 
@@ -308,6 +309,7 @@ void CastingSolver::setUpSolidification() {
                                                 flow.soundSpeed / time_.settings().maxCo);
   }
   solidification_ = std::make_unique<Solidification>(settings, material, metal);
+  neighbourhood_->requestPairs(metal, metal);  // for G at T_c (recordCriticalGradients)
   solidification_->update(time_.value(), 0.0);
   if (const auto mode = metal.attributes().find("coolingMode"); mode != metal.attributes().end()) {
     cooling_ = solidificationSetup_.cooling && mode->second != 0;
@@ -323,6 +325,24 @@ void CastingSolver::setUpSolidification() {
   logSolidification();
 }
 
+// G = |grad T| of the particles that have just crossed T_c (Solidification.h), from the pairs
+// of the last search: the positions the heat step used.
+void CastingSolver::recordCriticalGradients() {
+  const std::vector<std::size_t> pending = solidification_->pendingCriticalGradients();
+  if (pending.empty()) return;
+  ParticleCloud& metal = cloudNamed(solidificationSetup_.cloud);
+  const int dimension = flow_ ? flowSetup_.settings.dimension : heatSetup_.dimension;
+  const std::vector<Real> volume = particleVolumes(metal, dimension);
+  const NeighbourList& pairs = neighbourhood_->pairs(metal, metal);
+  auto& gradient = metal.scalarField("criticalGradient");
+  const auto& T = metal.scalarField("T");
+  for (const std::size_t i : pending) {
+    gradient[i] = correctedGradient(metal, T, volume, pairs, neighbourhood_->periodicBox(),
+                                    neighbourhood_->radius(), dimension, i)
+                      .norm();
+  }
+}
+
 // The first search and the rates of the start state (a restart keeps the order and the rates
 // it was written with).
 void CastingSolver::startModels() {
@@ -331,6 +351,7 @@ void CastingSolver::startModels() {
               [&] { neighbourhood_->update(restarted ? CloudOrder::keep : CloudOrder::byCell); });
   // a restart has the contacts up to its time already (the next search is the next step's)
   if (fillTime_ && !restarted) fillTime_->record(*neighbourhood_, time_.value());
+  if (solidification_) recordCriticalGradients();
   // A restart keeps the A_i it was written with: summed again over neighbour lists in another
   // order (the wall clearance moves particles after the search) they could differ in the last
   // bit.
@@ -416,7 +437,10 @@ void CastingSolver::evolve(double deltaT) {
     addWallTime(heatSeconds_, [&] {
       energy_->computeRates();
       energy_->halfKick(heatDeltaT_);
-      if (solidification_) solidification_->update(time_.value(), heatDeltaT_);
+      if (solidification_) {
+        solidification_->update(time_.value(), heatDeltaT_);
+        recordCriticalGradients();
+      }
     });
     ++heatSteps_;
   }
@@ -432,7 +456,10 @@ void CastingSolver::flushPendingHeat() {
     if (exposedArea_) exposedArea_->compute();
     energy_->computeRates();
     energy_->halfKick(heatDeltaT_);
-    if (solidification_) solidification_->update(time_.value(), heatDeltaT_);
+    if (solidification_) {
+      solidification_->update(time_.value(), heatDeltaT_);
+      recordCriticalGradients();
+    }
   });
   ++heatSteps_;
 }
@@ -450,6 +477,7 @@ void CastingSolver::evolveCooling(double deltaT) {
     energy_->computeRates();
     energy_->halfKick(deltaT);
     solidification_->update(time_.value(), deltaT);
+    recordCriticalGradients();
   });
   ++heatSteps_;
   for (int k = 0; k < solidificationSetup_.cooling->flowStepsPerHeatStep; ++k) {

@@ -48,6 +48,7 @@ class CastingSolver {
   void setUpFlow();
   void setUpHeat();
   void setUpSolidification();
+  void recordCriticalGradients();
   void startModels();
   void setUpFunctionObjects(const Dictionary& controlDict);
   ParticleCloud* findCloud(const std::string& name);   // nullptr when absent
