@@ -1,5 +1,6 @@
 #include "castAnalysis/CoolingCurve.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -52,18 +53,23 @@ CoolingCurveBreaks findCoolingCurveBreaks(const std::vector<double>& time,
     }
     return meet(before(best), after(best));
   };
+  // a slope counts as cooling from 1 % of the curve's fastest: a flat stretch (a melt still
+  // holding its superheat) has slopes of round-off whose ratios mean nothing
+  double fastest = 0;
+  for (long k = w; k + 1 + w < n; ++k) fastest = std::max(fastest, -before(k).slope);
+  const double cooling = -0.01 * fastest;
   const auto slowing = [&](long k) { return before(k).slope / after(k).slope; };
   const auto quickening = [&](long k) { return after(k).slope / before(k).slope; };
   for (long k = w; k + 1 + w < n; ++k) {
     const Line a = before(k), b = after(k);
-    if (a.slope < 0 && b.slope > a.slope / ratio) {  // cooling slows: the arrest
+    if (a.slope < cooling && b.slope > a.slope / ratio) {  // cooling slows: the arrest
       breaks.arrest = sharpest(k, 1, slowing);
       break;
     }
   }
   for (long k = n - 2 - w; k >= w; --k) {
     const Line a = before(k), b = after(k);
-    if (b.slope < 0 && a.slope > b.slope / ratio) {  // cooling speeds up: the end
+    if (b.slope < cooling && a.slope > b.slope / ratio) {  // cooling speeds up: the end
       breaks.end = sharpest(k, -1, quickening);
       break;
     }
