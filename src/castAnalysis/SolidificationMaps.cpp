@@ -153,6 +153,10 @@ ReportSection SolidificationMaps::finish() {
   const auto& solidusTime = last_.scalarField("solidusTime");
   const auto& coolingRate = last_.scalarField("coolingRate");
   const auto& criticalTime = last_.scalarField("criticalTime");
+  auto& resolved = maps.addScalarField("mushyZoneSpacings");
+  const double freezingRange = range.liquidus - range.solidus;
+  const double dx = last_.attributes().contains("spacing") ? last_.attributes().at("spacing") : 0.0;
+  std::size_t underResolved = 0;
   const ParticleCloud::ScalarField* solverGradient =
       last_.hasScalarField("criticalGradient") ? &last_.scalarField("criticalGradient") : nullptr;
   std::size_t fromSolver = 0;
@@ -172,6 +176,11 @@ ReportSection SolidificationMaps::finish() {
     niyama[i] = gradient[i] >= 0 && rate[i] > 0
                     ? Real(gradient[i] / 1000 / std::sqrt(double(rate[i])))
                     : Real(-1);
+    // how many spacings the freezing range spans at T_c: below one the cooling rate there is
+    // smoothed by the neighbours (tutorials/validation/chvorinovPlates), Niyama too high
+    resolved[i] =
+        gradient[i] > 0 && dx > 0 ? Real(freezingRange / (double(gradient[i]) * dx)) : Real(-1);
+    if (resolved[i] >= 0 && resolved[i] < 1) ++underResolved;
     const auto T = fillEndTemperature_.find(ids[i]);
     fillT[i] = T != fillEndTemperature_.end() ? Real(T->second) : Real(-1);
     const auto fs = fillEndSolidFraction_.find(ids[i]);
@@ -239,6 +248,10 @@ ReportSection SolidificationMaps::finish() {
          << point(last_.positions()[worstNiyama]) << " (G " << number(gradient[worstNiyama])
          << " K/m, cooling " << number(rate[worstNiyama]) << " K/s); " << belowThreshold << " of "
          << mapped << " particles below " << niyamaThreshold_ << " (K s)^0.5/mm.\n";
+    text << "- " << underResolved << " of " << mapped
+         << " particles passed T_c where the freezing range was thinner than a spacing "
+            "(mushyZoneSpacings < 1): their cooling rates read low and their Niyama values "
+            "high; refine there.\n";
   }
   text << "- T_c = "
        << number(range.solidus + SolidificationSettings{}.criticalTemperatureFraction *

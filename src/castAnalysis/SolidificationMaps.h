@@ -19,6 +19,8 @@ namespace sphcast {
 //   temperatureGradient   K/m, G = |grad T| at T_c: the solver's (criticalGradient), else
 //                         from the written times (below)
 //   niyama                (K s)^0.5 / mm, G / sqrt(coolingRate) (Niyama et al. 1982)
+//   mushyZoneSpacings     (T_liq - T_sol) / (G dx): the spacings the freezing range spans at
+//                         T_c; below 1 the cooling rate there is smoothed (Niyama too high)
 //   secondaryArmSpacing   m, lambda_2 = A t_f^n (the material's dendriteArmSpacing, if given)
 //   dimensionlessNiyama   lambda_2 G sqrt(dP_cr / (mu_l beta dT_f Tdot)) (Carlson & Beckermann
 //                         2009, Metall. Mater. Trans. A 40:163): mu_l = mu(T_liq), beta =

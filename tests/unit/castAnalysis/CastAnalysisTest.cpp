@@ -221,6 +221,10 @@ TEST(SolidificationMaps, NiyamaAndArmSpacingFromTheRunsHistoryAndTheWrittenGradi
   analyses[0]->add(time2);
   const ReportSection section = analyses[0]->finish();
   EXPECT_NE(section.markdown.find("Niyama minimum: 0.75"), std::string::npos) << section.markdown;
+  // the freezing range over G dx: 58.2 K / (1500 K/m * 0.01 m) = 3.88 spacings, none below one
+  EXPECT_NE(section.markdown.find("- 0 of 215 particles passed T_c where the freezing range"),
+            std::string::npos)
+      << section.markdown;
 
   const ParticleCloud result =
       readCloudVtp(maps.folder.root() / "postProcessing/maps/2/metal.vtp", "metal");
@@ -236,6 +240,7 @@ TEST(SolidificationMaps, NiyamaAndArmSpacingFromTheRunsHistoryAndTheWrittenGradi
     }
     EXPECT_NEAR(result.scalarField("temperatureGradient")[i], 1500, 1e-6);
     EXPECT_NEAR(result.scalarField("niyama")[i], 0.75, 1e-9);
+    EXPECT_NEAR(result.scalarField("mushyZoneSpacings")[i], 58.2 / (1500 * 0.01), 1e-9);
     EXPECT_NEAR(result.scalarField("localFreezingTime")[i], 1.5, 1e-12);
     EXPECT_NEAR(result.scalarField("solidificationTime")[i], 2, 1e-12);
     EXPECT_NEAR(result.scalarField("secondaryArmSpacing")[i], lambda2, 1e-12);
