@@ -5,6 +5,7 @@
 
 #include "core/Error.h"
 #include "particles/WendlandKernel.h"
+#include "sph/CorrectedGradient.h"
 
 namespace sphcast {
 
@@ -40,23 +41,7 @@ double VoxelOccupancy::voxelVolume() const {
 }
 
 void VoxelOccupancy::add(const ParticleCloud& cloud, int channel) {
-  std::vector<Real> volume(cloud.size());
-  if (cloud.hasScalarField("volume")) {
-    volume = cloud.scalarField("volume");
-  } else if (cloud.hasScalarField("mass") && cloud.hasScalarField("rho")) {
-    for (std::size_t j = 0; j < cloud.size(); ++j) {
-      volume[j] = cloud.scalarField("mass")[j] / cloud.scalarField("rho")[j];
-    }
-  } else {
-    const auto spacing = cloud.attributes().find("spacing");
-    if (spacing == cloud.attributes().end()) {
-      throw Error("cloud '" + cloud.name() +
-                  "' has no volume, mass and rho, or spacing: its "
-                  "particles' volumes are unknown");
-    }
-    const Real dx = Real(spacing->second);
-    std::fill(volume.begin(), volume.end(), dimension_ == 2 ? dx * dx : dx * dx * dx);
-  }
+  const std::vector<Real> volume = particleVolumes(cloud, dimension_);
   const WendlandC2Kernel<3> kernel3(h_);
   const WendlandC2Kernel<2> kernel2(h_);
   auto& c = channel_[channel];

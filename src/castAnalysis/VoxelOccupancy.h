@@ -11,7 +11,7 @@ namespace sphcast {
 
 // How much of each voxel of a box the particles fill: the kernel sum
 //
-//   c(x) = sum_j V_j W(|x - x_j|, h)        (V_j = volume, or m_j / rho_j, or dx^d)
+//   c(x) = sum_j V_j W(|x - x_j|, h)        (V_j: sph/CorrectedGradient.h's particleVolumes)
 //
 // Shepard's denominator: 1 inside a full lattice, falling through 1/2 about half a spacing
 // beyond its last particles, where the body's surface is (each particle stands for the cell of

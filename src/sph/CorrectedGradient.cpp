@@ -44,7 +44,6 @@ Vector correctedGradient(const ParticleCloud& cloud, const std::vector<Real>& fi
 }
 
 std::vector<Real> particleVolumes(const ParticleCloud& cloud, int dimension) {
-  if (cloud.hasScalarField("volume")) return cloud.scalarField("volume");
   std::vector<Real> volume(cloud.size());
   if (cloud.hasScalarField("mass") && cloud.hasScalarField("rho")) {
     for (std::size_t j = 0; j < cloud.size(); ++j) {
@@ -52,6 +51,7 @@ std::vector<Real> particleVolumes(const ParticleCloud& cloud, int dimension) {
     }
     return volume;
   }
+  if (cloud.hasScalarField("volume")) return cloud.scalarField("volume");
   const auto spacing = cloud.attributes().find("spacing");
   if (spacing == cloud.attributes().end()) {
     throw Error("cloud '" + cloud.name() +

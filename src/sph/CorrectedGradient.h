@@ -13,7 +13,8 @@ namespace sphcast {
 // The gradient of a scalar field at particle i with the kernel gradient corrected in full
 // (Bonet & Lok 1999, Comput. Methods Appl. Mech. Engrg. 180:97, eq. (37)):
 //
-//   grad f_i = L_i sum_j V_j (f_j - f_i) grad_i W_ij,   L_i = (sum_j V_j grad_i W_ij (x_j - x_i)^T)^-1
+//   grad f_i = L_i sum_j V_j (f_j - f_i) grad_i W_ij,   L_i = (sum_j V_j grad_i W_ij (x_j -
+//   x_i)^T)^-1
 //
 // exact for a linear field on any arrangement, also where the support is cut by a surface; the
 // uncorrected sum where L_i cannot be inverted (fewer neighbours than the dimension needs). For
@@ -25,7 +26,8 @@ Vector correctedGradient(const ParticleCloud& cloud, const std::vector<Real>& fi
                          const PeriodicBox& periodic, Real supportRadius, int dimension,
                          std::size_t i);
 
-// V_j of a cloud: volume, else mass / rho, else spacing^dimension.
+// V_j of a cloud: mass / rho (the volume now: a fluid's `volume` field is the one setCastFields
+// gave it), else volume (mold particles), else spacing^dimension.
 std::vector<Real> particleVolumes(const ParticleCloud& cloud, int dimension);
 
 }  // namespace sphcast
