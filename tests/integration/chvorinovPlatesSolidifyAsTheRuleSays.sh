@@ -8,21 +8,8 @@
 # (the held surface on the first held layer's centres): at dx = 1 mm the 10 mm plate is 13.5 %
 # late and fails the bound, as it should; a held surface half a layer off would too.
 . "$SPHCAST_TEST_TOOLS"
-project=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
-
-python=
-for candidate in ${PYTHON:-} python3 /usr/bin/python3; do
-    "$candidate" -c 'import vtk' 2> /dev/null && { python=$candidate; break; }
-done
-[ -n "$python" ] || { echo "SKIP: no python3 with the vtk module to read the .vtp clouds"; exit 77; }
-
-mkdir -p "$scratch/etc" "$scratch/platforms" "$scratch/tutorials/validation"
-cp "$project/etc/RunFunctions" "$scratch/etc/"
-ln -s "$SPHCAST_BIN" "$scratch/platforms/bin"
-cp -r "$project/tutorials/validation/chvorinovPlates" "$scratch/tutorials/validation/"
-cd "$scratch/tutorials/validation/chvorinovPlates" || exit 1
-(./Allclean && PYTHON=$python ./Allrun 0.5 > log.Allrun 2>&1) ||
-    { cat log.Allrun >&2; fail "chvorinovPlates: Allrun 0.5"; }
+findVtkPython
+runValidationTutorial chvorinovPlates 0.5
 cat log.compareWithReference
 "$python" compareWithReference --check > /dev/null || fail "the plates against the reference"
 pass "Chvorinov's rule: three plates' solidification times and maps against the enthalpy solution"

@@ -14,21 +14,8 @@
 #   nothing) stop with file, line and key, and leave postProcessing/ as it was; so do a
 #   solidification without a flow that names no cloud, or asks for the cooling mode.
 . "$SPHCAST_TEST_TOOLS"
-project=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
-
-python=
-for candidate in ${PYTHON:-} python3 /usr/bin/python3; do
-    "$candidate" -c 'import vtk' 2> /dev/null && { python=$candidate; break; }
-done
-[ -n "$python" ] || { echo "SKIP: no python3 with the vtk module to read the .vtp clouds"; exit 77; }
-
-mkdir -p "$scratch/etc" "$scratch/platforms" "$scratch/tutorials/validation"
-cp "$project/etc/RunFunctions" "$project/etc/functionObjectSeries.py" "$scratch/etc/"
-ln -s "$SPHCAST_BIN" "$scratch/platforms/bin"
-cp -r "$project/tutorials/validation/coolingCurve" "$scratch/tutorials/validation/"
-cd "$scratch/tutorials/validation/coolingCurve" || exit 1
-(./Allclean > /dev/null && PYTHON=$python ./Allrun 10 > log.Allrun 2>&1) ||
-    { cat log.Allrun >&2; fail "coolingCurve: Allrun 10"; }
+findVtkPython
+runValidationTutorial coolingCurve 10
 cat log.compareWithLumped
 "$python" compareWithLumped --check > /dev/null || fail "the cooling curve against the lumped cube"
 

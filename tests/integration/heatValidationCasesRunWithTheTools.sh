@@ -16,26 +16,10 @@
 #   1e-16 of the heat content a step (2.7e-15 measured over 2,136 steps); bound 1e-12.
 # About 5 s on one thread.
 . "$SPHCAST_TEST_TOOLS"
-project=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
+findVtkPython
 
-python=
-for candidate in ${PYTHON:-} python3 /usr/bin/python3; do
-    "$candidate" -c 'import vtk' 2> /dev/null && { python=$candidate; break; }
-done
-[ -n "$python" ] || { echo "SKIP: no python3 with the vtk module to read the .vtp clouds"; exit 77; }
-
-mkdir -p "$scratch/etc" "$scratch/platforms" "$scratch/tutorials/validation"
-cp "$project/etc/RunFunctions" "$project/etc/functionObjectSeries.py" "$scratch/etc/"
-ln -s "$SPHCAST_BIN" "$scratch/platforms/bin"
-
-# runTutorial CASE RESOLUTION: the tutorial's Allrun at RESOLUTION in the copy; prints its log.
-runTutorial() {
-    cp -r "$project/tutorials/validation/$1" "$scratch/tutorials/validation/"
-    (cd "$scratch/tutorials/validation/$1" && ./Allclean > /dev/null &&
-        PYTHON=$python ./Allrun "$2" > log.Allrun 2>&1) ||
-        { cat "$scratch/tutorials/validation/$1/log.Allrun" >&2; fail "$1: Allrun $2"; }
-    cat "$scratch/tutorials/validation/$1/log.compare"*
-}
+# runTutorial CASE RESOLUTION: the tutorial's Allrun at RESOLUTION in a copy; prints its log.
+runTutorial() { (runValidationTutorial "$1" "$2" && cat log.compare*) || exit 1; }
 
 # below BOUND VALUE WHAT: fails unless VALUE < BOUND.
 below() {

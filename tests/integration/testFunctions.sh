@@ -157,3 +157,34 @@ heatTransfer { clouds (metal mold); fixedTemperature { mold 300; } conduction on
 solidification { $3 }
 DICT
 }
+
+# findVtkPython: sets `python` to the first of $PYTHON, python3 and /usr/bin/python3 that imports
+# vtk (the tutorials' comparison scripts read .vtp clouds with it); without one the test is
+# skipped (exit status 77).
+findVtkPython() {
+    python=
+    local candidate
+    for candidate in ${PYTHON:-} python3 /usr/bin/python3; do
+        "$candidate" -c 'import vtk' 2> /dev/null && { python=$candidate; return 0; }
+    done
+    echo "SKIP: no python3 with the vtk module to read the .vtp clouds"
+    exit 77
+}
+
+# runValidationTutorial CASE ARGS...: tutorials/validation/CASE copied into the scratch folder,
+# laid out as in the project (beside an etc/ with RunFunctions and functionObjectSeries.py and a
+# platforms/bin that is $SPHCAST_BIN), cleaned and run with `Allrun ARGS` (PYTHON=$python: call
+# findVtkPython first); a failed Allrun fails the test with its log. Leaves the working
+# directory in the copy.
+runValidationTutorial() {
+    local case=$1 project
+    shift
+    project=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
+    mkdir -p "$scratch/etc" "$scratch/platforms" "$scratch/tutorials/validation"
+    cp "$project/etc/RunFunctions" "$project/etc/functionObjectSeries.py" "$scratch/etc/"
+    [ -e "$scratch/platforms/bin" ] || ln -s "$SPHCAST_BIN" "$scratch/platforms/bin"
+    cp -r "$project/tutorials/validation/$case" "$scratch/tutorials/validation/"
+    cd "$scratch/tutorials/validation/$case" || fail "cannot enter the copy of $case"
+    (./Allclean > /dev/null && PYTHON=$python ./Allrun "$@" > log.Allrun 2>&1) ||
+        { cat log.Allrun >&2; fail "$case: Allrun $*"; }
+}
