@@ -1,6 +1,10 @@
 #include "castAnalysis/CastAnalysis.h"
 
 #include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
 
 #include "castAnalysis/CloudSummaryAnalysis.h"
 #include "castAnalysis/HotSpots.h"
@@ -9,8 +13,11 @@
 #include "castAnalysis/SolidificationMaps.h"
 #include "castAnalysis/Thermocouples.h"
 #include "castAnalysis/TimeSeries.h"
+#include "core/AtomicFile.h"
+#include "core/Log.h"
 #include "core/dictionary/SourceLocation.h"
 #include "io/VtpCloud.h"
+#include "post/CloudSummary.h"
 
 namespace sphcast {
 
@@ -33,6 +40,18 @@ std::filesystem::path CastAnalysis::folder() const {
   const auto path = context_.caseRoot / "postProcessing" / name_;
   std::filesystem::create_directories(path);
   return path;
+}
+
+void CastAnalysis::writeRowsByTime(const std::string& fileName, const std::string& csv) const {
+  const auto file = folder() / fileName;
+  std::string content = csv;
+  if (!context_.allTimes && std::filesystem::exists(file)) {
+    std::ostringstream existing;
+    existing << std::ifstream(file).rdbuf();
+    content = mergeCloudSummaryCsv(existing.str(), csv);
+  }
+  writeFileAtomically(file, content);
+  info() << "    " << name_ << ": wrote " << file.string() << '\n';
 }
 
 std::string CastAnalysis::readCloud(const std::string& key) const {
@@ -70,21 +89,38 @@ const ParticleCloud* CastAnalysis::cloudAt(const WrittenTime& time, const std::s
   return &constantClouds_.emplace(cloudName, readCloudVtp(file, cloudName)).first->second;
 }
 
-std::vector<std::string> CastAnalysis::cloudsAt(const WrittenTime& time) const {
+std::vector<std::string> CastAnalysis::constantCloudNames() const {
   std::vector<std::string> names;
-  for (const ParticleCloud& cloud : time.clouds) names.push_back(cloud.name());
   const auto folder = context_.caseRoot / "constant" / "particles";
   if (std::filesystem::exists(folder)) {
     for (const auto& entry : std::filesystem::directory_iterator(folder)) {
-      const std::string name = entry.path().stem().string();
-      if (entry.path().extension() == ".vtp" &&
-          std::find(names.begin(), names.end(), name) == names.end()) {
-        names.push_back(name);
-      }
+      if (entry.path().extension() == ".vtp") names.push_back(entry.path().stem().string());
     }
   }
   std::sort(names.begin(), names.end());
   return names;
+}
+
+std::vector<std::string> CastAnalysis::cloudsAt(const WrittenTime& time) const {
+  std::vector<std::string> names;
+  for (const ParticleCloud& cloud : time.clouds) names.push_back(cloud.name());
+  for (const std::string& name : constantCloudNames()) {
+    if (std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);
+  }
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+std::string formatNumber(double value, int digits) {
+  if (!std::isfinite(value)) return "nan";
+  char text[64];
+  std::snprintf(text, sizeof text, "%.*g", digits, value);
+  return text;
+}
+
+std::string formatPoint(const Vector& x) {
+  return "(" + formatNumber(x.x(), 4) + " " + formatNumber(x.y(), 4) + " " +
+         formatNumber(x.z(), 4) + ") m";
 }
 
 const std::vector<std::string>& castAnalysisTypes() {

@@ -71,6 +71,10 @@ class CastAnalysis {
 
   // postProcessing/<name>/, created on first use.
   std::filesystem::path folder() const;
+  // Writes a CSV of rows by time (first column) to postProcessing/<name>/<fileName>: whole when
+  // every time was processed, else merged into the file's rows (the selected times' replaced or
+  // added, the others kept: post/CloudSummary.h's mergeCloudSummaryCsv).
+  void writeRowsByTime(const std::string& fileName, const std::string& csv) const;
   // The entry's `cloud`, which must be a cloud of the case (an error at the key otherwise).
   std::string readCloud(const std::string& key = "cloud") const;
   // The material of a cloud, or an error at `key` naming what needs it.
@@ -80,6 +84,8 @@ class CastAnalysis {
   const ParticleCloud* cloudAt(const WrittenTime& time, const std::string& cloudName);
   // The clouds of the time and those of constant/particles that it lacks, sorted.
   std::vector<std::string> cloudsAt(const WrittenTime& time) const;
+  // The clouds of constant/particles (the molds particleizeMold wrote), sorted.
+  std::vector<std::string> constantCloudNames() const;
 
   std::string name_;
   std::string type_;
@@ -94,6 +100,11 @@ class CastAnalysis {
 // unknown type, an unknown key or a bad value: DictionaryError naming file, line and key.
 std::vector<std::unique_ptr<CastAnalysis>> readCastAnalyses(const Dictionary& dict,
                                                             const AnalysisContext& context);
+
+// A number for a report or a CSV, printf's %.<digits>g ("nan" where not finite), and a point
+// as "(x y z) m" with 4 digits each.
+std::string formatNumber(double value, int digits);
+std::string formatPoint(const Vector& x);
 
 // The types readCastAnalyses knows, for messages and docs.
 const std::vector<std::string>& castAnalysisTypes();

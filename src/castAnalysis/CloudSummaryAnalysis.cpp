@@ -25,19 +25,7 @@ void CloudSummaryAnalysis::add(const WrittenTime& time) {
 }
 
 ReportSection CloudSummaryAnalysis::finish() {
-  const auto out = folder();
-  for (const auto& [cloudName, csv] : csv_) {
-    const auto file = out / (cloudName + ".csv");
-    if (!context_.allTimes && std::filesystem::exists(file)) {
-      std::ostringstream existing;
-      existing << std::ifstream(file).rdbuf();
-      writeFileAtomically(file, mergeCloudSummaryCsv(existing.str(), csv));
-      info() << "    " << name_ << ": updated " << file.string() << '\n';
-    } else {
-      writeFileAtomically(file, csv);
-      info() << "    " << name_ << ": wrote " << file.string() << '\n';
-    }
-  }
+  for (const auto& [cloudName, csv] : csv_) writeRowsByTime(cloudName + ".csv", csv);
   ReportSection section;
   section.markdown = "Particle counts, centroids, velocities and bounding boxes by time in " +
                      name_ + "/<cloud>.csv.\n";

@@ -10,9 +10,10 @@ namespace sphcast {
 //
 // A break is found where the cooling slope over `window` samples after a point differs from the
 // one over `window` samples before it by more than `ratio` (slower for the arrest, the first such
-// point; faster for the end, the last; a slope counts as cooling from 1 % of the fastest); its time and temperature are where the two straight lines
-// through those samples meet, so a piecewise-linear curve gives its kink exactly, whatever the
-// sampling. NaN samples (no metal near the thermocouple) are skipped.
+// point; faster for the end, the last; a slope counts as cooling from 1 % of the fastest); its time
+// and temperature are where the two straight lines through those samples meet, so a
+// piecewise-linear curve gives its kink exactly, whatever the sampling. NaN samples (no metal near
+// the thermocouple) are skipped.
 struct CoolingCurveBreak {
   bool found = false;
   double time = 0;

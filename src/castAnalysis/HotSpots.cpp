@@ -9,20 +9,11 @@
 #include "core/Log.h"
 #include "particles/CellGrid.h"
 #include "particles/NeighbourList.h"
+#include "sph/CorrectedGradient.h"
 
 namespace sphcast {
 
 namespace {
-
-std::string number(double value, int digits = 6) {
-  char text[64];
-  std::snprintf(text, sizeof text, "%.*g", digits, value);
-  return text;
-}
-
-std::string point(const Vector& x) {
-  return "(" + number(x.x(), 4) + " " + number(x.y(), 4) + " " + number(x.z(), 4) + ") m";
-}
 
 // Union-find with path halving.
 std::size_t root(std::vector<std::size_t>& parent, std::size_t i) {
@@ -75,15 +66,13 @@ void HotSpots::add(const WrittenTime& time) {
     std::sort(regions.begin(), regions.end(),
               [](const auto& x, const auto& y) { return x.size() > y.size(); });
   }
+  const std::vector<Real> volumes = particleVolumes(*metal, context_.dimension);
   const auto volumeOf = [&](const std::vector<std::size_t>& members, Vector& centroid) {
     double volume = 0;
     Eigen::Vector3d sum = Eigen::Vector3d::Zero();
     for (const std::size_t a : members) {
       const std::size_t i = feeding[a];
-      const double v = metal->hasScalarField("mass") && metal->hasScalarField("rho")
-                           ? double(metal->scalarField("mass")[i] / metal->scalarField("rho")[i])
-                           : std::pow(spacing->second, context_.dimension);
-      volume += v;
+      volume += double(volumes[i]);
       sum += metal->positions()[i].cast<double>();
     }
     centroid = (sum / double(members.size())).cast<Real>();
@@ -129,10 +118,10 @@ void HotSpots::add(const WrittenTime& time) {
     volumeOf(all, lastFeedingCentroid_);
   }
   if (rows_.empty()) rows_ = "time,feedingParticles,regions,isolated,isolatedVolume\n";
-  rows_ += number(t, 12) + "," + std::to_string(feeding.size()) + "," +
+  rows_ += formatNumber(t, 12) + "," + std::to_string(feeding.size()) + "," +
            std::to_string(regions.size()) + "," +
            std::to_string(regions.empty() ? 0 : regions.size() - 1) + "," +
-           number(isolatedVolume, 10) + "\n";
+           formatNumber(isolatedVolume, 10) + "\n";
   previousTime_ = t;
 }
 
@@ -143,10 +132,11 @@ ReportSection HotSpots::finish() {
   list << "hotSpot,closedAfter,closedBy,particles,volume,centroidX,centroidY,centroidZ,lastSeen\n";
   for (std::size_t s = 0; s < spots_.size(); ++s) {
     const Spot& spot = spots_[s];
-    list << s + 1 << ',' << number(spot.closedAfter, 10) << ',' << number(spot.closedBy, 10) << ','
-         << spot.particles << ',' << number(spot.volume, 10) << ',' << number(spot.centroid.x(), 8)
-         << ',' << number(spot.centroid.y(), 8) << ',' << number(spot.centroid.z(), 8) << ','
-         << number(spot.lastSeen, 10) << '\n';
+    list << s + 1 << ',' << formatNumber(spot.closedAfter, 10) << ','
+         << formatNumber(spot.closedBy, 10) << ',' << spot.particles << ','
+         << formatNumber(spot.volume, 10) << ',' << formatNumber(spot.centroid.x(), 8) << ','
+         << formatNumber(spot.centroid.y(), 8) << ',' << formatNumber(spot.centroid.z(), 8) << ','
+         << formatNumber(spot.lastSeen, 10) << '\n';
   }
   writeFileAtomically(out / "hotSpotList.csv", list.str());
   info() << "    " << name_ << ": wrote " << (out / "hotSpots.csv").string() << " and "
@@ -161,15 +151,16 @@ ReportSection HotSpots::finish() {
     const auto worst =
         std::max_element(spots_.begin(), spots_.end(),
                          [](const Spot& a, const Spot& b) { return a.volume < b.volume; });
-    text << "- The largest: " << number(worst->volume * unit, 4) << ' ' << unitName << " ("
-         << worst->particles << " particles) at " << point(worst->centroid) << ", cut off between "
-         << number(worst->closedAfter, 5) << " and " << number(worst->closedBy, 5)
-         << " s, last seen at " << number(worst->lastSeen, 5) << " s.\n";
+    text << "- The largest: " << formatNumber(worst->volume * unit, 4) << ' ' << unitName << " ("
+         << worst->particles << " particles) at " << formatPoint(worst->centroid)
+         << ", cut off between " << formatNumber(worst->closedAfter, 5) << " and "
+         << formatNumber(worst->closedBy, 5) << " s, last seen at "
+         << formatNumber(worst->lastSeen, 5) << " s.\n";
   }
   if (lastFeedingTime_ >= 0) {
-    text << "- Last feeding metal seen at " << number(lastFeedingTime_, 5)
-         << " s: " << lastFeedingParticles_ << " particles around " << point(lastFeedingCentroid_)
-         << ".\n";
+    text << "- Last feeding metal seen at " << formatNumber(lastFeedingTime_, 5)
+         << " s: " << lastFeedingParticles_ << " particles around "
+         << formatPoint(lastFeedingCentroid_) << ".\n";
   }
   ReportSection section;
   section.markdown = text.str();

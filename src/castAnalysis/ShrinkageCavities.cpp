@@ -19,16 +19,6 @@
 
 namespace sphcast {
 
-namespace {
-
-std::string number(double value, int digits = 6) {
-  char text[64];
-  std::snprintf(text, sizeof text, "%.*g", digits, value);
-  return text;
-}
-
-}  // namespace
-
 ShrinkageCavities::ShrinkageCavities(const std::string& name, const Dictionary& dict,
                                      const AnalysisContext& context)
     : CastAnalysis(name, dict, context, {"cloud", "molds", "voxelSize", "threshold"}) {
@@ -39,14 +29,9 @@ ShrinkageCavities::ShrinkageCavities(const std::string& name, const Dictionary& 
     for (const auto& other : context.clouds) {
       if (other != cloud_) molds_.push_back(other);
     }
-    const auto constantParticles = context.caseRoot / "constant" / "particles";
-    if (std::filesystem::exists(constantParticles)) {
-      for (const auto& entry : std::filesystem::directory_iterator(constantParticles)) {
-        const std::string other = entry.path().stem().string();
-        if (entry.path().extension() == ".vtp" && other != cloud_ &&
-            std::find(molds_.begin(), molds_.end(), other) == molds_.end()) {
-          molds_.push_back(other);
-        }
+    for (const auto& other : constantCloudNames()) {
+      if (other != cloud_ && std::find(molds_.begin(), molds_.end(), other) == molds_.end()) {
+        molds_.push_back(other);
       }
     }
   }
@@ -147,10 +132,11 @@ void ShrinkageCavities::add(const WrittenTime& time) {
         "time,cavities,cavityVolume,largestCavity,envelopeVolume,envelopeChange,"
         "massBalanceShrinkage\n";
   }
-  rows_ += number(time.folder.value, 12) + "," + std::to_string(voids.size()) + "," +
-           number(cavityVolume, 10) + "," + number(voids.empty() ? 0.0 : voids[0].volume, 10) +
-           "," + number(envelope, 10) + "," + number(envelope - firstEnvelope_, 10) + "," +
-           number(expected, 10) + "\n";
+  rows_ += formatNumber(time.folder.value, 12) + "," + std::to_string(voids.size()) + "," +
+           formatNumber(cavityVolume, 10) + "," +
+           formatNumber(voids.empty() ? 0.0 : voids[0].volume, 10) + "," +
+           formatNumber(envelope, 10) + "," + formatNumber(envelope - firstEnvelope_, 10) + "," +
+           formatNumber(expected, 10) + "\n";
 
   last_ = Last{};
   last_.timeName = time.folder.name;
@@ -165,9 +151,10 @@ void ShrinkageCavities::add(const WrittenTime& time) {
   csv << "cavity,volume,centroidX,centroidY,centroidZ,minX,minY,minZ,maxX,maxY,maxZ\n";
   for (std::size_t g = 0; g < voids.size(); ++g) {
     const EnclosedVoid& v = voids[g];
-    csv << g + 1 << ',' << number(v.volume, 10);
+    csv << g + 1 << ',' << formatNumber(v.volume, 10);
     for (const Vector* x : {&v.centroid, &v.lower, &v.upper}) {
-      csv << ',' << number((*x).x(), 8) << ',' << number((*x).y(), 8) << ',' << number((*x).z(), 8);
+      csv << ',' << formatNumber((*x).x(), 8) << ',' << formatNumber((*x).y(), 8) << ','
+          << formatNumber((*x).z(), 8);
     }
     csv << '\n';
   }
@@ -228,26 +215,27 @@ ReportSection ShrinkageCavities::finish() {
   const char* unit = twoD ? "mm^2" : "cm^3";
   std::ostringstream text;
   text << "At time " << last_.timeName << ": " << last_.count << " enclosed cavit"
-       << (last_.count == 1 ? "y" : "ies") << ", " << number(last_.total * toUnit, 4) << ' '
+       << (last_.count == 1 ? "y" : "ies") << ", " << formatNumber(last_.total * toUnit, 4) << ' '
        << unit;
   if (last_.count > 0) {
-    text << "; the largest " << number(last_.largest * toUnit, 4) << ' ' << unit << " at ("
-         << number(last_.largestAt.x(), 4) << ' ' << number(last_.largestAt.y(), 4) << ' '
-         << number(last_.largestAt.z(), 4) << ") m";
+    text << "; the largest " << formatNumber(last_.largest * toUnit, 4) << ' ' << unit << " at ("
+         << formatNumber(last_.largestAt.x(), 4) << ' ' << formatNumber(last_.largestAt.y(), 4)
+         << ' ' << formatNumber(last_.largestAt.z(), 4) << ") m";
   }
-  text << ".\n\n- The mass balance of rho_s asks for " << number(last_.expected * toUnit, 4) << ' '
-       << unit << " of shrinkage since the first time ("
-       << number(100 * last_.expected / firstBalance_, 3) << " % of the metal's volume);\n"
+  text << ".\n\n- The mass balance of rho_s asks for " << formatNumber(last_.expected * toUnit, 4)
+       << ' ' << unit << " of shrinkage since the first time ("
+       << formatNumber(100 * last_.expected / firstBalance_, 3) << " % of the metal's volume);\n"
        << "- the casting's envelope (cavities included) changed by "
-       << number((last_.envelope - firstEnvelope_) * toUnit, 4) << ' ' << unit
+       << formatNumber((last_.envelope - firstEnvelope_) * toUnit, 4) << ' ' << unit
        << " (a sink at the open surface shows here), the enclosed cavities hold "
-       << number(last_.total * toUnit, 4) << ' ' << unit << ";\n"
+       << formatNumber(last_.total * toUnit, 4) << ' ' << unit << ";\n"
        << "- the rest, "
-       << number((last_.expected + (last_.envelope - firstEnvelope_) - last_.total) * toUnit, 4)
+       << formatNumber((last_.expected + (last_.envelope - firstEnvelope_) - last_.total) * toUnit,
+                       4)
        << ' ' << unit
        << ", is contraction no particle shows (frozen metal keeps its place) and the voxels' "
           "error.\n\nVoxels of "
-       << number(last_.voxel, 3) << " m; void where metal and molds fill "
+       << formatNumber(last_.voxel, 3) << " m; void where metal and molds fill "
        << "less than " << threshold_ << " (cavities.csv by time; " << last_.timeName
        << "/cavities.csv each cavity; " << last_.timeName << "/occupancy.vti for ParaView).\n";
   section.markdown = text.str();

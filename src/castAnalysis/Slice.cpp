@@ -35,12 +35,6 @@ std::array<unsigned char, 3> colourOf(double f) {
   return c;
 }
 
-std::string number(double value) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.4g", value);
-  return text;
-}
-
 }  // namespace
 
 Slice::Slice(const std::string& name, const Dictionary& dict, const AnalysisContext& context)
@@ -162,7 +156,7 @@ void Slice::draw(const WrittenTime& time) {
     }
   }
   if (dots.empty()) {
-    warning("slice " + name_ + ": no particle within " + number(thickness_ / 2) +
+    warning("slice " + name_ + ": no particle within " + formatNumber(thickness_ / 2, 4) +
             " m of the plane at time " + time.folder.name);
     return;
   }
@@ -215,20 +209,21 @@ void Slice::draw(const WrittenTime& time) {
   writer->Write();
   if (writer->GetErrorCode() != 0) throw Error("could not write " + png.string());
   drawn_.push_back(name_ + "/" + time.folder.name + "/" + field_ + ".png");
-  captions_.push_back("time " + time.folder.name + ": " + field_ + " from " + number(low) +
-                      " (blue) to " + number(high) + " (red), grey: clouds without it; " +
+  captions_.push_back("time " + time.folder.name + ": " + field_ + " from " + formatNumber(low, 4) +
+                      " (blue) to " + formatNumber(high, 4) + " (red), grey: clouds without it; " +
                       std::to_string(width) + " x " + std::to_string(height) + " pixels of " +
-                      number(pixel * 1e3) + " mm");
+                      formatNumber(pixel * 1e3, 4) + " mm");
   info() << "    " << name_ << ": wrote " << png.string() << '\n';
 }
 
 ReportSection Slice::finish() {
   if (!allTimes_ && !latest_.folder.name.empty()) draw(latest_);
   ReportSection section;
-  section.markdown = "A slice " + number(thickness_ * 1e3) + " mm thick through (" +
-                     number(point_.x()) + " " + number(point_.y()) + " " + number(point_.z()) +
-                     ") normal to (" + number(normal_.x()) + " " + number(normal_.y()) + " " +
-                     number(normal_.z()) + "):\n";
+  section.markdown = "A slice " + formatNumber(thickness_ * 1e3, 4) + " mm thick through (" +
+                     formatNumber(point_.x(), 4) + " " + formatNumber(point_.y(), 4) + " " +
+                     formatNumber(point_.z(), 4) + ") normal to (" + formatNumber(normal_.x(), 4) +
+                     " " + formatNumber(normal_.y(), 4) + " " + formatNumber(normal_.z(), 4) +
+                     "):\n";
   // one picture in the one-page report: the latest; the others are listed by folder
   if (!captions_.empty()) section.markdown += "- " + captions_.back() + "\n";
   if (drawn_.size() > 1) {

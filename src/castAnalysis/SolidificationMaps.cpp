@@ -14,21 +14,6 @@
 
 namespace sphcast {
 
-namespace {
-
-std::string number(double value, int digits = 4) {
-  if (!std::isfinite(value)) return "nan";
-  char text[64];
-  std::snprintf(text, sizeof text, "%.*g", digits, value);
-  return text;
-}
-
-std::string point(const Vector& x) {
-  return "(" + number(x.x()) + " " + number(x.y()) + " " + number(x.z()) + ") m";
-}
-
-}  // namespace
-
 SolidificationMaps::SolidificationMaps(const std::string& name, const Dictionary& dict,
                                        const AnalysisContext& context)
     : CastAnalysis(name, dict, context,
@@ -93,24 +78,16 @@ void SolidificationMaps::add(const WrittenTime& time) {
   previousTime_ = t;
   if (!fillEndTaken_ && (!fillEndGiven_ || t >= fillEnd_)) {
     const auto& T = cloud->scalarField("T");
+    const Material& material = materialOf(cloud_, "solidificationMaps");
     for (std::size_t i = 0; i < ids.size(); ++i) {
       fillEndTemperature_[ids[i]] = T[i];
-      fillEndSolidFraction_[ids[i]] = solidFraction(T[i]);
+      fillEndSolidFraction_[ids[i]] = solidFraction(material, T[i]);
     }
     fillEndTaken_ = true;
   }
   last_ = *cloud;
   lastTimeName_ = time.folder.name;
   lastTime_ = t;
-}
-
-double SolidificationMaps::solidFraction(double temperature) const {
-  const Material& material = materialOf(cloud_, "solidificationMaps");
-  const InternalEnergyTable& u = material.requireInternalEnergy("solidificationMaps");
-  const FreezingRange& range = *material.freezingRange;
-  const double liquidus = u.energy(Real(range.liquidus));
-  const double solidus = u.energy(Real(range.solidus));
-  return std::clamp((liquidus - u.energy(Real(temperature))) / (liquidus - solidus), 0.0, 1.0);
 }
 
 ReportSection SolidificationMaps::finish() {
@@ -204,9 +181,9 @@ ReportSection SolidificationMaps::finish() {
                              : Real(-1);
     }
     text << "Secondary dendrite arm spacing lambda_2 = " << A << " t_f^" << exponent
-         << " m; dimensionless Niyama with mu_l = " << number(muLiquid)
-         << " Pa s, beta = " << number(beta) << ", dT_f = " << number(deltaTf)
-         << " K, dP_cr = " << number(criticalPressureDrop_) << " Pa.\n\n";
+         << " m; dimensionless Niyama with mu_l = " << formatNumber(muLiquid, 4)
+         << " Pa s, beta = " << formatNumber(beta, 4) << ", dT_f = " << formatNumber(deltaTf, 4)
+         << " K, dP_cr = " << formatNumber(criticalPressureDrop_, 4) << " Pa.\n\n";
   } else {
     text << "No secondary arm spacing or dimensionless Niyama: material " << material.name
          << " gives no dendriteArmSpacing (A n).\n\n";
@@ -237,26 +214,27 @@ ReportSection SolidificationMaps::finish() {
   text << "At time " << lastTimeName_ << ": " << solidCount << " of " << n
        << " particles have reached the solidus.\n\n";
   if (lastSolid < n) {
-    text << "- Last to solidify: " << point(last_.positions()[lastSolid]) << " at "
-         << number(solidification[lastSolid], 5) << " s"
+    text << "- Last to solidify: " << formatPoint(last_.positions()[lastSolid]) << " at "
+         << formatNumber(solidification[lastSolid], 5) << " s"
          << (solidCount < n ? " (of those solid so far)" : "") << ".\n"
-         << "- Local freezing time: " << number(freezingMin) << " to " << number(freezingMax)
-         << " s.\n";
+         << "- Local freezing time: " << formatNumber(freezingMin, 4) << " to "
+         << formatNumber(freezingMax, 4) << " s.\n";
   }
   if (worstNiyama < n) {
-    text << "- Niyama minimum: " << number(niyama[worstNiyama]) << " (K s)^0.5/mm at "
-         << point(last_.positions()[worstNiyama]) << " (G " << number(gradient[worstNiyama])
-         << " K/m, cooling " << number(rate[worstNiyama]) << " K/s); " << belowThreshold << " of "
-         << mapped << " particles below " << niyamaThreshold_ << " (K s)^0.5/mm.\n";
+    text << "- Niyama minimum: " << formatNumber(niyama[worstNiyama], 4) << " (K s)^0.5/mm at "
+         << formatPoint(last_.positions()[worstNiyama]) << " (G "
+         << formatNumber(gradient[worstNiyama], 4) << " K/m, cooling "
+         << formatNumber(rate[worstNiyama], 4) << " K/s); " << belowThreshold << " of " << mapped
+         << " particles below " << niyamaThreshold_ << " (K s)^0.5/mm.\n";
     text << "- " << underResolved << " of " << mapped
          << " particles passed T_c where the freezing range was thinner than a spacing "
             "(mushyZoneSpacings < 1): their cooling rates read low and their Niyama values "
             "high; refine there.\n";
   }
   text << "- T_c = "
-       << number(range.solidus + SolidificationSettings{}.criticalTemperatureFraction *
-                                     (range.liquidus - range.solidus),
-                 6)
+       << formatNumber(range.solidus + SolidificationSettings{}.criticalTemperatureFraction *
+                                           (range.liquidus - range.solidus),
+                       6)
        << " K; crossing times, cooling rates and G (" << fromSolver << " of " << n
        << " particles) from the heat step that crossed it"
        << (fromSolver < n ? "; the other G from the written times, interpolated in time" : "")

@@ -50,7 +50,6 @@ class SolidificationMaps : public CastAnalysis {
 
  private:
   static bool hasHistory(const ParticleCloud& cloud);
-  double solidFraction(double temperature) const;  // from the material's u(T)
 
   std::string cloud_;
   double fillEnd_ = 0;

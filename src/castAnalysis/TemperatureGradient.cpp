@@ -20,8 +20,8 @@ std::vector<Vector> temperatureGradient(const ParticleCloud& cloud, Real support
 #pragma omp parallel for schedule(dynamic, 256)
   for (std::ptrdiff_t k = 0; k < count; ++k) {
     const auto i = static_cast<std::size_t>(k);
-    result[i] = correctedGradient(cloud, T, volume, pairs, PeriodicBox(), supportRadius,
-                                  dimension, i);
+    result[i] =
+        correctedGradient(cloud, T, volume, pairs, PeriodicBox(), supportRadius, dimension, i);
   }
   return result;
 }

@@ -13,17 +13,6 @@
 
 namespace sphcast {
 
-namespace {
-
-std::string number(double value, int digits = 6) {
-  if (!std::isfinite(value)) return "nan";
-  char text[64];
-  std::snprintf(text, sizeof text, "%.*g", digits, value);
-  return text;
-}
-
-}  // namespace
-
 Thermocouples::Thermocouples(const std::string& name, const Dictionary& dict,
                              const AnalysisContext& context)
     : CastAnalysis(name, dict, context, {"cloud", "locations", "probes", "supportRadius"}) {
@@ -106,8 +95,8 @@ ReportSection Thermocouples::finish() {
   for (const auto& name : names_) csv += "," + name;
   csv += '\n';
   for (std::size_t r = 0; r < times_.size(); ++r) {
-    csv += number(times_[r], 12);
-    for (const auto& curve : temperatures_) csv += "," + number(curve[r], 10);
+    csv += formatNumber(times_[r], 12);
+    for (const auto& curve : temperatures_) csv += "," + formatNumber(curve[r], 10);
     csv += '\n';
   }
   writeFileAtomically(out / "temperature.csv", csv);
@@ -125,14 +114,16 @@ ReportSection Thermocouples::finish() {
     const auto at = [&](const CoolingCurveBreak& b, bool temperature) {
       return !b.found ? nan : temperature ? b.temperature : b.time;
     };
-    breaks << names_[k] << ',' << number(liquidusTime, 10) << ',' << number(solidusTime, 10) << ','
-           << number(solidusTime - liquidusTime, 10) << ',' << number(at(found.arrest, false), 10)
-           << ',' << number(at(found.arrest, true), 10) << ',' << number(at(found.end, false), 10)
-           << ',' << number(at(found.end, true), 10) << '\n';
-    report << "| " << names_[k] << " | " << number(liquidusTime, 4) << " / "
-           << number(solidusTime, 4) << " | " << number(solidusTime - liquidusTime, 4) << " | "
-           << number(at(found.arrest, true), 5) << " / " << number(at(found.end, true), 5)
-           << " |\n";
+    breaks << names_[k] << ',' << formatNumber(liquidusTime, 10) << ','
+           << formatNumber(solidusTime, 10) << ',' << formatNumber(solidusTime - liquidusTime, 10)
+           << ',' << formatNumber(at(found.arrest, false), 10) << ','
+           << formatNumber(at(found.arrest, true), 10) << ','
+           << formatNumber(at(found.end, false), 10) << ',' << formatNumber(at(found.end, true), 10)
+           << '\n';
+    report << "| " << names_[k] << " | " << formatNumber(liquidusTime, 4) << " / "
+           << formatNumber(solidusTime, 4) << " | " << formatNumber(solidusTime - liquidusTime, 4)
+           << " | " << formatNumber(at(found.arrest, true), 5) << " / "
+           << formatNumber(at(found.end, true), 5) << " |\n";
   }
   writeFileAtomically(out / "breaks.csv", breaks.str());
   report << "\nLiquidus " << liquidus_ << " K, solidus " << solidus_ << " K; "

@@ -50,10 +50,7 @@ std::vector<std::string> cellsOf(const std::string& row) {
 std::string shortNumber(const std::string& cell) {
   char* end = nullptr;
   const double value = std::strtod(cell.c_str(), &end);
-  if (end == cell.c_str()) return cell;
-  char text[32];
-  std::snprintf(text, sizeof text, "%.6g", value);
-  return text;
+  return end == cell.c_str() ? cell : formatNumber(value, 6);
 }
 
 int column(const std::string& name) {
@@ -201,28 +198,8 @@ void TimeSeries::add(const WrittenTime& time) {
 
 ReportSection TimeSeries::finish() {
   const auto out = folder();
-  std::vector<std::filesystem::path> files;
-  for (const auto& [cloud, csv] : csv_) {
-    const auto file = out / (cloud + ".csv");
-    std::string content = csv;
-    if (!context_.allTimes && std::filesystem::exists(file)) {
-      std::ostringstream existing;
-      existing << std::ifstream(file).rdbuf();
-      content = mergeCloudSummaryCsv(existing.str(), csv);  // by time, as cloudSummary does
-    }
-    writeFileAtomically(file, content);
-    info() << "    " << name_ << ": wrote " << file.string() << '\n';
-  }
-  if (!energy_.empty()) {
-    const auto file = out / "energyBalance.csv";
-    std::string content = energy_;
-    if (!context_.allTimes && std::filesystem::exists(file)) {
-      std::ostringstream existing;
-      existing << std::ifstream(file).rdbuf();
-      content = mergeCloudSummaryCsv(existing.str(), energy_);
-    }
-    writeFileAtomically(file, content);
-  }
+  for (const auto& [cloud, csv] : csv_) writeRowsByTime(cloud + ".csv", csv);
+  if (!energy_.empty()) writeRowsByTime("energyBalance.csv", energy_);
   // one plot per quantity, every cloud in it
   struct Figure {
     const char* file;

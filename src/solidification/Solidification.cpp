@@ -50,9 +50,12 @@ const std::vector<std::string>& Solidification::historyFields() {
   return names;
 }
 
-Real Solidification::solidFraction(Real temperature) const {
-  const Real released = liquidusEnergy_ - material_.internalEnergy->energy(temperature);
-  return std::clamp(released / freezingRangeEnergy_, Real(0), Real(1));
+Real solidFraction(const Material& material, Real temperature) {
+  const FreezingRange& range = material.requireFreezingRange("the solid fraction");
+  const InternalEnergyTable& u = material.requireInternalEnergy("the solid fraction");
+  const Real liquidus = u.energy(static_cast<Real>(range.liquidus));
+  const Real solidus = u.energy(static_cast<Real>(range.solidus));
+  return std::clamp((liquidus - u.energy(temperature)) / (liquidus - solidus), Real(0), Real(1));
 }
 
 void Solidification::update(double time, double heatDeltaT) {

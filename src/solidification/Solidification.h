@@ -70,6 +70,10 @@ struct SolidificationSummary {
   double solidFraction = 0;       // mass-weighted mean of f_s
 };
 
+// f_s at temperature T of a material with a freezing range and u(T) (the formula above), for
+// code without a cloud (castPostProcess's maps of a time written before the solver ran).
+Real solidFraction(const Material& material, Real temperature);
+
 class Solidification {
  public:
   // material: the metal's, with liquidus, solidus, internalEnergy, density and viscosity.
@@ -87,9 +91,6 @@ class Solidification {
 
   // The particles that crossed T_c and whose criticalGradient is not yet written (-1).
   std::vector<std::size_t> pendingCriticalGradients() const;
-
-  // The solid fraction at temperature T.
-  Real solidFraction(Real temperature) const;
 
   const SolidificationSettings& settings() const { return settings_; }
   SolidificationSummary summary() const;
