@@ -19,6 +19,37 @@
 
 namespace sphcast {
 
+namespace {
+
+// The voxels of the last time for ParaView: metal and molds fill (contour metal at the threshold).
+void writeOccupancy(const VoxelOccupancy& occupancy, const std::filesystem::path& file) {
+  vtkNew<vtkImageData> image;
+  const auto [nx, ny, nz] = occupancy.counts();
+  image->SetDimensions(nx, ny, nz);
+  image->SetOrigin(double(occupancy.origin().x()), double(occupancy.origin().y()),
+                   double(occupancy.origin().z()));
+  const double voxel = double(occupancy.voxel());
+  image->SetSpacing(voxel, voxel, voxel);
+  for (const auto& [channel, label] : {std::pair{0, "metal"}, std::pair{1, "molds"}}) {
+    vtkNew<vtkFloatArray> array;
+    array->SetName(label);
+    array->SetNumberOfValues(vtkIdType(occupancy.size()));
+    for (std::size_t v = 0; v < occupancy.size(); ++v) {
+      array->SetValue(vtkIdType(v), occupancy.channel(channel)[v]);
+    }
+    image->GetPointData()->AddArray(array);
+  }
+  vtkNew<vtkXMLImageDataWriter> writer;
+  writer->SetFileName((file.string() + ".tmp").c_str());
+  writer->SetInputData(image);
+  writer->SetDataModeToAppended();
+  writer->SetCompressorTypeToZLib();
+  if (writer->Write() != 1) throw Error("could not write " + file.string());
+  std::filesystem::rename(file.string() + ".tmp", file);
+}
+
+}  // namespace
+
 ShrinkageCavities::ShrinkageCavities(const std::string& name, const Dictionary& dict,
                                      const AnalysisContext& context)
     : CastAnalysis(name, dict, context, {"cloud", "molds", "voxelSize", "threshold"}) {
@@ -144,7 +175,6 @@ void ShrinkageCavities::add(const WrittenTime& time) {
   last_.balance = balance;
   last_.envelope = envelope;
   last_.expected = expected;
-  last_.voxel = double(voxel);
   last_.count = voids.size();
   last_.total = cavityVolume;
   std::ostringstream csv;
@@ -163,40 +193,7 @@ void ShrinkageCavities::add(const WrittenTime& time) {
     last_.largest = voids[0].volume;
     last_.largestAt = voids[0].centroid;
   }
-  // the voxels of the latest time for ParaView (the folder is this time's; an earlier time's
-  // image is replaced by the next)
-  const auto out = folder() / time.folder.name;
-  std::filesystem::create_directories(out);
-  vtkNew<vtkImageData> image;
-  const auto [nx, ny, nz] = occupancy.counts();
-  image->SetDimensions(nx, ny, nz);
-  image->SetOrigin(double(occupancy.origin().x()), double(occupancy.origin().y()),
-                   double(occupancy.origin().z()));
-  image->SetSpacing(double(voxel), double(voxel), double(voxel));
-  for (const auto& [channel, label] : {std::pair{0, "metal"}, std::pair{1, "molds"}}) {
-    vtkNew<vtkFloatArray> array;
-    array->SetName(label);
-    array->SetNumberOfValues(vtkIdType(occupancy.size()));
-    for (std::size_t v = 0; v < occupancy.size(); ++v) {
-      array->SetValue(vtkIdType(v), occupancy.channel(channel)[v]);
-    }
-    image->GetPointData()->AddArray(array);
-  }
-  vtkNew<vtkXMLImageDataWriter> writer;
-  const auto file = out / "occupancy.vti";
-  writer->SetFileName((file.string() + ".tmp").c_str());
-  writer->SetInputData(image);
-  writer->SetDataModeToAppended();
-  writer->SetCompressorTypeToZLib();
-  if (writer->Write() != 1) throw Error("could not write " + file.string());
-  std::filesystem::rename(file.string() + ".tmp", file);
-  // keep only the latest time's image
-  if (!previousImageFolder_.empty() && previousImageFolder_ != out) {
-    std::filesystem::remove(previousImageFolder_ / "occupancy.vti");
-    std::error_code ignored;
-    std::filesystem::remove(previousImageFolder_, ignored);  // if empty
-  }
-  previousImageFolder_ = out;
+  lastOccupancy_ = std::move(occupancy);  // its image is written once, in finish()
 }
 
 ReportSection ShrinkageCavities::finish() {
@@ -207,7 +204,9 @@ ReportSection ShrinkageCavities::finish() {
   }
   const auto out = folder();
   writeFileAtomically(out / "cavities.csv", rows_);
+  std::filesystem::create_directories(out / last_.timeName);
   writeFileAtomically(out / last_.timeName / "cavities.csv", last_.cavities);
+  writeOccupancy(*lastOccupancy_, out / last_.timeName / "occupancy.vti");
   info() << "    " << name_ << ": wrote " << (out / "cavities.csv").string() << " and "
          << (out / last_.timeName / "occupancy.vti").string() << '\n';
   const bool twoD = context_.dimension == 2;
@@ -235,7 +234,7 @@ ReportSection ShrinkageCavities::finish() {
        << ' ' << unit
        << ", is contraction no particle shows (frozen metal keeps its place) and the voxels' "
           "error.\n\nVoxels of "
-       << formatNumber(last_.voxel, 3) << " m; void where metal and molds fill "
+       << formatNumber(double(lastOccupancy_->voxel()), 3) << " m; void where metal and molds fill "
        << "less than " << threshold_ << " (cavities.csv by time; " << last_.timeName
        << "/cavities.csv each cavity; " << last_.timeName << "/occupancy.vti for ParaView).\n";
   section.markdown = text.str();

@@ -1,10 +1,12 @@
 #pragma once
 
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "castAnalysis/CastAnalysis.h"
+#include "castAnalysis/VoxelOccupancy.h"
 
 namespace sphcast {
 
@@ -49,13 +51,13 @@ class ShrinkageCavities : public CastAnalysis {
   double firstBalance_ = -1, firstEnvelope_ = -1;
   struct Last {
     std::string timeName;
-    double time = 0, balance = 0, envelope = 0, expected = 0, voxel = 0;
+    double time = 0, balance = 0, envelope = 0, expected = 0;
     std::string cavities;  // the per-cavity CSV
     std::size_t count = 0;
     double total = 0, largest = 0;
     Vector largestAt = Vector::Zero();
   } last_;
-  std::filesystem::path previousImageFolder_;
+  std::optional<VoxelOccupancy> lastOccupancy_;
 };
 
 }  // namespace sphcast
