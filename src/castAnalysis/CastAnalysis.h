@@ -21,7 +21,8 @@ namespace sphcast {
 //   TC        { type thermocouples; cloud metal; locations { centre (0 0 0.03); } }
 //   maps      { type solidificationMaps; cloud metal; }
 //
-// Each writes to postProcessing/<name>/ and gives a section of postProcessing/castReport.md.
+// Each writes to postProcessing/<name>/ and gives a section of the case's report,
+// postProcessing/castReport.md, which castPostProcess writes (CastReport.h).
 // They see the selected time folders one at a time, in time order, so memory holds one time
 // (plus what an analysis keeps per particle), whatever the number of writes.
 
@@ -44,7 +45,8 @@ struct AnalysisContext {
   std::map<std::string, Material> materials;  // of the heat clouds (constant/physicsModels)
 };
 
-// What an analysis adds to castReport.md: markdown, and PNGs relative to postProcessing/.
+// What an analysis adds to the case's report (CastReport.h): markdown, and PNGs relative to
+// postProcessing/.
 struct ReportSection {
   std::string markdown;
   std::vector<std::string> images;
