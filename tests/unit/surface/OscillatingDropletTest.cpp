@@ -7,8 +7,8 @@
 // relaxes with damped velocities first; then it gets the velocity of the mode's potential flow
 // (2D: u = A (x, -y); 3D: u = A (-x, -y, 2 z)), and the amplitude is read from the second moments
 // of the particle positions, about their mean over the run (a relaxed 3D drop keeps an offset
-// as large as the mode, so its moment never crossed zero). Also the static drop's pressure
-// against Laplace's jump.
+// as large as the mode, so its moment never crosses zero; doc/validation.md §2). Also the
+// static drop's pressure against Laplace's jump.
 //
 // One check, the n = 2 period at 30 particles across in 2D; the rest are studies (their results
 // in doc/validation.md §2), run by hand with switches in the environment:
