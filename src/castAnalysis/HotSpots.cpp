@@ -9,7 +9,7 @@
 #include "core/Log.h"
 #include "particles/CellGrid.h"
 #include "particles/NeighbourList.h"
-#include "sph/CorrectedGradient.h"
+#include "sph/ParticleVolumes.h"
 
 namespace sphcast {
 

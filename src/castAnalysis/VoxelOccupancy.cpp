@@ -5,7 +5,7 @@
 
 #include "core/Error.h"
 #include "particles/WendlandKernel.h"
-#include "sph/CorrectedGradient.h"
+#include "sph/ParticleVolumes.h"
 
 namespace sphcast {
 

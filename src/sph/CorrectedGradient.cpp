@@ -2,7 +2,6 @@
 
 #include <Eigen/Dense>
 
-#include "core/Error.h"
 #include "particles/WendlandKernel.h"
 
 namespace sphcast {
@@ -41,25 +40,6 @@ Vector correctedGradient(const ParticleCloud& cloud, const std::vector<Real>& fi
                          std::size_t i) {
   return dimension == 2 ? gradientAt<2>(cloud, field, volume, pairs, periodic, supportRadius, i)
                         : gradientAt<3>(cloud, field, volume, pairs, periodic, supportRadius, i);
-}
-
-std::vector<Real> particleVolumes(const ParticleCloud& cloud, int dimension) {
-  std::vector<Real> volume(cloud.size());
-  if (cloud.hasScalarField("mass") && cloud.hasScalarField("rho")) {
-    for (std::size_t j = 0; j < cloud.size(); ++j) {
-      volume[j] = cloud.scalarField("mass")[j] / cloud.scalarField("rho")[j];
-    }
-    return volume;
-  }
-  if (cloud.hasScalarField("volume")) return cloud.scalarField("volume");
-  const auto spacing = cloud.attributes().find("spacing");
-  if (spacing == cloud.attributes().end()) {
-    throw Error("cloud '" + cloud.name() +
-                "' has no volume, mass and rho, or spacing: its particles' volumes are unknown");
-  }
-  const Real dx = Real(spacing->second);
-  std::fill(volume.begin(), volume.end(), dimension == 2 ? dx * dx : dx * dx * dx);
-  return volume;
 }
 
 }  // namespace sphcast

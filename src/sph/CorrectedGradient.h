@@ -7,6 +7,7 @@
 #include "particles/CellGrid.h"
 #include "particles/NeighbourList.h"
 #include "particles/ParticleCloud.h"
+#include "sph/ParticleVolumes.h"
 
 namespace sphcast {
 
@@ -25,9 +26,5 @@ Vector correctedGradient(const ParticleCloud& cloud, const std::vector<Real>& fi
                          const std::vector<Real>& volume, const NeighbourList& pairs,
                          const PeriodicBox& periodic, Real supportRadius, int dimension,
                          std::size_t i);
-
-// V_j of a cloud: mass / rho (the volume now: a fluid's `volume` field is the one setCastFields
-// gave it), else volume (mold particles), else spacing^dimension.
-std::vector<Real> particleVolumes(const ParticleCloud& cloud, int dimension);
 
 }  // namespace sphcast

@@ -9,18 +9,6 @@
 
 namespace sphcast {
 
-std::vector<Real> particleVolumes(const ParticleCloud& cloud) {
-  std::vector<Real> volume(cloud.size());
-  if (cloud.hasScalarField("mass") && cloud.hasScalarField("rho")) {
-    const auto& mass = cloud.scalarField("mass");
-    const auto& rho = cloud.scalarField("rho");
-    for (std::size_t i = 0; i < volume.size(); ++i) volume[i] = mass[i] / rho[i];
-  } else {
-    volume = cloud.scalarField("volume");  // throws, listing the fields the cloud has
-  }
-  return volume;
-}
-
 namespace {
 
 template <int Dim>
@@ -101,14 +89,14 @@ void ExposedArea::computeIn() {
   const bool gradientForm = form_ == ExposedAreaForm::gradient;
   coveringVolume_.resize(covering_.size());
   for (std::size_t c = 0; c < covering_.size(); ++c) {
-    coveringVolume_[c] = particleVolumes(*covering_[c]);
+    coveringVolume_[c] = particleVolumes(*covering_[c], dimension_);
   }
   auto passWith = [&](auto separation) {
     for (ParticleCloud* cloud : exposed_) {
       // an exposed cloud covers too (the solver's and the tests' do): its volumes are there
       const auto self = std::find(covering_.begin(), covering_.end(), cloud);
       const std::vector<Real> ownVolume =
-          self == covering_.end() ? particleVolumes(*cloud) : std::vector<Real>();
+          self == covering_.end() ? particleVolumes(*cloud, dimension_) : std::vector<Real>();
       const std::vector<Real>& volume =
           self == covering_.end()
               ? ownVolume

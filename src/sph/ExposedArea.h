@@ -5,6 +5,7 @@
 
 #include "particles/Neighbourhood.h"
 #include "particles/ParticleCloud.h"
+#include "sph/ParticleVolumes.h"
 
 namespace sphcast {
 
@@ -27,7 +28,7 @@ enum class ExposedAreaForm {
 //                                              covering cloud (metal and molds alike: a face
 //                                              against the mold is not exposed to the air)
 //
-// by either form above, with V = mass / rho where a cloud has both, else its `volume` field.
+// by either form above, with V from particleVolumes (ParticleVolumes.h: mass / rho, else volume).
 // R_A is calibrated for the form, the dimension and h/dx by calibratedAreaFactor(): the sum of
 // A_i over a column of a semi-infinite cubic lattice under a flat free surface is exactly the
 // column's cross-section dx^(d-1). At h = 3 dx: R_A = 2.00 (3D) and 2.01 (2D) for the gradient
@@ -109,7 +110,5 @@ Real flatSurfaceExposureSum(const Kernel& kernel, Real supportRadius, Real spaci
   return columnSum;
 }
 
-// V_i of every particle of a cloud: mass / rho where it has both, else its `volume`.
-std::vector<Real> particleVolumes(const ParticleCloud& cloud);
 
 }  // namespace sphcast

@@ -156,7 +156,7 @@ void SurfaceEnergyTension::computeEnergy() {
   constexpr Real roundOff = std::is_same_v<Real, float> ? Real(1e-5) : Real(1e-9);
   const std::size_t n = fluid_.size();
   updateGasTension();
-  volume_ = particleVolumes(fluid_);
+  volume_ = particleVolumes(fluid_, settings_.dimension);
   energyDerivative_.resize(n);
   explicitDensityDerivative_.resize(n);
   wallForce_.resize(n);
