@@ -232,9 +232,7 @@ ReportSection SolidificationMaps::finish() {
             "high; refine there.\n";
   }
   text << "- T_c = "
-       << formatNumber(range.solidus + SolidificationSettings{}.criticalTemperatureFraction *
-                                           (range.liquidus - range.solidus),
-                       6)
+       << formatNumber(criticalTemperature(range), 6)
        << " K; crossing times, cooling rates and G (" << fromSolver << " of " << n
        << " particles) from the heat step that crossed it"
        << (fromSolver < n ? "; the other G from the written times, interpolated in time" : "")

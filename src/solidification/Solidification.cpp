@@ -19,10 +19,10 @@ Solidification::Solidification(SolidificationSettings settings, const Material& 
   liquidusEnergy_ = energy.energy(static_cast<Real>(range.liquidus));
   solidusEnergy_ = energy.energy(static_cast<Real>(range.solidus));
   freezingRangeEnergy_ = liquidusEnergy_ - solidusEnergy_;
-  const double criticalTemperature =
-      range.solidus + settings_.criticalTemperatureFraction * (range.liquidus - range.solidus);
-  criticalEnergy_ = energy.energy(static_cast<Real>(criticalTemperature));
-  criticalSpecificHeat_ = energy.specificHeat(static_cast<Real>(criticalTemperature));
+  const auto tc =
+      static_cast<Real>(criticalTemperature(range, settings_.criticalTemperatureFraction));
+  criticalEnergy_ = energy.energy(tc);
+  criticalSpecificHeat_ = energy.specificHeat(tc);
   if (!metal_.hasScalarField("T")) {
     throw Error("solidification needs the temperature T of cloud '" + metal_.name() +
                 "': heatTransfer must carry it (its clouds)");
@@ -48,6 +48,10 @@ const std::vector<std::string>& Solidification::historyFields() {
   static const std::vector<std::string> names{"liquidusTime", "criticalTime", "coolingRate",
                                               "solidusTime", "criticalGradient"};
   return names;
+}
+
+double criticalTemperature(const FreezingRange& range, double fraction) {
+  return range.solidus + fraction * (range.liquidus - range.solidus);
 }
 
 Real solidFraction(const Material& material, Real temperature) {

@@ -74,6 +74,10 @@ struct SolidificationSummary {
 // code without a cloud (castPostProcess's maps of a time written before the solver ran).
 Real solidFraction(const Material& material, Real temperature);
 
+// T_c = T_sol + fraction (T_liq - T_sol), the Niyama criterion's temperature (above).
+double criticalTemperature(const FreezingRange& range,
+                           double fraction = SolidificationSettings{}.criticalTemperatureFraction);
+
 class Solidification {
  public:
   // material: the metal's, with liquidus, solidus, internalEnergy, density and viscosity.
