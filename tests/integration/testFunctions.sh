@@ -171,20 +171,26 @@ findVtkPython() {
     exit 77
 }
 
-# runValidationTutorial CASE ARGS...: tutorials/validation/CASE copied into the scratch folder,
-# laid out as in the project (beside an etc/ with RunFunctions and functionObjectSeries.py and a
-# platforms/bin that is $SPHCAST_BIN), cleaned and run with `Allrun ARGS` (PYTHON=$python: call
-# findVtkPython first); a failed Allrun fails the test with its log. Leaves the working
-# directory in the copy.
-runValidationTutorial() {
-    local case=$1 project
-    shift
+# copyTutorial PATH: tutorials/PATH copied into the scratch folder, laid out as in the project
+# (beside an etc/ with RunFunctions and functionObjectSeries.py and a platforms/bin that is
+# $SPHCAST_BIN), and cleaned. Leaves the working directory in the copy.
+copyTutorial() {
+    local path=$1 project
     project=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
-    mkdir -p "$scratch/etc" "$scratch/platforms" "$scratch/tutorials/validation"
+    mkdir -p "$scratch/etc" "$scratch/platforms" "$scratch/tutorials/$(dirname "$path")"
     cp "$project/etc/RunFunctions" "$project/etc/functionObjectSeries.py" "$scratch/etc/"
     [ -e "$scratch/platforms/bin" ] || ln -s "$SPHCAST_BIN" "$scratch/platforms/bin"
-    cp -r "$project/tutorials/validation/$case" "$scratch/tutorials/validation/"
-    cd "$scratch/tutorials/validation/$case" || fail "cannot enter the copy of $case"
-    (./Allclean > /dev/null && PYTHON=$python ./Allrun "$@" > log.Allrun 2>&1) ||
-        { cat log.Allrun >&2; fail "$case: Allrun $*"; }
+    cp -r "$project/tutorials/$path" "$scratch/tutorials/$(dirname "$path")/"
+    cd "$scratch/tutorials/$path" || fail "cannot enter the copy of $path"
+    ./Allclean > /dev/null || fail "$path: Allclean"
+}
+
+# runValidationTutorial CASE ARGS...: tutorials/validation/CASE copied (copyTutorial) and run
+# with `Allrun ARGS` (PYTHON=$python: call findVtkPython first); a failed Allrun fails the test
+# with its log. Leaves the working directory in the copy.
+runValidationTutorial() {
+    local case=$1
+    shift
+    copyTutorial "validation/$case"
+    PYTHON=$python ./Allrun "$@" > log.Allrun 2>&1 || { cat log.Allrun >&2; fail "$case: Allrun $*"; }
 }

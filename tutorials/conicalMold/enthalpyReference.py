@@ -8,9 +8,9 @@ fills the frustum r <= 25 mm + 30 mm z / 80 mm, 0 <= z <= H = 68.84 mm at 970 K;
 (floor and side) are held at 300 K, its top is adiabatic. Explicit in time on a grid of square
 cells (the side wall is a staircase: cells whose centre lies inside belong to the melt, a face to
 a cell outside is the wall, at 300 K, half a cell away). Density 2398.8 kg/m^3 throughout (the
-mass of the melt in the mold's volume; the conduction leaves the shrinkage out). The solid fraction is the SPH's:
-the share of the heat between liquidus and solidus given up, f_s = (u(T_liq) - u) / (u(T_liq)
-- u(T_sol)), clamped to [0, 1].
+mass of the melt in the mold's volume; the conduction leaves the shrinkage out). The solid
+fraction is the SPH's: the share of the heat between liquidus and solidus given up, f_s =
+(u(T_liq) - u) / (u(T_liq) - u(T_sol)), clamped to [0, 1].
 
 Feeding (the sink's shape, the classic level-drop picture of a pipe): a cell feeds until its
 solid fraction reaches the frozen fraction f_c (the SPH's frozenSolidFraction, 0.5); while it
@@ -83,6 +83,7 @@ class Feeding:
         self.frozen = set()
         self.top = {}  # column -> the level at which its surface cell froze
         self.drawn = self.enclosed = 0.0
+        self.volume = sum((i + 0.5) * cell * cell * dz for (i, j) in cells)  # the melt's, at start
 
     def surface_row(self):
         return min(int(self.level / self.dz), int(round(HEIGHT / self.dz)) - 1)
