@@ -42,8 +42,10 @@ sphCastFoam > log 2>&1 || { tail -20 log >&2; fail "the stream's run failed"; }
 grep -q "^Stopping: the casting is solid (endWhenSolid)" log || fail "the stream did not end solid"
 # every log line: T within [300, 970] K and max|U| below twice the fastest landing speed
 awk '/^T metal/ { if ($3 < 300 - 1e-9 || $5 > 970 + 1e-9) badT = 1; n++ }
-     /max\|U\|/ { for (i = 1; i < NF; i++) if ($i == "max|U|" && $(i + 1) > fastest) fastest = $(i + 1) }
-     END { printf "fastest log line: max|U| %.3f m/s\n", fastest; exit (badT || n < 5 || fastest > 3.3) }' log ||
+     /max\|U\|/ { for (i = 1; i < NF; i++)
+                     if ($i == "max|U|" && $(i + 1) > fastest) fastest = $(i + 1) }
+     END { printf "fastest log line: max|U| %.3f m/s\n", fastest
+           exit (badT || n < 5 || fastest > 3.3) }' log ||
     fail "T left [300, 970] K or the melt moved faster than 3.3 m/s (or too few log lines)"
 last=$(ls -d [0-9]* | sort -g | tail -1)
 "$python" - "$last" <<'PY' || fail "the stream"

@@ -192,5 +192,6 @@ runValidationTutorial() {
     local case=$1
     shift
     copyTutorial "validation/$case"
-    PYTHON=$python ./Allrun "$@" > log.Allrun 2>&1 || { cat log.Allrun >&2; fail "$case: Allrun $*"; }
+    PYTHON=$python ./Allrun "$@" > log.Allrun 2>&1 ||
+        { cat log.Allrun >&2; fail "$case: Allrun $*"; }
 }
