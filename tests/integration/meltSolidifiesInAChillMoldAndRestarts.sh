@@ -31,20 +31,10 @@ last=$(ls -d [0-9]* | sort -g | tail -1)
 awk '/^T metal/ { if ($3 < 300 - 1e-9 || $5 > 970 + 1e-9) bad = 1; n++ }
      END { exit (bad || n < 5) }' log || fail "T left [300, 970] K (or too few log lines)"
 /usr/bin/python3 - "$last" <<'PY' || fail "the solid cup"
-import sys, glob, math, vtk
+import sys, glob, math
+from cloudFields import read_cloud
 def read(time):
-    reader = vtk.vtkXMLPolyDataReader()
-    reader.SetFileName(f"{time}/metal.vtp")
-    reader.Update()
-    out = reader.GetOutput()
-    data = out.GetPointData()
-    ids = data.GetArray("id")
-    cloud = {}
-    for i in range(out.GetNumberOfPoints()):
-        cloud[int(ids.GetTuple1(i))] = dict(
-            x=out.GetPoint(i), **{name: data.GetArray(name).GetTuple1(i)
-                                  for name in ("T", "solidFraction", "frozen", "rho", "restDensity")})
-    return cloud
+    return read_cloud(f"{time}/metal.vtp", ("T", "solidFraction", "frozen", "rho", "restDensity"))
 times = sorted((t for t in glob.glob("[0-9]*") if t != "0"), key=float)
 end = read(sys.argv[1])
 assert all(p["solidFraction"] == 1 for p in end.values()), "not all solid at the end"

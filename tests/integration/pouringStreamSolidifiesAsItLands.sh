@@ -12,28 +12,13 @@
 . "$SPHCAST_TEST_TOOLS"
 findVtkPython
 
-makeMoldCase "$scratch/stream" 'SetFactory("OpenCASCADE");
-Cylinder(1) = {0, 0, 0, 0, 0, 0.1, 0.02};
-top() = Surface In BoundingBox{-0.03, -0.03, 0.1 - 1e-4, 0.03, 0.03, 0.1 + 1e-4};
-wall() = Surface{:};
-wall() -= top();
-Physical Surface("moldWall") = wall();' \
-    'stream { type cylinder; point1 (0 0 0.02); point2 (0 0 0.09); radius 0.005; }' \
-    '(0 0 -1)' 20 3
+makeChillMold "$scratch/stream" 0.1 \
+    'stream { type cylinder; point1 (0 0 0.02); point2 (0 0 0.09); radius 0.005; }' '(0 0 -1)' 3 \
+    'model frozenSolid; frozenSolidFraction 0.5; cavitationPressure -5000; endWhenSolid yes;
+     cooling { flowStepsPerHeatStep 10; stillSpeed 0.02; }'
 cd "$scratch/stream" || exit 1
-sed -i 's/fields { U (0 0 -1); }/fields { U (0 0 -1); T 970; }/' system/setCastFieldsDict
 sed -i 's/0\.004;/0.002;/' system/particleizeMoldDict system/setCastFieldsDict
 sed -i 's/0\.01;/0.005;/' system/particleizeMoldDict system/sphSchemes
-cat > constant/physicalProperties <<DICT
-FoamFile { version 2.0; format ascii; class dictionary; object physicalProperties; }
-metal { #includeEtc "materials/AC4CH" }
-mold  { density 7874; conductivity 86.05; specificHeat 640; }
-DICT
-cat >> constant/physicsModels <<DICT
-heatTransfer { clouds (metal mold); fixedTemperature { mold 300; } conduction on; }
-solidification { model frozenSolid; frozenSolidFraction 0.5; cavitationPressure -5000;
-    endWhenSolid yes; cooling { flowStepsPerHeatStep 10; stillSpeed 0.02; } }
-DICT
 setEntry system/controlDict logInterval 50
 setEntry system/controlDict writeInterval 0.025
 particleizeMold > log.particleizeMold 2>&1 || fail "particleizeMold"
@@ -49,18 +34,10 @@ awk '/^T metal/ { if ($3 < 300 - 1e-9 || $5 > 970 + 1e-9) badT = 1; n++ }
     fail "T left [300, 970] K or the melt moved faster than 3.3 m/s (or too few log lines)"
 last=$(ls -d [0-9]* | sort -g | tail -1)
 "$python" - "$last" <<'PY' || fail "the stream"
-import sys, glob, math, vtk
+import sys, glob, math
+from cloudFields import read_cloud
 def read(time):
-    reader = vtk.vtkXMLPolyDataReader()
-    reader.SetFileName(f"{time}/metal.vtp")
-    reader.Update()
-    out = reader.GetOutput()
-    data = out.GetPointData()
-    ids = data.GetArray("id")
-    return {int(ids.GetTuple1(i)): dict(
-        x=out.GetPoint(i), **{name: data.GetArray(name).GetTuple1(i)
-                              for name in ("T", "solidFraction", "frozen", "rho", "restDensity")})
-        for i in range(out.GetNumberOfPoints())}
+    return read_cloud(f"{time}/metal.vtp", ("T", "solidFraction", "frozen", "rho", "restDensity"))
 times = sorted((t for t in glob.glob("[0-9]*") if t != "0"), key=float)
 end = read(sys.argv[1])
 low = high = 0.0

@@ -1,8 +1,9 @@
 # Sourced by the integration tests: a scratch folder, the built tools on PATH, small cases.
 set -u
 export PATH="$SPHCAST_BIN:$PATH"
-# the tutorials' comparison scripts, run on copies of the cases, import etc/functionObjectSeries.py
-export PYTHONPATH="$(cd "$(dirname "${BASH_SOURCE[0]}")/../../etc" && pwd)${PYTHONPATH:+:$PYTHONPATH}"
+# the tutorials' comparison scripts, run on copies of the cases, import etc/functionObjectSeries.py;
+# the tests' own scripts import cloudFields.py from here
+export PYTHONPATH="$(cd "$(dirname "${BASH_SOURCE[0]}")/../../etc" && pwd):$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)${PYTHONPATH:+:$PYTHONPATH}"
 export OMP_NUM_THREADS=${OMP_NUM_THREADS:-2}
 scratch=$(mktemp -d "${TMPDIR:-/tmp}/sphCastIntegration.XXXXXX")
 trap 'rm -rf "$scratch"' EXIT
@@ -133,20 +134,20 @@ Physical Surface("moldWall") = Surface{:};' \
     'half { type intersection; regions { s { type sphere; centre (0 0 0); radius 0.04; }
             b { type box; min (-0.05 -0.05 -0.05); max (0.05 0.05 0); } } }' '(0.6 0 0)' 12 "$2"
 }
-# makeChillCup DIR ENDTIME SOLIDIFICATION: makeMoldCase's open cylinder of radius 20 mm and
-# height 45 mm, held at 300 K (a chill conducting like the melt), with AC4CH at 970 K from 6 to
-# 30 mm up dropped at 0.5 m/s (c = 20 m/s); SOLIDIFICATION is the body of physicsModels'
-# solidification entry. The working directory stays where it was.
-makeChillCup() {
-    makeMoldCase "$1" 'SetFactory("OpenCASCADE");
-Cylinder(1) = {0, 0, 0, 0, 0, 0.045, 0.02};
-top() = Surface In BoundingBox{-0.03, -0.03, 0.045 - 1e-4, 0.03, 0.03, 0.045 + 1e-4};
+
+# makeChillMold DIR HEIGHT REGIONS U ENDTIME SOLIDIFICATION: makeMoldCase's open cylinder of
+# radius 20 mm and height HEIGHT (m), held at 300 K (a chill conducting like the melt), with
+# AC4CH at 970 K in REGIONS moving at U (c = 20 m/s); SOLIDIFICATION is the body of
+# physicsModels' solidification entry. The working directory stays where it was.
+makeChillMold() {
+    local height=$2
+    makeMoldCase "$1" "SetFactory(\"OpenCASCADE\");
+Cylinder(1) = {0, 0, 0, 0, 0, $height, 0.02};
+top() = Surface In BoundingBox{-0.03, -0.03, $height - 1e-4, 0.03, 0.03, $height + 1e-4};
 wall() = Surface{:};
 wall() -= top();
-Physical Surface("moldWall") = wall();' \
-        'melt { type cylinder; point1 (0 0 0.006); point2 (0 0 0.03); radius 0.02; }' \
-        '(0 0 -0.5)' 20 "$2"
-    sed -i 's/fields { U (0 0 -0.5); }/fields { U (0 0 -0.5); T 970; }/' "$1/system/setCastFieldsDict"
+Physical Surface(\"moldWall\") = wall();" "$3" "$4" 20 "$5"
+    sed -i "s/fields { U $4; }/fields { U $4; T 970; }/" "$1/system/setCastFieldsDict"
     cat > "$1/constant/physicalProperties" <<DICT
 FoamFile { version 2.0; format ascii; class dictionary; object physicalProperties; }
 metal { #includeEtc "materials/AC4CH" }
@@ -154,8 +155,16 @@ mold  { density 7874; conductivity 86.05; specificHeat 640; }
 DICT
     cat >> "$1/constant/physicsModels" <<DICT
 heatTransfer { clouds (metal mold); fixedTemperature { mold 300; } conduction on; }
-solidification { $3 }
+solidification { $6 }
 DICT
+}
+
+# makeChillCup DIR ENDTIME SOLIDIFICATION: makeChillMold's cylinder 45 mm high with AC4CH from
+# 6 to 30 mm up dropped at 0.5 m/s.
+makeChillCup() {
+    makeChillMold "$1" 0.045 \
+        'melt { type cylinder; point1 (0 0 0.006); point2 (0 0 0.03); radius 0.02; }' \
+        '(0 0 -0.5)' "$2" "$3"
 }
 
 # findVtkPython: sets `python` to the first of $PYTHON, python3 and /usr/bin/python3 that imports

@@ -1,0 +1,17 @@
+"""Reads a written cloud for the integration tests' checks (VTK's XML reader)."""
+import vtk
+
+
+def read_cloud(path, names):
+    """The particles of the .vtp file at path by their `id`: {id: {"x": position, name: value}}
+    for each field in names."""
+    reader = vtk.vtkXMLPolyDataReader()
+    reader.SetFileName(path)
+    reader.Update()
+    out = reader.GetOutput()
+    data = out.GetPointData()
+    ids = data.GetArray("id")
+    arrays = {name: data.GetArray(name) for name in names}
+    return {int(ids.GetTuple1(i)): dict(x=out.GetPoint(i), **{name: array.GetTuple1(i)
+                                                              for name, array in arrays.items()})
+            for i in range(out.GetNumberOfPoints())}
