@@ -110,5 +110,4 @@ Real flatSurfaceExposureSum(const Kernel& kernel, Real supportRadius, Real spaci
   return columnSum;
 }
 
-
 }  // namespace sphcast

@@ -84,11 +84,12 @@ class Feeding:
         self.top = {}  # column -> the level at which its surface cell froze
         self.drawn = self.enclosed = 0.0
         self.volume = sum((i + 0.5) * cell * cell * dz for (i, j) in cells)  # the melt's, at start
+        self.columns = sorted({i for (i, j) in cells})
 
     def surface_row(self):
         return min(int(self.level / self.dz), int(round(HEIGHT / self.dz)) - 1)
 
-    def advance(self, u_old, u_new, mass):
+    def advance(self, T_old, u_new, mass):
         row = self.surface_row()
         feeding = {c for c in self.cells if c not in self.frozen and c[1] <= row}
         # the pool: feeding cells connected to the level's row through feeding cells
@@ -102,7 +103,7 @@ class Feeding:
                     front.append(n)
         drawn = 0.0
         for c in feeding:
-            shrink = mass[c] * (1 / rest_density(temperature(u_old[c]))
+            shrink = mass[c] * (1 / rest_density(T_old[c])
                                 - 1 / rest_density(temperature(u_new[c])))
             if c in pool:
                 drawn += shrink
@@ -116,7 +117,7 @@ class Feeding:
             if solid_fraction(u_new[c]) >= self.f_c:
                 self.frozen.add(c)
         row = self.surface_row()
-        for i in {c[0] for c in self.cells}:
+        for i in self.columns:
             if i not in self.top and ((i, row) in self.frozen or (i, row) not in self.cells):
                 self.top[i] = self.level
 
@@ -166,10 +167,9 @@ def solve(cell, frozen_fraction=0.5):
                     rate[n] -= flux
                 else:  # the wall at 300 K on the face, half a cell away
                     rate[(i, j)] += kappa[(i, j)] * area * (T_WALL - T[(i, j)]) / (0.5 * distance)
-        u_old = dict(u)
         for c in cells:
             u[c] += dt * rate[c] / mass[c]
-        feeding.advance(u_old, u, mass)
+        feeding.advance(T, u, mass)  # T: the step's start
         t += dt
         fraction = sum(mass[c] * solid_fraction(u[c]) for c in cells) / total
         liquid = [c for c in cells if solid_fraction(u[c]) < 1]
