@@ -64,6 +64,8 @@ namespace {
 struct RegionFill {
   std::unique_ptr<FillRegion> region;
   bool ownLattice;  // a top-level box: today's lattice centred in the box
+  std::string name;         // for the messages
+  SourceLocation location;  // where the region is given
 };
 
 // How a new cloud's rho is computed from its material, read and checked before the fill.
@@ -77,6 +79,7 @@ struct DensityStart {
 
 struct CloudPlan {
   std::string name;
+  SourceLocation location;  // where the cloud is given
   std::vector<RegionFill> regions;
   int relaxationIterations = 0;
   SourceLocation relaxationAt;  // where relaxation was asked for
@@ -94,6 +97,19 @@ class CaseSettings {
     return *materials_;
   }
   Vector gravity() { return readGravity(caseFolder_); }
+  // The material constant/physicsModels' `materials { cloud material; }` gives the cloud, and
+  // where; nothing when the file or the entry is absent.
+  std::optional<std::pair<std::string, SourceLocation>> mappedMaterial(const std::string& cloud) {
+    if (!models_) {
+      const auto file = caseFolder_.constantFile("physicsModels");
+      models_ = std::filesystem::exists(file) ? Dictionary::read(file) : Dictionary();
+    }
+    if (!models_->found("materials") || !models_->subDict("materials").found(cloud)) {
+      return std::nullopt;
+    }
+    const Dictionary& mapping = models_->subDict("materials");
+    return std::make_pair(mapping.get<std::string>(cloud), mapping.location(cloud));
+  }
   const Dictionary& schemes() {
     if (!schemes_) schemes_ = Dictionary::read(caseFolder_.systemFile("sphSchemes"));
     return *schemes_;
@@ -126,23 +142,26 @@ class CaseSettings {
   const CaseFolder& caseFolder_;
   std::optional<MaterialLibrary> materials_;
   std::optional<Dictionary> schemes_;
+  std::optional<Dictionary> models_;
 };
 
-// Points of the shared lattice inside the region's bounding box grown by `margin` cells.
+// Points of the shared lattice inside the region's bounding box grown by `margin` cells; in a
+// 2D case the one layer z = 0.
 template <class Keep>
 std::vector<Vector> sharedLatticeAround(const FillRegion& region, double spacing,
-                                        std::int64_t margin, const Keep& keep) {
+                                        std::int64_t margin, int dimension, const Keep& keep) {
   std::vector<Vector> points;
   const Eigen::Vector3d lower = region.lower(), upper = region.upper();
   const std::int64_t grow = margin + 1;
-  for (std::int64_t k = latticeIndex(lower.z(), spacing) - grow;
-       k <= latticeIndex(upper.z(), spacing) + grow; ++k) {
+  const std::int64_t kFirst = dimension == 2 ? 0 : latticeIndex(lower.z(), spacing) - grow;
+  const std::int64_t kLast = dimension == 2 ? 0 : latticeIndex(upper.z(), spacing) + grow;
+  for (std::int64_t k = kFirst; k <= kLast; ++k) {
+    const double z = dimension == 2 ? 0.0 : latticeCoordinate(k, spacing);
     for (std::int64_t j = latticeIndex(lower.y(), spacing) - grow;
          j <= latticeIndex(upper.y(), spacing) + grow; ++j) {
       for (std::int64_t i = latticeIndex(lower.x(), spacing) - grow;
            i <= latticeIndex(upper.x(), spacing) + grow; ++i) {
-        const Eigen::Vector3d p(latticeCoordinate(i, spacing), latticeCoordinate(j, spacing),
-                                latticeCoordinate(k, spacing));
+        const Eigen::Vector3d p(latticeCoordinate(i, spacing), latticeCoordinate(j, spacing), z);
         if (keep(p)) points.push_back(p.cast<Real>());
       }
     }
@@ -151,23 +170,29 @@ std::vector<Vector> sharedLatticeAround(const FillRegion& region, double spacing
 }
 
 // The lattice a region is filled on, within `margin` cells around it (0: the fill itself).
-std::vector<Vector> latticeOf(const RegionFill& fill, double spacing, std::int64_t margin) {
+std::vector<Vector> latticeOf(const RegionFill& fill, double spacing, std::int64_t margin,
+                              int dimension) {
   if (fill.ownLattice) {
     // Growing the box by whole cells on each side keeps its centred lattice where it was. A
-    // flat axis (2D) is not grown.
-    Vector grow = Vector::Zero();
-    const Eigen::Vector3d extent = fill.region->upper() - fill.region->lower();
-    for (int axis = 0; axis < 3; ++axis) {
-      if (extent[axis] > 0.0) grow[axis] = static_cast<Real>(static_cast<double>(margin) * spacing);
+    // flat axis is not grown; in a 2D case the box is cut by the plane z = 0.
+    Vector lower = fill.region->lower().cast<Real>(), upper = fill.region->upper().cast<Real>();
+    if (dimension == 2) {
+      if (lower.z() > Real(0) || upper.z() < Real(0)) return {};
+      lower.z() = upper.z() = Real(0);
     }
-    return fillBoxOnLattice(fill.region->lower().cast<Real>() - grow,
-                            fill.region->upper().cast<Real>() + grow, spacing);
+    Vector grow = Vector::Zero();
+    for (int axis = 0; axis < 3; ++axis) {
+      if (upper[axis] > lower[axis]) {
+        grow[axis] = static_cast<Real>(static_cast<double>(margin) * spacing);
+      }
+    }
+    return fillBoxOnLattice(lower - grow, upper + grow, spacing);
   }
   if (margin == 0) {
-    return sharedLatticeAround(*fill.region, spacing, 0,
+    return sharedLatticeAround(*fill.region, spacing, 0, dimension,
                                [&](const Eigen::Vector3d& p) { return fill.region->contains(p); });
   }
-  return sharedLatticeAround(*fill.region, spacing, margin,
+  return sharedLatticeAround(*fill.region, spacing, margin, dimension,
                              [](const Eigen::Vector3d&) { return true; });
 }
 
@@ -226,9 +251,24 @@ std::optional<DensityStart> readDensityStart(const Dictionary& cloudDict,
   if (choice.value) return std::nullopt;
 
   const MaterialLibrary& materials = settings.materials();
-  const std::string materialName = cloudDict.getOrDefault<std::string>("material", cloudName);
-  const SourceLocation namedAt =
-      cloudDict.found("material") ? cloudDict.location("material") : fields.location("rho");
+  // the cloud's material: setCastFieldsDict's `material`, else physicsModels' `materials` map
+  // (which the solver reads), else the cloud's name; the two files may not disagree
+  const auto mapped = settings.mappedMaterial(cloudName);
+  std::string materialName = cloudName;
+  SourceLocation namedAt = fields.location("rho");
+  if (cloudDict.found("material")) {
+    materialName = cloudDict.get<std::string>("material");
+    namedAt = cloudDict.location("material");
+    if (mapped && mapped->first != materialName) {
+      throw DictionaryError(namedAt, "cloud '" + cloudName + "' is of material '" + materialName +
+                                         "' here, but of '" + mapped->first + "' in " +
+                                         mapped->second.str() +
+                                         " (the solver's): give the same material in both");
+    }
+  } else if (mapped) {
+    materialName = mapped->first;
+    namedAt = mapped->second;
+  }
   if (!materials.has(materialName)) {
     std::string present;
     for (const auto& name : materials.names()) present += " " + name;
@@ -303,12 +343,12 @@ std::vector<Vector> keptPoints(const std::vector<Vector>& points, const std::vec
 // clear of the mold, not behind its walls (where the shell has gaps between its particles) and
 // within `reach` of a metal particle: the fixed image of the metal beyond its free surface.
 std::vector<Vector> latticeBeyondFreeSurface(const CloudPlan& plan, double spacing,
-                                             std::int64_t margin, double reach,
+                                             std::int64_t margin, int dimension, double reach,
                                              const std::vector<Vector>& metal,
                                              const MoldObstacles& mold) {
   std::vector<Vector> beyond;
   for (const RegionFill& fill : plan.regions) {
-    for (const Vector& p : latticeOf(fill, spacing, margin)) {
+    for (const Vector& p : latticeOf(fill, spacing, margin, dimension)) {
       if (!insideAnyRegion(plan, p)) beyond.push_back(p);
     }
   }
@@ -343,16 +383,37 @@ void logPacking(const std::string& cloudName, const char* when, const PackingSta
 }
 
 // Lattice points of the cloud's regions, each point once (a point of a region that an earlier
-// region of the cloud holds already is left out), and the regions' volume.
-std::vector<Vector> fillRegions(const CloudPlan& plan, double spacing, double& regionVolume,
+// region of the cloud holds already is left out), the region each came from, and the regions'
+// volume (their area in a 2D case). A region that holds no lattice point is an error that says
+// why.
+std::vector<Vector> fillRegions(const CloudPlan& plan, double spacing, int dimension,
+                                std::vector<std::size_t>& regionOf, double& regionVolume,
                                 bool& volumeExact) {
   std::vector<Vector> centres;
+  regionOf.clear();
   regionVolume = 0.0;
   volumeExact = true;
   for (std::size_t k = 0; k < plan.regions.size(); ++k) {
     const RegionFill& fill = plan.regions[k];
+    const std::vector<Vector> lattice = latticeOf(fill, spacing, 0, dimension);
+    if (lattice.empty()) {
+      const Eigen::Vector3d lower = fill.region->lower(), upper = fill.region->upper();
+      const bool offPlane = dimension == 2 && (lower.z() > 0.0 || upper.z() < 0.0);
+      std::ostringstream message;
+      message << "region '" << fill.name << "' of cloud '" << plan.name
+              << "' holds no lattice point of spacing " << spacing << " m: ";
+      if (offPlane) {
+        message << "it does not reach the plane z = 0 of a 2D case (its z runs from "
+                << lower.z() << " to " << upper.z() << " m)";
+      } else {
+        message << "it is thinner than a spacing, or lies between the lattice points (the "
+                   "lattice is at (i + 1/2) spacing; a top-level box keeps its own); make it "
+                   "larger or the spacing smaller";
+      }
+      throw DictionaryError(fill.location, message.str());
+    }
     std::size_t overlapping = 0;
-    for (const Vector& p : latticeOf(fill, spacing, 0)) {
+    for (const Vector& p : lattice) {
       const Eigen::Vector3d x = p.cast<double>();
       const bool held =
           std::any_of(plan.regions.begin(), plan.regions.begin() + static_cast<std::ptrdiff_t>(k),
@@ -361,22 +422,83 @@ std::vector<Vector> fillRegions(const CloudPlan& plan, double spacing, double& r
         ++overlapping;
       } else {
         centres.push_back(p);
+        regionOf.push_back(k);
       }
     }
-    regionVolume += fill.region->volumeBound();
-    volumeExact = volumeExact && fill.region->volumeIsExact() && overlapping == 0;
+    if (dimension == 2) {
+      regionVolume += fill.region->sectionAreaBound();
+      volumeExact = volumeExact && fill.region->sectionAreaIsExact() && overlapping == 0;
+    } else {
+      regionVolume += fill.region->volumeBound();
+      volumeExact = volumeExact && fill.region->volumeIsExact() && overlapping == 0;
+    }
   }
   return centres;
+}
+
+// After the fill is cleared of the mold: a region that lost every particle to the mold, or a
+// cloud lying wholly outside the domain (the mold particles' box grown by half on each side, as
+// the flow's health check takes it), is a mistake (a region drawn inside the mold material, or
+// in other units than the mold); say which region and why. Some particles outside the domain
+// are a warning: a flow stops them at its first step.
+void checkFillAgainstMold(const CloudPlan& plan, const std::vector<std::size_t>& regionOf,
+                          const std::vector<bool>& clear, const std::vector<Vector>& centres,
+                          const MoldObstacles& mold) {
+  std::vector<std::size_t> filled(plan.regions.size(), 0), kept(plan.regions.size(), 0);
+  for (std::size_t i = 0; i < regionOf.size(); ++i) {
+    ++filled[regionOf[i]];
+    if (clear[i]) ++kept[regionOf[i]];
+  }
+  for (std::size_t k = 0; k < plan.regions.size(); ++k) {
+    if (filled[k] == 0 || kept[k] > 0) continue;
+    std::ostringstream message;
+    message << "region '" << plan.regions[k].name << "' of cloud '" << plan.name
+            << "' is filled by no particle: all of its " << filled[k]
+            << " lattice points lie within wallClearance " << mold.clearance()
+            << " m of a mold particle (the region lies inside the mold, or is thinner than the "
+               "gap the clearance leaves between the walls)";
+    throw DictionaryError(plan.regions[k].location, message.str());
+  }
+  const FixedNeighbours& moldParticles = mold.particles();
+  Vector lower = moldParticles.positions.front(), upper = lower;
+  for (const Vector& x : moldParticles.positions) {
+    lower = lower.cwiseMin(x);
+    upper = upper.cwiseMax(x);
+  }
+  const Vector margin = Real(0.5) * (upper - lower);
+  lower -= margin;
+  upper += margin;
+  const auto outside = static_cast<std::size_t>(
+      std::count_if(centres.begin(), centres.end(), [&](const Vector& x) {
+        return (x.array() < lower.array()).any() || (x.array() > upper.array()).any();
+      }));
+  if (outside == 0) return;
+  std::ostringstream where;
+  where << "the domain (the mold particles' box grown by half on each side: ("
+        << lower.transpose() << ") to (" << upper.transpose() << ") m)";
+  if (outside == centres.size()) {
+    throw DictionaryError(plan.location, "cloud '" + plan.name + "' lies wholly outside " +
+                                             where.str() +
+                                             ": check the regions' coordinates and units "
+                                             "against the mold's");
+  }
+  warning("cloud " + plan.name + ": " + std::to_string(outside) + " of " +
+          std::to_string(centres.size()) + " particles lie outside " + where.str() +
+          "; a flow stops at its first step");
 }
 
 ParticleCloud fillCloud(const CloudPlan& plan, double spacing, int dimension,
                         const MoldObstacles& mold, CaseSettings& settings) {
   double regionVolume = 0.0;
   bool volumeExact = true;
-  std::vector<Vector> centres = fillRegions(plan, spacing, regionVolume, volumeExact);
+  std::vector<std::size_t> regionOf;
+  std::vector<Vector> centres =
+      fillRegions(plan, spacing, dimension, regionOf, regionVolume, volumeExact);
   if (!mold.empty()) {
     const std::size_t before = centres.size();
-    centres = keptPoints(centres, mold.clear(centres));
+    const std::vector<bool> clear = mold.clear(centres);
+    checkFillAgainstMold(plan, regionOf, clear, centres, mold);
+    centres = keptPoints(centres, clear);
     info() << "Cloud " << plan.name << ": left out " << before - centres.size()
            << " particles closer than wallClearance " << mold.clearance()
            << " m to a mold particle\n";
@@ -402,13 +524,13 @@ ParticleCloud fillCloud(const CloudPlan& plan, double spacing, int dimension,
       static_cast<double>(centres.size()) * (dimension == 2 ? spacing * spacing : dx3);
   info() << "Cloud " << plan.name << ": " << centres.size() << " particles, " << filledVolume
          << (dimension == 2 ? " m^2 (count x dx^2)" : " m^3 (count x dx^3)");
-  if (regionVolume > 0.0) {  // a flat (2D) region has none
-    info() << ", " << 100.0 * filledVolume / regionVolume << " % of the regions' "
-           << (volumeExact ? "volume " : "volume bound (overlaps or booleans) ") << regionVolume
-           << " m^3";
+  if (regionVolume > 0.0) {
+    const char* measure = dimension == 2 ? "area" : "volume";
+    info() << ", " << 100.0 * filledVolume / regionVolume << " % of the regions' " << measure
+           << (volumeExact ? " " : " bound (overlaps, booleans or curved sections) ")
+           << regionVolume << (dimension == 2 ? " m^2" : " m^3");
   }
   info() << "\n";
-  if (centres.empty()) return ParticleCloud(plan.name);
 
   Vector lower = centres.front(), upper = centres.front();
   for (const Vector& c : centres) {
@@ -424,7 +546,8 @@ ParticleCloud fillCloud(const CloudPlan& plan, double spacing, int dimension,
   if (plan.relaxationIterations > 0) {
     const double h = settings.supportRadius(spacing);
     const auto margin = static_cast<std::int64_t>(std::ceil(h / spacing));
-    const auto beyond = latticeBeyondFreeSurface(plan, spacing, margin, h, centres, mold);
+    const auto beyond =
+        latticeBeyondFreeSurface(plan, spacing, margin, dimension, h, centres, mold);
     const Vector reach = Vector::Constant(static_cast<Real>(h));
     FixedNeighbours fixed = mold.within(lower - reach, upper + reach);
     fixed.positions.insert(fixed.positions.end(), beyond.begin(), beyond.end());
@@ -525,6 +648,7 @@ std::vector<ParticleCloud> buildCastClouds(const CaseFolder& caseFolder,
     cloudDict.checkKeys({"material", "regions", "fields", "relaxation"});
     const Dictionary& regions = cloudDict.subDict("regions");
     CloudPlan plan{cloudName,
+                   cloudsDict.location(cloudName),
                    {},
                    readRelaxation(cloudDict, globalRelaxation),
                    cloudDict.found("relaxation") ? cloudDict.location("relaxation")
@@ -537,11 +661,17 @@ std::vector<ParticleCloud> buildCastClouds(const CaseFolder& caseFolder,
     }
     for (const std::string& regionName : regions.keys()) {
       const Dictionary& regionDict = regions.subDict(regionName);
-      RegionFill fill{readFillRegion(regionDict, spacing, geometryFolder),
-                      regionDict.get<std::string>("type") == "box"};
-      total += fill.ownLattice ? latticeCountInBox(fill.region->lower().cast<Real>(),
-                                                   fill.region->upper().cast<Real>(), spacing)
-                               : fill.region->volumeBound() / (spacing * spacing * spacing);
+      RegionFill fill{readFillRegion(regionDict, spacing, geometryFolder, dimension),
+                      regionDict.get<std::string>("type") == "box", regionName,
+                      regions.location(regionName)};
+      if (dimension == 2) {
+        total += fill.region->sectionAreaBound() / (spacing * spacing) +
+                 (fill.region->upper() - fill.region->lower()).head<2>().sum() / spacing + 1.0;
+      } else {
+        total += fill.ownLattice ? latticeCountInBox(fill.region->lower().cast<Real>(),
+                                                     fill.region->upper().cast<Real>(), spacing)
+                                 : fill.region->volumeBound() / (spacing * spacing * spacing);
+      }
       plan.regions.push_back(std::move(fill));
     }
     plans.push_back(std::move(plan));
@@ -580,7 +710,8 @@ std::vector<ParticleCloud> buildCastClouds(const CaseFolder& caseFolder,
         const Dictionary& regions = entry.subDict("regions");
         selected.assign(cloud.size(), false);
         for (const std::string& regionName : regions.keys()) {
-          const auto region = readFillRegion(regions.subDict(regionName), spacing, geometryFolder);
+          const auto region =
+              readFillRegion(regions.subDict(regionName), spacing, geometryFolder, dimension);
           for (std::size_t i = 0; i < cloud.size(); ++i) {
             selected[i] = selected[i] || region->contains(cloud.positions()[i].cast<double>());
           }
@@ -595,17 +726,6 @@ std::vector<ParticleCloud> buildCastClouds(const CaseFolder& caseFolder,
   std::vector<ParticleCloud> clouds;
   for (const CloudPlan& plan : plans) {
     ParticleCloud cloud = fillCloud(plan, spacing, dimension, mold, settings);
-    if (dimension == 2) {
-      for (const Vector& x : cloud.positions()) {
-        if (x.z() != Real(0)) {
-          throw DictionaryError(dict.location("dimension"),
-                                "cloud '" + plan.name +
-                                    "' has a particle at z = " + std::to_string(x.z()) +
-                                    ": a 2D case lies in the plane z = 0 (give boxes with min z "
-                                    "= max z = 0)");
-        }
-      }
-    }
     const Dictionary& cloudDict = cloudsDict.subDict(plan.name);
     if (cloudDict.found("fields")) setFieldValues(cloudDict.subDict("fields"), cloud, {}, true);
     if (plan.density) setMaterialDensity(*plan.density, cloud, spacing);

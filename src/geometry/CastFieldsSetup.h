@@ -19,7 +19,9 @@ namespace sphcast {
 //       metal
 //       {
 //           material   metal;     // optional: sub-dictionary of constant/physicalProperties
-//                                 // (default: the cloud's name, as the solver reads it)
+//                                 // (default: constant/physicsModels' `materials` map, else
+//                                 // the cloud's name, as the solver reads it; the two files
+//                                 // may not name different materials)
 //           regions { ingot { type box; min (0 0 0); max (0.1 0.05 0.1); } }  // FillRegion.h
 //           fields  { U (0 0 -1); T 953; rho hydrostatic; }
 //           relaxation { iterations 200; }   // optional: overrides the global one
@@ -57,10 +59,15 @@ namespace sphcast {
 // the fill put it instead of swelling into the empty kernel half, which is what the metal's
 // own surface tension and the run will decide.
 //
-// Every filled particle gets `volume` dx^3 (dx^2 with `dimension 2`, whose regions must fill
-// the plane z = 0: boxes with min z = max z = 0) and `id`. The log reports for each new cloud the
-// count, the filled volume (count dx^3) against the regions' volume (exact for shapes and gmsh
-// volumes that do not overlap, else the bound) and the nearest-neighbour spacing.
+// Every filled particle gets `volume` dx^3 (dx^2 with `dimension 2`, where every region is cut
+// by the plane z = 0 and fills its section on the lattice ((i + 1/2) dx, (j + 1/2) dx, 0);
+// FillRegion.h) and `id`. The log reports for each new cloud the count, the filled volume
+// (count dx^3) against the regions' volume (exact for shapes and gmsh volumes that do not
+// overlap, else the bound; areas in 2D) and the nearest-neighbour spacing.
+// An empty fill is an error naming the cloud and the region, and why: a region holding no
+// lattice point (thinner than a spacing, or off the plane of a 2D case), a region whose points
+// all lie within wallClearance of the mold (inside it), a cloud wholly outside the domain (the
+// mold particles' box grown by half).
 // moldClouds are the clouds of constant/particles (setCastFields reads them): obstacles for the
 // fill, fixed neighbours for the relaxation, and the clouds `setFields` works on.
 // Returns the new clouds followed by the clouds whose fields were set, all for 0/.

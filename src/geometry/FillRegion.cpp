@@ -2,6 +2,7 @@
 
 #include <Eigen/Geometry>
 #include <algorithm>
+#include <cmath>
 #include <numbers>
 #include <vector>
 
@@ -9,6 +10,7 @@
 #include "core/Real.h"
 #include "geometry/GmshGeometry.h"
 #include "geometry/LatticeSolid.h"
+#include "geometry/WallCurves2D.h"
 
 namespace sphcast {
 
@@ -49,6 +51,7 @@ class BoxRegion final : public FillRegion {
   Eigen::Vector3d lower() const override { return lower_; }
   Eigen::Vector3d upper() const override { return upper_; }
   double volumeBound() const override { return (upper_ - lower_).prod(); }
+  bool sectionAreaIsExact() const override { return true; }
 
  private:
   Eigen::Vector3d lower_, upper_;
@@ -114,6 +117,10 @@ class SphereRegion final : public FillRegion {
   Eigen::Vector3d lower() const override { return centre_ - Eigen::Vector3d::Constant(radius_); }
   Eigen::Vector3d upper() const override { return centre_ + Eigen::Vector3d::Constant(radius_); }
   double volumeBound() const override { return 4.0 / 3.0 * std::numbers::pi * std::pow(radius_, 3); }
+  double sectionAreaBound() const override {
+    return std::numbers::pi * std::max(0.0, radius_ * radius_ - centre_.z() * centre_.z());
+  }
+  bool sectionAreaIsExact() const override { return true; }
 
  private:
   Eigen::Vector3d centre_;
@@ -168,16 +175,78 @@ class GmshVolumeRegion final : public FillRegion {
   double volume_ = 0.0;
 };
 
+// A physical surface of a gmsh file lying in the plane z = 0 (a 2D case's cavity, drawn as
+// particleizeMold's 2D molds are): inside by the parity of crossings of its boundary curves.
+class GmshSurfaceRegion final : public FillRegion {
+ public:
+  GmshSurfaceRegion(const Dictionary& region, double spacing,
+                    const std::filesystem::path& geometryFolder) {
+    region.checkKeys({"type", "file", "group"});
+    const auto file = geometryFolder / region.get<std::string>("file");
+    const auto groupName = region.get<std::string>("group");
+    if (!std::filesystem::is_regular_file(file)) {
+      throw DictionaryError(region.location("file"),
+                            "geometry file '" + file.string() + "' does not exist");
+    }
+    const GmshGeometry geometry(file, 0.0);
+    const PhysicalGroup* group = geometry.findGroup(groupName);
+    if (group == nullptr || group->dimension != 2) {
+      std::string present;
+      for (const auto& g : geometry.groups()) {
+        if (g.dimension == 2) present += " " + g.name;
+      }
+      throw DictionaryError(region.location("group"),
+                            "'" + groupName + "' is not a physical surface of '" + file.string() +
+                                "'; the physical surfaces present are (" + present + " )");
+    }
+    try {
+      // chords of dx/16 on curved boundaries, as particleizeMold follows 2D walls
+      for (const int curve : geometry.boundaryCurvesOf(geometry.entitiesOf(*group))) {
+        section_.add(geometry.planarCurve(curve, spacing / 16.0));
+      }
+    } catch (const Error& error) {
+      throw DictionaryError(region.location("group"), error.what());
+    }
+    if (section_.edges().empty()) {
+      throw DictionaryError(region.location("group"), "physical surface '" + groupName + "' of '" +
+                                                          file.string() + "' has no boundary");
+    }
+    lower_ = upper_ = Eigen::Vector3d(section_.edges().front().first.x(),
+                                      section_.edges().front().first.y(), 0.0);
+    for (const auto& [a, b] : section_.edges()) {
+      for (const Eigen::Vector2d& q : {a, b}) {
+        lower_ = lower_.cwiseMin(Eigen::Vector3d(q.x(), q.y(), 0.0));
+        upper_ = upper_.cwiseMax(Eigen::Vector3d(q.x(), q.y(), 0.0));
+      }
+    }
+    area_ = std::abs(section_.area());
+  }
+  bool contains(const Eigen::Vector3d& p) const override {
+    return std::abs(p.z()) <= surfaceTolerance * (upper_ - lower_).norm() &&
+           section_.contains(p.head<2>());
+  }
+  Eigen::Vector3d lower() const override { return lower_; }
+  Eigen::Vector3d upper() const override { return upper_; }
+  double volumeBound() const override { return 0.0; }  // a plane section has no volume
+  double sectionAreaBound() const override { return area_; }
+  bool sectionAreaIsExact() const override { return true; }
+
+ private:
+  PlaneRegion section_;
+  Eigen::Vector3d lower_, upper_;
+  double area_ = 0.0;
+};
+
 class BooleanRegion final : public FillRegion {
  public:
   enum class Operation { unite, intersect, subtract };
   BooleanRegion(const Dictionary& region, Operation operation, double spacing,
-                const std::filesystem::path& geometryFolder)
+                const std::filesystem::path& geometryFolder, int dimension)
       : operation_(operation) {
     region.checkKeys({"type", "regions"});
     const Dictionary& parts = region.subDict("regions");
     for (const std::string& name : parts.keys()) {
-      parts_.push_back(readFillRegion(parts.subDict(name), spacing, geometryFolder));
+      parts_.push_back(readFillRegion(parts.subDict(name), spacing, geometryFolder, dimension));
     }
     if (parts_.empty()) {
       throw DictionaryError(parts.location(), "no regions in " + parts.name());
@@ -223,6 +292,15 @@ class BooleanRegion final : public FillRegion {
     return operation_ == Operation::unite ? sum : smallest;
   }
   bool volumeIsExact() const override { return false; }
+  double sectionAreaBound() const override {
+    if (operation_ == Operation::subtract) return parts_.front()->sectionAreaBound();
+    double sum = 0.0, smallest = parts_.front()->sectionAreaBound();
+    for (const auto& part : parts_) {
+      sum += part->sectionAreaBound();
+      smallest = std::min(smallest, part->sectionAreaBound());
+    }
+    return operation_ == Operation::unite ? sum : smallest;
+  }
 
  private:
   Operation operation_;
@@ -232,18 +310,35 @@ class BooleanRegion final : public FillRegion {
 }  // namespace
 
 std::unique_ptr<FillRegion> readFillRegion(const Dictionary& region, double spacing,
-                                           const std::filesystem::path& geometryFolder) {
-  const std::string type = region.getChoice(
-      "type", {"box", "cylinder", "cone", "sphere", "gmshVolume", "union", "intersection", "difference"});
+                                           const std::filesystem::path& geometryFolder,
+                                           int dimension) {
+  const std::string type =
+      region.getChoice("type", {"box", "cylinder", "cone", "sphere", "gmshVolume", "gmshSurface",
+                                "union", "intersection", "difference"});
   if (type == "box") return std::make_unique<BoxRegion>(region);
   if (type == "cylinder") return std::make_unique<ConeRegion>(region, true);
   if (type == "cone") return std::make_unique<ConeRegion>(region, false);
   if (type == "sphere") return std::make_unique<SphereRegion>(region);
-  if (type == "gmshVolume") return std::make_unique<GmshVolumeRegion>(region, spacing, geometryFolder);
+  if (type == "gmshVolume") {
+    if (dimension == 2) {
+      throw DictionaryError(region.location("type"),
+                            "a 2D case fills gmsh geometry from a physical surface in the plane "
+                            "z = 0: give 'type gmshSurface;' in " + region.name());
+    }
+    return std::make_unique<GmshVolumeRegion>(region, spacing, geometryFolder);
+  }
+  if (type == "gmshSurface") {
+    if (dimension != 2) {
+      throw DictionaryError(region.location("type"),
+                            "'type gmshSurface' is for 2D cases (dimension 2); a 3D case fills a "
+                            "physical volume: give 'type gmshVolume;' in " + region.name());
+    }
+    return std::make_unique<GmshSurfaceRegion>(region, spacing, geometryFolder);
+  }
   const auto operation = type == "union"          ? BooleanRegion::Operation::unite
                          : type == "intersection" ? BooleanRegion::Operation::intersect
                                                   : BooleanRegion::Operation::subtract;
-  return std::make_unique<BooleanRegion>(region, operation, spacing, geometryFolder);
+  return std::make_unique<BooleanRegion>(region, operation, spacing, geometryFolder, dimension);
 }
 
 }  // namespace sphcast

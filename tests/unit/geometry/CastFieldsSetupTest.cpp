@@ -3,9 +3,13 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+#include <functional>
 #include <set>
 #include <string>
 #include <tuple>
+#include <vector>
 
 #include "core/dictionary/SourceLocation.h"
 #include "support/TemporaryCase.h"
@@ -126,19 +130,170 @@ TEST(CastFieldsSetup, TwoDimensionalCloudsHaveTheAreaOfTheirCellAsVolume) {
   }
 }
 
-TEST(CastFieldsSetup, TwoDimensionalCloudOffThePlaneIsAnErrorAtTheDimensionKey) {
+TEST(CastFieldsSetup, TwoDimensionalCaseFillsTheSectionOfABoxAndRefusesOneOffThePlane) {
+  // A box with depth in z fills its rectangle in the plane z = 0 (the 200 points of 0.1 x 0.2).
   TemporaryCase folder;
   folder.write("system/setCastFieldsDict",
                header + "dimension 2;\nspacing 0.01;\nclouds\n{\n    water\n    {\n        regions "
-                        "{ r { type box; min (0 0 0); max (0.1 0.2 0.05); } }\n    }\n}\n");
+                        "{ r { type box; min (0 0 -0.05); max (0.1 0.2 0.05); } }\n    }\n}\n");
+  const auto clouds = buildCastClouds(CaseFolder(folder.root()), {});
+  ASSERT_EQ(clouds.size(), 1u);
+  EXPECT_EQ(clouds[0].size(), 200u);
+  for (const Vector& x : clouds[0].positions()) EXPECT_EQ(x.z(), 0);
+
+  // A box wholly above the plane holds nothing of it: an error at the region, saying why.
+  folder.write("system/setCastFieldsDict",
+               header + "dimension 2;\nspacing 0.01;\nclouds\n{\n    water\n    {\n        regions "
+                        "{ r { type box; min (0 0 0.01); max (0.1 0.2 0.05); } }\n    }\n}\n");
   try {
     buildCastClouds(CaseFolder(folder.root()), {});
-    FAIL() << "a 2D cloud off z = 0 accepted";
+    FAIL() << "a 2D region off z = 0 accepted";
   } catch (const DictionaryError& error) {
     const std::string message = error.what();
-    EXPECT_NE(message.find("setCastFieldsDict:2:1: cloud 'water' has a particle at z = 0.005"),
+    EXPECT_NE(message.find("setCastFieldsDict:8:"), std::string::npos) << message;
+    EXPECT_NE(message.find("region 'r' of cloud 'water' holds no lattice point"),
               std::string::npos)
         << message;
+    EXPECT_NE(message.find("does not reach the plane z = 0"), std::string::npos) << message;
+  }
+}
+
+// The lattice points ((i + 1/2) dx, (j + 1/2) dx, 0) for which inside(x, y) holds.
+template <class Inside>
+std::set<std::pair<long, long>> planeLatticeInside(double dx, long range, const Inside& inside) {
+  std::set<std::pair<long, long>> points;
+  for (long i = -range; i < range; ++i) {
+    for (long j = -range; j < range; ++j) {
+      if (inside((static_cast<double>(i) + 0.5) * dx, (static_cast<double>(j) + 0.5) * dx)) {
+        points.insert({i, j});
+      }
+    }
+  }
+  return points;
+}
+
+std::set<std::pair<long, long>> planeLatticeOf(const ParticleCloud& cloud, double dx) {
+  std::set<std::pair<long, long>> points;
+  for (const Vector& x : cloud.positions()) {
+    EXPECT_EQ(x.z(), 0) << "a 2D particle off the plane";
+    points.insert({std::lround(x.x() / dx - 0.5), std::lround(x.y() / dx - 0.5)});
+  }
+  EXPECT_EQ(points.size(), cloud.size()) << "a lattice point filled twice";
+  return points;
+}
+
+TEST(CastFieldsSetup, TwoDimensionalCaseFillsTheSectionOfEveryRegionType) {
+  // Each region cut by z = 0 fills exactly the plane lattice points of its section (a point on
+  // the boundary may go either way: the shapes are chosen so that none lies on one).
+  const double dx = 0.001;
+  struct Case {
+    const char* region;
+    std::function<bool(double, double)> inside;
+  };
+  const double r = 0.0103, zc = 0.004, rSection = std::sqrt(r * r - zc * zc);
+  const std::vector<Case> cases = {
+      {"{ type sphere; centre (0.0002 0.0001 0.004); radius 0.0103; }",
+       [&](double x, double y) { return std::hypot(x - 0.0002, y - 0.0001) <= rSection; }},
+      {"{ type cylinder; point1 (0 0 -0.01); point2 (0 0 0.02); radius 0.0081; }",
+       [](double x, double y) { return std::hypot(x, y) <= 0.0081; }},
+      {"{ type cone; point1 (-0.0101 0 0); point2 (0.0101 0 0); radius1 0.002; radius2 0.009; }",
+       [](double x, double y) {
+         return std::abs(x) <= 0.0101 && std::abs(y) <= 0.002 + 0.007 * (x + 0.0101) / 0.0202;
+       }},
+      {"{ type intersection; regions { s { type sphere; centre (0 0 0); radius 0.0123; }\n"
+       "  slab { type box; min (-1 -0.0052 -0.0001); max (1 1 0.0001); } } }",
+       [](double x, double y) { return std::hypot(x, y) <= 0.0123 && y >= -0.0052; }},
+      {"{ type gmshSurface; file \"disk.geo\"; group melt; }",
+       [](double x, double y) { return std::hypot(x - 0.0004, y) <= 0.0092; }},
+  };
+  TemporaryCase folder;
+  folder.write("constant/geometry/disk.geo",
+               "SetFactory(\"OpenCASCADE\");\nDisk(1) = {0.0004, 0, 0, 0.0092};\n"
+               "Physical Surface(\"melt\") = {1};\n");
+  for (const Case& c : cases) {
+    folder.write("system/setCastFieldsDict",
+                 header + "dimension 2;\nspacing 0.001;\nclouds { metal { regions {\n  r " +
+                     c.region + "\n} } }\n");
+    const ParticleCloud metal = buildCastClouds(CaseFolder(folder.root()), {}).at(0);
+    const auto expected = planeLatticeInside(dx, 30, c.inside);
+    ASSERT_GT(expected.size(), 100u) << c.region;
+    EXPECT_EQ(planeLatticeOf(metal, dx), expected) << c.region;
+  }
+  // gmsh volumes are 3D; a 2D case names a surface (and the reverse).
+  folder.write("system/setCastFieldsDict",
+               header + "dimension 2;\nspacing 0.001;\nclouds { metal { regions {\n  r { type "
+                        "gmshVolume; file \"disk.geo\"; group melt; }\n} } }\n");
+  EXPECT_THROW(buildCastClouds(CaseFolder(folder.root()), {}), DictionaryError);
+}
+
+TEST(CastFieldsSetup, EmptyFillIsAnErrorNamingTheCloudTheRegionAndWhy) {
+  TemporaryCase folder;
+  auto expectError = [&](const std::string& clouds, const std::vector<std::string>& parts,
+                         const std::vector<ParticleCloud>& mold) {
+    folder.write("system/setCastFieldsDict", header + "spacing 0.01;\nclouds\n{\n" + clouds + "}\n");
+    try {
+      buildCastClouds(CaseFolder(folder.root()), mold);
+      ADD_FAILURE() << "an empty fill accepted: " << clouds;
+    } catch (const DictionaryError& error) {
+      const std::string message = error.what();
+      for (const std::string& part : parts) {
+        EXPECT_NE(message.find(part), std::string::npos) << message;
+      }
+    }
+  };
+  // thinner than a spacing, between the lattice planes
+  expectError("  disk { regions { thin { type cylinder; point1 (0 0 0.001); point2 (0 0 0.004); "
+              "radius 0.05; } } }\n",
+              {"setCastFieldsDict:5:", "region 'thin' of cloud 'disk' holds no lattice point",
+               "thinner than a spacing"},
+              {});
+  // inside a mold: a block of mold particles on the lattice covers the region
+  std::vector<Vector> block;
+  for (int i = -5; i < 5; ++i) {
+    for (int j = -5; j < 5; ++j) {
+      for (int k = -5; k < 5; ++k) {
+        block.push_back(Vector(Real(i + 0.5), Real(j + 0.5), Real(k + 0.5)) * Real(0.01));
+      }
+    }
+  }
+  ParticleCloud mold("mold");
+  mold.resize(block.size());
+  std::copy(block.begin(), block.end(), mold.positions().begin());
+  expectError("  metal { regions { a { type sphere; centre (0 0 0); radius 0.02; } } }\n",
+              {"setCastFieldsDict:5:", "region 'a' of cloud 'metal' is filled by no particle",
+               "inside the mold"},
+              {mold});
+  // in other units than the mold (a centre in mm, the mold in m): wholly outside its domain
+  expectError("  metal { regions { a { type sphere; centre (0 0 20); radius 0.03; } } }\n",
+              {"setCastFieldsDict:5:", "cloud 'metal' lies wholly outside the domain",
+               "units"},
+              {mold});
+}
+
+TEST(CastFieldsSetup, TheCloudsMaterialComesFromPhysicsModelsWhenTheDictNamesNone) {
+  TemporaryCase folder;
+  folder.write("constant/physicalProperties",
+               header + "alloy { density 2500; viscosity 1e-3; }\nwater { density 1000; "
+                        "viscosity 1e-3; }\n");
+  folder.write("constant/physicsModels", header + "materials { metal alloy; }\n");
+  folder.write("system/setCastFieldsDict",
+               header + "spacing 0.01;\nclouds { metal { regions { a { type box; min (0 0 0); "
+                        "max (0.02 0.02 0.02); } } fields { rho standard; } } }\n");
+  const ParticleCloud metal = buildCastClouds(CaseFolder(folder.root()), {}).at(0);
+  ASSERT_EQ(metal.size(), 8u);
+  for (const Real rho : metal.scalarField("rho")) EXPECT_EQ(rho, Real(2500));
+
+  // the two files naming different materials is an error naming both places
+  folder.write("system/setCastFieldsDict",
+               header + "spacing 0.01;\nclouds { metal { material water; regions { a { type box; "
+                        "min (0 0 0); max (0.02 0.02 0.02); } } fields { rho standard; } } }\n");
+  try {
+    buildCastClouds(CaseFolder(folder.root()), {});
+    FAIL() << "two materials for one cloud accepted";
+  } catch (const DictionaryError& error) {
+    const std::string message = error.what();
+    EXPECT_NE(message.find("setCastFieldsDict:3:"), std::string::npos) << message;
+    EXPECT_NE(message.find("physicsModels:2:"), std::string::npos) << message;
   }
 }
 
