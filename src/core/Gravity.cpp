@@ -1,5 +1,7 @@
 #include "core/Gravity.h"
 
+#include <filesystem>
+
 #include "core/dictionary/Dictionary.h"
 
 namespace sphcast {
@@ -11,6 +13,11 @@ Vector readGravity(const CaseFolder& caseFolder) {
   // OpenFOAM writes the dimensions apart; a set inside `value` is checked by get() too.
   if (g.found("dimensions")) g.checkDimensions("dimensions", acceleration);
   return g.get<Vector>("value", acceleration);
+}
+
+std::optional<Vector> readGravityIfPresent(const CaseFolder& caseFolder) {
+  if (!std::filesystem::exists(caseFolder.constantFile("g"))) return std::nullopt;
+  return readGravity(caseFolder);
 }
 
 }  // namespace sphcast

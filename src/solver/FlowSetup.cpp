@@ -1,6 +1,9 @@
 #include "solver/FlowSetup.h"
 
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
+#include <limits>
 #include <sstream>
 
 #include "core/Error.h"
@@ -59,7 +62,7 @@ PeriodicBox readPeriodicBox(const Dictionary& periodic, Real supportRadius, int 
   return box;
 }
 
-FlowSetup readFlowSetup(const CaseFolder& caseFolder, const Vector& gravity) {
+FlowSetup readFlowSetup(const CaseFolder& caseFolder, const std::optional<Vector>& gravityFile) {
   FlowSetup setup;
   const auto modelsFile = caseFolder.constantFile("physicsModels");
   if (!std::filesystem::exists(modelsFile)) return setup;
@@ -72,6 +75,14 @@ FlowSetup readFlowSetup(const CaseFolder& caseFolder, const Vector& gravity) {
   flow.checkKeys({"model", "fluid", "walls"});
   if (flow.getChoice("model", {"none", "weaklyCompressible"}) == "none") return setup;
   setup.enabled = true;
+  if (!gravityFile) {
+    throw DictionaryError(models.location("flow"),
+                          "a flow needs gravity, but " +
+                              caseFolder.constantFile("g").string() +
+                              " does not exist (write 'dimensions [0 1 -2 0 0 0 0]; value (0 0 "
+                              "-9.81);' there, or (0 0 0) for none)");
+  }
+  const Vector gravity = *gravityFile;
   setup.fluidCloud = flow.get<std::string>("fluid");
   setup.wallClouds = flow.getOrDefault<std::vector<std::string>>("walls", {});
 
@@ -135,6 +146,49 @@ FlowSetup readFlowSetup(const CaseFolder& caseFolder, const Vector& gravity) {
   setup.restDensity = fluid.requireDensity("the flow");
   setup.viscosity = fluid.requireViscosity("the flow");
   return setup;
+}
+
+SoundSpeedCheck checkSoundSpeed(const FlowSettings& settings, const ParticleCloud& fluid,
+                                const std::vector<const ParticleCloud*>& walls) {
+  SoundSpeedCheck check;
+  const double g = static_cast<double>(settings.gravity.norm());
+  const Eigen::Vector3d up =
+      g > 0 ? Eigen::Vector3d(-settings.gravity.cast<double>() / g) : Eigen::Vector3d::Zero();
+  double top = -std::numeric_limits<double>::infinity();
+  double bottom = std::numeric_limits<double>::infinity();
+  for (const Vector& x : fluid.positions()) {
+    top = std::max(top, x.cast<double>().dot(up));
+    bottom = std::min(bottom, x.cast<double>().dot(up));
+  }
+  for (const ParticleCloud* wall : walls) {
+    for (const Vector& x : wall->positions()) bottom = std::min(bottom, x.cast<double>().dot(up));
+  }
+  check.fallHeight = fluid.size() > 0 ? std::max(0.0, top - bottom) : 0.0;
+  if (fluid.hasVectorField("U")) {
+    for (const Vector& u : fluid.vectorField("U")) {
+      check.initialSpeed = std::max(check.initialSpeed, static_cast<double>(u.norm()));
+    }
+  }
+  check.largestSpeed =
+      std::sqrt(check.initialSpeed * check.initialSpeed + 2.0 * g * check.fallHeight);
+  const double c = static_cast<double>(settings.soundSpeed);
+  check.mach = check.largestSpeed / c;
+  check.tooLow = check.mach > maxStartMach;
+  std::ostringstream message;
+  message.precision(3);
+  message << "Sound speed: c = " << c << " m/s against the largest speed the metal can reach, "
+          << "sqrt(|U0|^2 + 2 |g| H) = " << check.largestSpeed << " m/s (|U0| up to "
+          << check.initialSpeed << " m/s, a fall H = " << check.fallHeight
+          << " m from its top to the lowest wall): Mach up to " << check.mach;
+  if (check.tooLow) {
+    message << ", above " << maxStartMach << ": the density will stray by about Ma^2 = "
+            << 100 * check.mach * check.mach
+            << " % from rho_s (the pressure waves with it); raise soundSpeed in "
+               "system/sphSchemes to at least "
+            << 10 * check.largestSpeed << " m/s (10 times that speed; the step shrinks as 1/c)";
+  }
+  check.message = message.str();
+  return check;
 }
 
 std::vector<std::string> prepareFluidFields(const FlowSetup& setup, ParticleCloud& fluid) {

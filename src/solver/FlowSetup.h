@@ -46,8 +46,26 @@ struct FlowSetup {
 // [lower, upper), longer than 2 supportRadius; no z in 2D.
 PeriodicBox readPeriodicBox(const Dictionary& periodic, Real supportRadius, int dimension);
 
-// Reads and checks the three dictionaries (errors name file, line and key).
-FlowSetup readFlowSetup(const CaseFolder& caseFolder, const Vector& gravity);
+// The Mach number the flow will reach, foreseen at its start: the largest speed the metal can
+// gain, from its largest initial speed |U0| and its fall under g from its top to the lowest
+// wall particle (or its own bottom), v = sqrt(|U0|^2 + 2 |g| H), against soundSpeed c. Weakly
+// compressible SPH holds the density within about Ma^2 of rho_s, so above Ma = 0.1 (1 %) the
+// log warns and names the c that would do (10 v). (Inlets, when they come, add their speed.)
+struct SoundSpeedCheck {
+  double fallHeight = 0;    // H, m
+  double initialSpeed = 0;  // largest |U0|, m/s
+  double largestSpeed = 0;  // v, m/s
+  double mach = 0;          // v / c
+  bool tooLow = false;      // mach > maxMach
+  std::string message;      // the log's line(s)
+};
+constexpr double maxStartMach = 0.1;
+SoundSpeedCheck checkSoundSpeed(const FlowSettings& settings, const ParticleCloud& fluid,
+                                const std::vector<const ParticleCloud*>& walls);
+
+// Reads and checks the three dictionaries (errors name file, line and key). A flow needs
+// gravity (constant/g, readGravityIfPresent): without it, an error at the flow's entry.
+FlowSetup readFlowSetup(const CaseFolder& caseFolder, const std::optional<Vector>& gravity);
 
 // Gives the fluid cloud the fields the flow needs that the start time lacks: restDensity and
 // viscosity (rho_s and mu, at each particle's T where they are tables: the cloud must then

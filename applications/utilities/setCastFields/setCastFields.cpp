@@ -38,7 +38,7 @@ void addStartPressure(const sphcast::CaseFolder& caseFolder,
                       std::vector<sphcast::ParticleCloud>& clouds) {
   if (!std::filesystem::exists(caseFolder.constantFile("physicsModels"))) return;
   const sphcast::FlowSetup flow =
-      sphcast::readFlowSetup(caseFolder, sphcast::readGravity(caseFolder));
+      sphcast::readFlowSetup(caseFolder, sphcast::readGravityIfPresent(caseFolder));
   if (!flow.enabled) return;
   for (sphcast::ParticleCloud& cloud : clouds) {
     if (cloud.name() != flow.fluidCloud) continue;

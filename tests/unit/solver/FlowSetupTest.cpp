@@ -2,6 +2,8 @@
 // periodic axes of constant/physicsModels, and the errors a user gets for them.
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <optional>
 #include <string>
 
 #include "core/CaseFolder.h"
@@ -232,6 +234,50 @@ TEST(FlowSetup, PhysicalPropertiesMayHoldOtherMaterialsThanTheFluid) {
                                                     "steel { density 7000; viscosity 5e-3; }\n" +
                                                     "water { density 1000; viscosity 1e-3; }\n");
   EXPECT_EQ(errorOf(flowCase), "");
+}
+
+TEST(FlowSetup, AFlowWithoutConstantGIsAnErrorAtTheFlowEntry) {
+  const FlowCase flowCase("", "densityScheme riemann;\n");
+  try {
+    readFlowSetup(CaseFolder(flowCase.root()), std::nullopt);
+    FAIL() << "a flow without gravity accepted";
+  } catch (const DictionaryError& error) {
+    const std::string message = error.what();
+    EXPECT_NE(message.find("physicsModels:2:"), std::string::npos) << message;
+    EXPECT_NE(message.find("a flow needs gravity"), std::string::npos) << message;
+    EXPECT_NE(message.find("constant/g does not exist"), std::string::npos) << message;
+  }
+}
+
+// The foreseen Mach number: a column of water 0.5 m high over a floor 0.3 m below it falls
+// at most sqrt(2 g 0.8) = 3.96 m/s; with U0 = 3 m/s, sqrt(9 + 2 g 0.8) = 4.97 m/s.
+TEST(FlowSetup, SoundSpeedCheckForeseesTheFallAndTheInitialSpeed) {
+  FlowSettings settings;
+  settings.gravity = Vector(0, -9.81, 0);
+  settings.soundSpeed = 20;
+  ParticleCloud water("water"), tank("tank");
+  water.resize(2);
+  water.positions() = {Vector(0, 0.3, 0), Vector(0.1, 0.8, 0)};
+  tank.resize(1);
+  tank.positions() = {Vector(0, 0, 0)};
+  const double fall = std::sqrt(2 * 9.81 * 0.8);
+  SoundSpeedCheck check = checkSoundSpeed(settings, water, {&tank});
+  EXPECT_NEAR(check.fallHeight, 0.8, 1e-6);
+  EXPECT_NEAR(check.largestSpeed, fall, 1e-6);
+  EXPECT_NEAR(check.mach, fall / 20, 1e-6);
+  EXPECT_TRUE(check.tooLow) << check.message;  // Mach 0.198
+  EXPECT_NE(check.message.find("at least 39.6 m/s"), std::string::npos) << check.message;
+
+  settings.soundSpeed = 50;  // Mach 0.079
+  EXPECT_FALSE(checkSoundSpeed(settings, water, {&tank}).tooLow);
+  water.addVectorField("U")[1] = Vector(3, 0, 0);  // Mach 0.0995
+  check = checkSoundSpeed(settings, water, {&tank});
+  EXPECT_NEAR(check.largestSpeed, std::sqrt(9 + fall * fall), 1e-6);
+  EXPECT_FALSE(check.tooLow) << check.message;
+  water.vectorField("U")[0] = Vector(0, -3.2, 0);  // Mach 0.1018
+  EXPECT_TRUE(checkSoundSpeed(settings, water, {&tank}).tooLow);
+  // without walls the fall is the fluid's own height
+  EXPECT_NEAR(checkSoundSpeed(settings, water, {}).fallHeight, 0.5, 1e-6);
 }
 
 }  // namespace
