@@ -71,14 +71,37 @@ std::string formatDuration(double seconds) {
   return text;
 }
 
-std::string RunClock::progressLine(double fraction, long stepsTaken) const {
+std::string RunClock::progressLine(double fraction, long stepsTaken,
+                                   std::optional<std::pair<double, std::string>> earlierEnd) const {
   const double wall = clockTime();
   const double stepsPerSecond = wall > 0.0 ? static_cast<double>(stepsTaken) / wall : 0.0;
-  const double eta = fraction > 0.0 ? wall * (1.0 - fraction) / fraction : 0.0;
-  char text[128];
-  std::snprintf(text, sizeof text, "Progress %.1f%% of endTime  %.0f steps/s  ETA %s",
-                100.0 * fraction, stepsPerSecond, fraction > 0.0 ? formatDuration(eta).c_str() : "-");
+  std::optional<double> eta;
+  if (fraction > 0.0) eta = wall * (1.0 - fraction) / fraction;
+  std::string why;
+  if (earlierEnd && (!eta || earlierEnd->first < *eta)) {
+    eta = earlierEnd->first;
+    why = " (" + earlierEnd->second + ")";
+  }
+  char text[192];
+  std::snprintf(text, sizeof text, "Progress %.1f%% of endTime  %.0f steps/s  ETA %s%s",
+                100.0 * fraction, stepsPerSecond, eta ? formatDuration(*eta).c_str() : "-",
+                why.c_str());
   return text;
+}
+
+void CompletionEstimate::add(double wallSeconds, double progress) {
+  samples_.emplace_back(wallSeconds, progress);
+  // keep the newest sample older than the window, so that the rate spans the whole window
+  while (samples_.size() > 2 && samples_[1].first <= wallSeconds - window_) samples_.pop_front();
+}
+
+std::optional<double> CompletionEstimate::secondsLeft() const {
+  if (samples_.size() < 2) return std::nullopt;
+  const auto& [wallThen, then] = samples_.front();
+  const auto& [wallNow, now] = samples_.back();
+  if (!(now > then) || !(wallNow > wallThen)) return std::nullopt;
+  const double rate = (now - then) / (wallNow - wallThen);
+  return std::max(0.0, 1.0 - now) / rate;
 }
 
 }  // namespace sphcast

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <set>
 
 #include "core/AtomicFile.h"
 #include "core/Error.h"
@@ -58,11 +59,16 @@ void writeCaseIndex(const CaseFolder& caseFolder) {
   std::vector<PvdEntry> entries;
   const auto staticClouds = cloudFilesIn(caseFolder.constant() / "particles");
   for (const TimeFolder& time : caseFolder.times()) {
+    std::set<std::string> inTime;
     for (const fs::path& file : cloudFilesIn(caseFolder.root() / time.name)) {
       entries.push_back({time.value, time.name, file.stem().string(),
                          time.name + "/" + file.filename().string()});
+      inTime.insert(file.stem().string());
     }
+    // a mold as particleizeMold wrote it, unless the time has its own (a mold carrying heat,
+    // with its T): the time's is the one to show
     for (const fs::path& file : staticClouds) {
+      if (inTime.count(file.stem().string()) > 0) continue;
       entries.push_back({time.value, time.name, file.stem().string(),
                          "constant/particles/" + file.filename().string()});
     }

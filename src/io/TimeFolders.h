@@ -15,7 +15,8 @@ void writeTimeFolder(const CaseFolder& caseFolder, const TimeState& time,
                      const std::vector<const ParticleCloud*>& clouds);
 
 // Rewrites <case>.pvd from what is on disk: every cloud of every time folder, and the static
-// clouds of constant/particles at every time, so ParaView plays the whole series.
+// clouds of constant/particles at every time that has no cloud of their name (a mold carrying
+// heat is written to the time folders: its T is there), so ParaView plays the whole series.
 void writeCaseIndex(const CaseFolder& caseFolder);
 
 // The .pvd files of the case folder other than <case>.pvd that index nothing but this case's

@@ -28,4 +28,10 @@ void CaseWriter::write(const TimeState& time, const std::vector<const ParticleCl
   writeCaseIndex(caseFolder_);
 }
 
+void CaseWriter::rewriteStart(const TimeState& time,
+                              const std::vector<const ParticleCloud*>& clouds) {
+  writeTimeFolder(caseFolder_, time, clouds);
+  writeCaseIndex(caseFolder_);
+}
+
 }  // namespace sphcast

@@ -21,6 +21,8 @@ class CaseWriter {
 
   // Writes <time>/<cloud>.vtp for every cloud and <time>/uniform/time.
   void write(const TimeState& time, const std::vector<const ParticleCloud*>& clouds);
+  // Writes the start time again (with the fields the models added); never purged.
+  void rewriteStart(const TimeState& time, const std::vector<const ParticleCloud*>& clouds);
 
   void setPurgeWrite(int purgeWrite) { purgeWrite_ = purgeWrite; }
 

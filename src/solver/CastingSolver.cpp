@@ -21,9 +21,10 @@ CastingSolver::CastingSolver(const CaseFolder& caseFolder)
     : caseFolder_(caseFolder),
       repairedWrites_(caseFolder.recoverInterruptedWrites()),
       time_(caseFolder),
-      gravity_(readGravity(caseFolder)),
+      // constant/g for a flow or ballistic clouds; a case that only conducts heat needs none
+      gravity_(readGravityIfPresent(caseFolder).value_or(Vector::Zero())),
       motion_(gravity_),
-      flowSetup_(readFlowSetup(caseFolder, gravity_)),
+      flowSetup_(readFlowSetup(caseFolder, readGravityIfPresent(caseFolder))),
       heatSetup_(readHeatSetup(caseFolder)),
       surfaceTensionSetup_(readSurfaceTensionSetup(caseFolder, flowSetup_)),
       solidificationSetup_(readSolidificationSetup(caseFolder, flowSetup_, heatSetup_)),
@@ -38,6 +39,7 @@ CastingSolver::CastingSolver(const CaseFolder& caseFolder)
     throw Error("time folder " + (caseFolder_.root() / time_.startTimeName()).string() +
                 " holds no cloud (.vtp) to run");
   }
+  const std::vector<std::string> startFields = fieldInventory(clouds_);
   // controlDict's entries beyond run control (TimeControl's), read once
   const Dictionary controlDict = Dictionary::read(caseFolder_.systemFile("controlDict"));
   health_ = HealthSettings::read(controlDict);
@@ -49,7 +51,18 @@ CastingSolver::CastingSolver(const CaseFolder& caseFolder)
     if (heatSetup_.enabled) setUpHeat();
     if (solidificationSetup_.enabled) setUpSolidification();
     startModels();
+    // setCastFields wrote the first time without the clouds and fields the models add (a held
+    // mold with its T, solidFraction, ...): written again with them, ParaView lists every field
+    // from the first time. It is the state a restart from this time starts from.
+    if (fieldInventory(clouds_) != startFields) {
+      std::vector<const ParticleCloud*> written;
+      for (const ParticleCloud& cloud : clouds_) written.push_back(&cloud);
+      writer_.rewriteStart(time_.state(), written);
+      info() << "    (time " << time_.startTimeName()
+             << " written again with every cloud and field the run writes)\n";
+    }
   } else {
+    readGravity(caseFolder_);  // ballistic clouds need constant/g: its error when it is missing
     for (const ParticleCloud& cloud : clouds_) {
       info() << "Cloud " << cloud.name() << ": " << cloud.size() << " particles"
              << (cloud.hasVectorField("U") ? ", moving ballistically" : ", static (no U field)")
@@ -61,6 +74,18 @@ CastingSolver::CastingSolver(const CaseFolder& caseFolder)
   }
   setUpFunctionObjects(controlDict);
   info() << std::endl;
+}
+
+std::vector<std::string> CastingSolver::fieldInventory(const std::vector<ParticleCloud>& clouds) {
+  std::vector<std::string> names;
+  for (const ParticleCloud& cloud : clouds) {
+    names.push_back(cloud.name());
+    for (const auto& [name, field] : cloud.scalarFields()) names.push_back(cloud.name() + "." + name);
+    for (const auto& [name, field] : cloud.vectorFields()) names.push_back(cloud.name() + "." + name);
+    for (const auto& [name, field] : cloud.idFields()) names.push_back(cloud.name() + "." + name);
+  }
+  std::sort(names.begin(), names.end());
+  return names;
 }
 
 ParticleCloud* CastingSolver::findCloud(const std::string& name) {
@@ -181,6 +206,12 @@ void CastingSolver::setUpFlow() {
          << " of its running mean, stops the run\n"
          << "    wall clearance " << settings.wallClearance
          << " dx: fluid particles closer to a wall surface are moved back to it\n";
+  const SoundSpeedCheck soundSpeed = checkSoundSpeed(settings, fluid, walls);
+  if (soundSpeed.tooLow) {
+    warning(soundSpeed.message);
+  } else {
+    info() << "    " << soundSpeed.message << '\n';
+  }
   if (surfaceTensionSetup_.enabled) {
     SurfaceTensionSettings tension = surfaceTensionSetup_.settings;
     tension.spacing = static_cast<Real>(fluid.attributes().at("spacing"));
@@ -595,7 +626,7 @@ void CastingSolver::logStep(bool printBlock) {
   if (energy_) logHeat();
   if (solidification_) logSolidification();
   info() << clock_.timesLine() << '\n'
-         << clock_.progressLine(time_.progress(), stepsTaken_) << '\n'
+         << clock_.progressLine(time_.progress(), stepsTaken_, solidEnd()) << '\n'
          << std::endl;  // flushed: a killed run's log ends at its last step
 }
 
@@ -627,6 +658,13 @@ void CastingSolver::logHeat() {
   info() << line.str();
 }
 
+std::optional<std::pair<double, std::string>> CastingSolver::solidEnd() const {
+  if (!solidification_ || !solidificationSetup_.endWhenSolid) return std::nullopt;
+  const auto seconds = solidEstimate_.secondsLeft();
+  if (!seconds) return std::nullopt;
+  return std::make_pair(*seconds, std::string("all solid, endWhenSolid"));
+}
+
 void CastingSolver::logSolidification() {
   const SolidificationSummary s = solidification_->summary();
   std::ostringstream line;
@@ -635,17 +673,9 @@ void CastingSolver::logSolidification() {
        << s.particles << " particles " << s.liquid << " liquid, " << s.frozen << " frozen ("
        << s.solid << " fully solid), " << s.particles - s.frozen << " flowing";
   if (s.viscosityCapped > 0) line << " (" << s.viscosityCapped << " with mu capped)";
-  // with endWhenSolid the run ends with the last liquid, not at endTime: an ETA from the rise
-  // of the solid fraction since the last print (linear: the last few per cent go slower)
-  const double clock = clock_.clockTime();
-  if (solidificationSetup_.endWhenSolid && lastSolidFraction_ >= 0 &&
-      s.solidFraction > lastSolidFraction_ && clock > lastSolidClock_) {
-    const double rate = (s.solidFraction - lastSolidFraction_) / (clock - lastSolidClock_);
-    line << "\n    solid fraction rising " << rate << " per s of wall time: all solid in about "
-         << static_cast<long>((1 - s.solidFraction) / rate) << " s at this rate (endWhenSolid)";
-  }
-  lastSolidFraction_ = s.solidFraction;
-  lastSolidClock_ = clock;
+  // with endWhenSolid the run ends with the last liquid, not at endTime: the progress line's
+  // ETA follows the rise of the solid fraction (CompletionEstimate)
+  if (solidificationSetup_.endWhenSolid) solidEstimate_.add(clock_.clockTime(), s.solidFraction);
   if (cooling_) {
     line << "\n    cooling: heat steps of " << heatDeltaT_ << " s, each with "
          << solidificationSetup_.cooling->flowStepsPerHeatStep << " flow steps (the last "

@@ -65,6 +65,10 @@ class CastingSolver {
   void logTimeSpent();
   void logHeat();
   void logSolidification();
+  // "cloud" and "cloud.field" of every cloud, sorted: what a time folder of them holds.
+  static std::vector<std::string> fieldInventory(const std::vector<ParticleCloud>& clouds);
+  // The wall seconds to all solid when the run ends on it (endWhenSolid), for the ETA.
+  std::optional<std::pair<double, std::string>> solidEnd() const;
   // Why the run must stop after the step just taken, or "" when every check passed; warns in
   // the log about what is bad but not yet fatal.
   std::string checkHealth();
@@ -113,7 +117,7 @@ class CastingSolver {
   // Cooling to the end (solidificationSetup_.cooling): steps of the heat's length, each with a
   // few flow steps; a fluid cloud attribute (coolingMode) too, so a restart goes on alike.
   bool cooling_ = false;
-  double lastSolidFraction_ = -1, lastSolidClock_ = 0;  // at the last print, for the ETA
+  CompletionEstimate solidEstimate_;  // the wall time to all solid, for the ETA (endWhenSolid)
   long flowSubSteps_ = 0;
   double lastFlowSubStep_ = 0;
   HealthSettings health_;

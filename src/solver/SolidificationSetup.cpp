@@ -68,6 +68,13 @@ SolidificationSetup readSolidificationSetup(const CaseFolder& caseFolder, const 
   }
   if (dict.found("cavitationPressure")) {
     setup.cavitationPressure = dict.get<Real>("cavitationPressure", pressure);
+    // a gauge pressure the melt may fall to: a positive floor would push on the melt where
+    // nothing pushes (a cavity's vapour is at about 0 gauge, a melt holds suction below it)
+    if (!(setup.cavitationPressure <= 0)) {
+      throw DictionaryError(dict.location("cavitationPressure"),
+                            "'cavitationPressure' is the suction the melt holds (gauge, Pa): "
+                            "it must be 0 or negative in " + dict.name());
+    }
   }
   setup.endWhenSolid = dict.getChoiceOrDefault("endWhenSolid", {"yes", "no"}, "no") == "yes";
   if (dict.found("cooling")) {

@@ -2,11 +2,14 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "io/PvdIndex.h"
+#include "io/VtpCloud.h"
 #include "support/TemporaryCase.h"
 
 namespace sphcast {
@@ -44,6 +47,36 @@ TEST(TimeFolders, AnIndexLeftByACopyUnderAnotherNameIsStale) {
             std::string::npos)
       << warning;
   EXPECT_TRUE(fs::exists(copied.root() / "fine.pvd"));  // warned of, not removed
+}
+
+// A mold of constant/particles is shown at every time, but where a time folder has its own
+// (a mold carrying heat, written with its T) the index points there: ParaView colours the mold
+// by T at every time (it listed the mold without T before).
+TEST(TimeFolders, TheIndexShowsATimesOwnCloudRatherThanTheStaticOne) {
+  const testing::TemporaryCase folder("cast");
+  const CaseFolder caseFolder(folder.root());
+  ParticleCloud metal("metal"), mold("mold"), core("core");
+  metal.resize(2);
+  mold.resize(3);
+  core.resize(1);
+  fs::create_directories(folder.root() / "constant/particles");
+  writeCloudVtp(mold, folder.root() / "constant/particles/mold.vtp");
+  writeCloudVtp(core, folder.root() / "constant/particles/core.vtp");
+  writeTimeFolder(caseFolder, TimeState{}, {&metal});
+  writeTimeFolder(caseFolder, TimeState{0.1, "0.1", 10, 0.01}, {&metal, &mold});
+  writeCaseIndex(caseFolder);
+  const std::vector<PvdEntry> expected{
+      {0, "0", "core", "constant/particles/core.vtp"},
+      {0, "0", "metal", "0/metal.vtp"},
+      {0, "0", "mold", "constant/particles/mold.vtp"},
+      {0.1, "0.1", "core", "constant/particles/core.vtp"},
+      {0.1, "0.1", "metal", "0.1/metal.vtp"},
+      {0.1, "0.1", "mold", "0.1/mold.vtp"}};
+  std::vector<PvdEntry> indexed = readPvd(caseFolder.pvdFile());
+  std::sort(indexed.begin(), indexed.end(), [](const PvdEntry& a, const PvdEntry& b) {
+    return std::tie(a.time, a.part) < std::tie(b.time, b.part);
+  });
+  EXPECT_EQ(indexed, expected);
 }
 
 }  // namespace
