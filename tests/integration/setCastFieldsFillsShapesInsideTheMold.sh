@@ -79,7 +79,7 @@ rm -rf 0
 sed -i 's/type gmshVolume/type pyramid/' system/setCastFieldsDict
 if setCastFields > log.setCastFields 2>&1; then fail "unknown region type accepted"; fi
 grep -qF "unknown type 'pyramid'" log.setCastFields || fail "wrong message: $(cat log.setCastFields)"
-grep -qF "(box cylinder cone sphere gmshVolume union intersection difference)" log.setCastFields ||
+grep -qF "(box cylinder cone sphere gmshVolume gmshSurface union intersection difference)" log.setCastFields ||
     fail "valid types not listed: $(cat log.setCastFields)"
 [ -e 0 ] && fail "0/ written after an error"
 pass "unknown region type lists the valid ones; nothing written"
