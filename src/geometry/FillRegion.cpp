@@ -282,27 +282,23 @@ class BooleanRegion final : public FillRegion {
     }
     return result;
   }
-  double volumeBound() const override {
-    if (operation_ == Operation::subtract) return parts_.front()->volumeBound();
-    double sum = 0.0, smallest = parts_.front()->volumeBound();
-    for (const auto& part : parts_) {
-      sum += part->volumeBound();
-      smallest = std::min(smallest, part->volumeBound());
-    }
-    return operation_ == Operation::unite ? sum : smallest;
-  }
+  double volumeBound() const override { return bound(&FillRegion::volumeBound); }
   bool volumeIsExact() const override { return false; }
-  double sectionAreaBound() const override {
-    if (operation_ == Operation::subtract) return parts_.front()->sectionAreaBound();
-    double sum = 0.0, smallest = parts_.front()->sectionAreaBound();
+  double sectionAreaBound() const override { return bound(&FillRegion::sectionAreaBound); }
+
+ private:
+  // A bound of the combined measure from the parts': their sum for a union, the smallest for
+  // an intersection, the first's for a difference.
+  double bound(double (FillRegion::*measure)() const) const {
+    if (operation_ == Operation::subtract) return (parts_.front().get()->*measure)();
+    double sum = 0.0, smallest = (parts_.front().get()->*measure)();
     for (const auto& part : parts_) {
-      sum += part->sectionAreaBound();
-      smallest = std::min(smallest, part->sectionAreaBound());
+      sum += (part.get()->*measure)();
+      smallest = std::min(smallest, (part.get()->*measure)());
     }
     return operation_ == Operation::unite ? sum : smallest;
   }
 
- private:
   Operation operation_;
   std::vector<std::unique_ptr<FillRegion>> parts_;
 };

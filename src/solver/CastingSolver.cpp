@@ -53,8 +53,11 @@ CastingSolver::CastingSolver(const CaseFolder& caseFolder)
     startModels();
     // setCastFields wrote the first time without the clouds and fields the models add (a held
     // mold with its T, solidFraction, ...): written again with them, ParaView lists every field
-    // from the first time. It is the state a restart from this time starts from.
-    if (fieldInventory(clouds_) != startFields) {
+    // from the first time. It is the state a restart from this time starts from. A later time
+    // (a restart) is left as its run wrote it.
+    const auto times = caseFolder_.times();
+    const bool firstTime = !times.empty() && times.front().name == time_.startTimeName();
+    if (firstTime && fieldInventory(clouds_) != startFields) {
       std::vector<const ParticleCloud*> written;
       for (const ParticleCloud& cloud : clouds_) written.push_back(&cloud);
       writer_.rewriteStart(time_.state(), written);

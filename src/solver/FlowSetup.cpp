@@ -179,7 +179,7 @@ SoundSpeedCheck checkSoundSpeed(const FlowSettings& settings, const ParticleClou
   message << "Sound speed: c = " << c << " m/s against the largest speed the metal can reach, "
           << "sqrt(|U0|^2 + 2 |g| H) = " << check.largestSpeed << " m/s (|U0| up to "
           << check.initialSpeed << " m/s, a fall H = " << check.fallHeight
-          << " m from its top to the lowest wall): Mach up to " << check.mach;
+          << " m from its top to the lowest wall, or its own bottom): Mach up to " << check.mach;
   if (check.tooLow) {
     message << ", above " << maxStartMach << ": the density will stray by about Ma^2 = "
             << 100 * check.mach * check.mach

@@ -56,7 +56,7 @@ struct SoundSpeedCheck {
   double initialSpeed = 0;  // largest |U0|, m/s
   double largestSpeed = 0;  // v, m/s
   double mach = 0;          // v / c
-  bool tooLow = false;      // mach > maxMach
+  bool tooLow = false;      // mach > maxStartMach
   std::string message;      // the log's line(s)
 };
 constexpr double maxStartMach = 0.1;
