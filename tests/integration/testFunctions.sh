@@ -1,6 +1,9 @@
 # Sourced by the integration tests: a scratch folder, the built tools on PATH, small cases.
 set -u
 export PATH="$SPHCAST_BIN:$PATH"
+# the tools under test are $SPHCAST_BIN's: a copied tutorial would take etc/RunFunctions (and the
+# platforms/bin beside it) from the $SPHCAST_PROJECT of a user's etc/bashrc instead
+unset SPHCAST_PROJECT SPHCAST_TUTORIALS
 # the tutorials' comparison scripts, run on copies of the cases, import etc/functionObjectSeries.py;
 # the tests' own scripts import cloudFields.py from here
 export PYTHONPATH="$(cd "$(dirname "${BASH_SOURCE[0]}")/../../etc" && pwd):$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)${PYTHONPATH:+:$PYTHONPATH}"
