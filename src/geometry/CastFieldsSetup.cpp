@@ -240,6 +240,18 @@ void setFieldValues(const Dictionary& fields, ParticleCloud& cloud,
   }
 }
 
+// Runs `read`, which opens a file of the case: a file that cannot be opened (no line to point
+// at) is reported at `at` with what needs it ("rho hydrostatic needs ...: cannot open ...").
+template <class Read>
+auto neededBy(const SourceLocation& at, const std::string& what, Read&& read) {
+  try {
+    return read();
+  } catch (const DictionaryError& error) {
+    if (error.where().line != 0) throw;
+    throw DictionaryError(at, what + " needs it: " + error.what());
+  }
+}
+
 // rho standard | hydrostatic of a new cloud from its material's rho_s(T) (CastFieldsSetup.h);
 // nothing when rho is absent or a number.
 std::optional<DensityStart> readDensityStart(const Dictionary& cloudDict,
@@ -250,7 +262,11 @@ std::optional<DensityStart> readDensityStart(const Dictionary& cloudDict,
   const auto choice = fields.get<DensityChoice>("rho", densityDimensions);
   if (choice.value) return std::nullopt;
 
-  const MaterialLibrary& materials = settings.materials();
+  const std::string asked = "rho " + choice.model + " (of cloud '" + cloudName + "')";
+  const MaterialLibrary& materials =
+      neededBy(fields.location("rho"), asked, [&]() -> const MaterialLibrary& {
+        return settings.materials();
+      });
   // the cloud's material: setCastFieldsDict's `material`, else physicsModels' `materials` map
   // (which the solver reads), else the cloud's name; the two files may not disagree
   const auto mapped = settings.mappedMaterial(cloudName);
@@ -296,8 +312,9 @@ std::optional<DensityStart> readDensityStart(const Dictionary& cloudDict,
   origin << "(" << restDensity.description() << ")";
   start.origin = origin.str();
   if (start.model == "hydrostatic") {
-    start.gravity = settings.gravity();
-    start.soundSpeed = settings.soundSpeed();
+    start.gravity = neededBy(fields.location("rho"), asked, [&] { return settings.gravity(); });
+    start.soundSpeed =
+        neededBy(fields.location("rho"), asked, [&] { return settings.soundSpeed(); });
   }
   return start;
 }

@@ -297,5 +297,26 @@ TEST(CastFieldsSetup, TheCloudsMaterialComesFromPhysicsModelsWhenTheDictNamesNon
   }
 }
 
+TEST(CastFieldsSetup, AMissingFileSaysWhatNeedsIt) {
+  // rho hydrostatic reads the material, constant/g and system/sphSchemes: a missing one is
+  // reported at the rho entry, naming the file.
+  TemporaryCase folder;
+  folder.write("constant/physicalProperties",
+               header + "metal { density 2500; viscosity 1e-3; }\n");
+  folder.write("system/setCastFieldsDict",
+               header + "spacing 0.01;\nclouds { metal { regions { a { type box; min (0 0 0); "
+                        "max (0.02 0.02 0.02); } }\n  fields { rho hydrostatic; } } }\n");
+  try {
+    buildCastClouds(CaseFolder(folder.root()), {});
+    FAIL() << "rho hydrostatic without constant/g accepted";
+  } catch (const DictionaryError& error) {
+    const std::string message = error.what();
+    EXPECT_NE(message.find("setCastFieldsDict:4:"), std::string::npos) << message;
+    EXPECT_NE(message.find("rho hydrostatic (of cloud 'metal') needs it: "), std::string::npos)
+        << message;
+    EXPECT_NE(message.find("constant/g"), std::string::npos) << message;
+  }
+}
+
 }  // namespace
 }  // namespace sphcast
