@@ -127,31 +127,48 @@ class SphereRegion final : public FillRegion {
   double radius_ = 0.0;
 };
 
+// The `file` of a gmsh region (in constant/geometry), which must exist.
+std::filesystem::path gmshFile(const Dictionary& region,
+                               const std::filesystem::path& geometryFolder) {
+  region.checkKeys({"type", "file", "group"});
+  const auto file = geometryFolder / region.get<std::string>("file");
+  if (!std::filesystem::is_regular_file(file)) {
+    throw DictionaryError(region.location("file"),
+                          "geometry file '" + file.string() + "' does not exist");
+  }
+  return file;
+}
+
+// The region's `group` in the geometry, of the given dimension ("volume" 3, "surface" 2); else
+// an error at the key listing the groups of that dimension present.
+const PhysicalGroup& gmshGroup(const Dictionary& region, const GmshGeometry& geometry,
+                               int dimension, const std::string& kind) {
+  const auto name = region.get<std::string>("group");
+  const PhysicalGroup* group = geometry.findGroup(name);
+  if (group == nullptr || group->dimension != dimension) {
+    std::string present;
+    for (const auto& g : geometry.groups()) {
+      if (g.dimension == dimension) present += " " + g.name;
+    }
+    throw DictionaryError(region.location("group"),
+                          "'" + name + "' is not a physical " + kind + " of '" +
+                              geometry.file().string() + "'; the physical " + kind +
+                              "s present are (" + present + " )");
+  }
+  return *group;
+}
+
 class GmshVolumeRegion final : public FillRegion {
  public:
   GmshVolumeRegion(const Dictionary& region, double spacing,
                    const std::filesystem::path& geometryFolder) {
-    region.checkKeys({"type", "file", "group"});
-    const auto file = geometryFolder / region.get<std::string>("file");
+    const auto file = gmshFile(region, geometryFolder);
     const auto groupName = region.get<std::string>("group");
-    if (!std::filesystem::is_regular_file(file)) {
-      throw DictionaryError(region.location("file"),
-                            "geometry file '" + file.string() + "' does not exist");
-    }
     TriangleMesh boundary;
     {
       const GmshGeometry geometry(file, 0.5 * spacing);
-      const PhysicalGroup* group = geometry.findGroup(groupName);
-      if (group == nullptr || group->dimension != 3) {
-        std::string present;
-        for (const auto& g : geometry.groups()) {
-          if (g.dimension == 3) present += " " + g.name;
-        }
-        throw DictionaryError(region.location("group"),
-                              "'" + groupName + "' is not a physical volume of '" + file.string() +
-                                  "'; the physical volumes present are (" + present + " )");
-      }
-      boundary = geometry.boundaryOfVolumes(geometry.volumesOf(*group));
+      const PhysicalGroup& group = gmshGroup(region, geometry, 3, "volume");
+      boundary = geometry.boundaryOfVolumes(geometry.volumesOf(group));
     }
     if (boundary.size() == 0 || boundary.freeEdgeCount() > 0) {
       throw DictionaryError(region.location("group"),
@@ -181,27 +198,13 @@ class GmshSurfaceRegion final : public FillRegion {
  public:
   GmshSurfaceRegion(const Dictionary& region, double spacing,
                     const std::filesystem::path& geometryFolder) {
-    region.checkKeys({"type", "file", "group"});
-    const auto file = geometryFolder / region.get<std::string>("file");
+    const auto file = gmshFile(region, geometryFolder);
     const auto groupName = region.get<std::string>("group");
-    if (!std::filesystem::is_regular_file(file)) {
-      throw DictionaryError(region.location("file"),
-                            "geometry file '" + file.string() + "' does not exist");
-    }
     const GmshGeometry geometry(file, 0.0);
-    const PhysicalGroup* group = geometry.findGroup(groupName);
-    if (group == nullptr || group->dimension != 2) {
-      std::string present;
-      for (const auto& g : geometry.groups()) {
-        if (g.dimension == 2) present += " " + g.name;
-      }
-      throw DictionaryError(region.location("group"),
-                            "'" + groupName + "' is not a physical surface of '" + file.string() +
-                                "'; the physical surfaces present are (" + present + " )");
-    }
+    const PhysicalGroup& group = gmshGroup(region, geometry, 2, "surface");
     try {
       // chords of dx/16 on curved boundaries, as particleizeMold follows 2D walls
-      for (const int curve : geometry.boundaryCurvesOf(geometry.entitiesOf(*group))) {
+      for (const int curve : geometry.boundaryCurvesOf(geometry.entitiesOf(group))) {
         section_.add(geometry.planarCurve(curve, spacing / 16.0));
       }
     } catch (const Error& error) {
