@@ -19,6 +19,7 @@
 #include "geometry/MoldObstacles.h"
 #include "geometry/PackingRelaxation.h"
 #include "particles/CellGrid.h"
+#include "particles/Domain.h"
 #include "particles/NeighbourList.h"
 
 namespace sphcast {
@@ -460,7 +461,7 @@ std::vector<Vector> fillRegions(const CloudPlan& plan, double spacing, int dimen
 // are a warning: a flow stops them at its first step.
 void checkFillAgainstMold(const CloudPlan& plan, const std::vector<std::size_t>& regionOf,
                           const std::vector<bool>& clear, const std::vector<Vector>& centres,
-                          const MoldObstacles& mold) {
+                          const MoldObstacles& mold, const Domain& domain) {
   std::vector<std::size_t> filled(plan.regions.size(), 0), kept(plan.regions.size(), 0);
   for (std::size_t i = 0; i < regionOf.size(); ++i) {
     ++filled[regionOf[i]];
@@ -476,23 +477,15 @@ void checkFillAgainstMold(const CloudPlan& plan, const std::vector<std::size_t>&
                "gap the clearance leaves between the walls)";
     throw DictionaryError(plan.regions[k].location, message.str());
   }
-  const FixedNeighbours& moldParticles = mold.particles();
-  Vector lower = moldParticles.positions.front(), upper = lower;
-  for (const Vector& x : moldParticles.positions) {
-    lower = lower.cwiseMin(x);
-    upper = upper.cwiseMax(x);
-  }
-  const Vector margin = Real(0.5) * (upper - lower);
-  lower -= margin;
-  upper += margin;
   const auto outside = static_cast<std::size_t>(
       std::count_if(centres.begin(), centres.end(), [&](const Vector& x) {
-        return (x.array() < lower.array()).any() || (x.array() > upper.array()).any();
+        return (x.array() < domain.lower.array()).any() ||
+               (x.array() > domain.upper.array()).any();
       }));
   if (outside == 0) return;
   std::ostringstream where;
   where << "the domain (the mold particles' box grown by half on each side: ("
-        << lower.transpose() << ") to (" << upper.transpose() << ") m)";
+        << domain.lower.transpose() << ") to (" << domain.upper.transpose() << ") m)";
   if (outside == centres.size()) {
     throw DictionaryError(plan.location, "cloud '" + plan.name + "' lies wholly outside " +
                                              where.str() +
@@ -504,8 +497,9 @@ void checkFillAgainstMold(const CloudPlan& plan, const std::vector<std::size_t>&
           "; a flow stops at its first step");
 }
 
+// `domain` is the mold clouds' (defaultDomain), for the check of the fill against it.
 ParticleCloud fillCloud(const CloudPlan& plan, double spacing, int dimension,
-                        const MoldObstacles& mold, CaseSettings& settings) {
+                        const MoldObstacles& mold, const Domain& domain, CaseSettings& settings) {
   double regionVolume = 0.0;
   bool volumeExact = true;
   std::vector<std::size_t> regionOf;
@@ -514,7 +508,7 @@ ParticleCloud fillCloud(const CloudPlan& plan, double spacing, int dimension,
   if (!mold.empty()) {
     const std::size_t before = centres.size();
     const std::vector<bool> clear = mold.clear(centres);
-    checkFillAgainstMold(plan, regionOf, clear, centres, mold);
+    checkFillAgainstMold(plan, regionOf, clear, centres, mold, domain);
     centres = keptPoints(centres, clear);
     info() << "Cloud " << plan.name << ": left out " << before - centres.size()
            << " particles closer than wallClearance " << mold.clearance()
@@ -740,9 +734,12 @@ std::vector<ParticleCloud> buildCastClouds(const CaseFolder& caseFolder,
   }
 
   const MoldObstacles mold(moldClouds, spacing, clearance);
+  std::vector<const ParticleCloud*> moldCloudList;
+  for (const ParticleCloud& cloud : moldClouds) moldCloudList.push_back(&cloud);
+  const Domain domain = defaultDomain(moldCloudList);  // as the flow's health check takes it
   std::vector<ParticleCloud> clouds;
   for (const CloudPlan& plan : plans) {
-    ParticleCloud cloud = fillCloud(plan, spacing, dimension, mold, settings);
+    ParticleCloud cloud = fillCloud(plan, spacing, dimension, mold, domain, settings);
     const Dictionary& cloudDict = cloudsDict.subDict(plan.name);
     if (cloudDict.found("fields")) setFieldValues(cloudDict.subDict("fields"), cloud, {}, true);
     if (plan.density) setMaterialDensity(*plan.density, cloud, spacing);

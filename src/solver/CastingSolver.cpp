@@ -22,9 +22,10 @@ CastingSolver::CastingSolver(const CaseFolder& caseFolder)
       repairedWrites_(caseFolder.recoverInterruptedWrites()),
       time_(caseFolder),
       // constant/g for a flow or ballistic clouds; a case that only conducts heat needs none
-      gravity_(readGravityIfPresent(caseFolder).value_or(Vector::Zero())),
+      gravityFile_(readGravityIfPresent(caseFolder)),
+      gravity_(gravityFile_.value_or(Vector::Zero())),
       motion_(gravity_),
-      flowSetup_(readFlowSetup(caseFolder, readGravityIfPresent(caseFolder))),
+      flowSetup_(readFlowSetup(caseFolder, gravityFile_)),
       heatSetup_(readHeatSetup(caseFolder)),
       surfaceTensionSetup_(readSurfaceTensionSetup(caseFolder, flowSetup_)),
       solidificationSetup_(readSolidificationSetup(caseFolder, flowSetup_, heatSetup_)),
@@ -65,7 +66,8 @@ CastingSolver::CastingSolver(const CaseFolder& caseFolder)
              << " written again with every cloud and field the run writes)\n";
     }
   } else {
-    readGravity(caseFolder_);  // ballistic clouds need constant/g: its error when it is missing
+    // ballistic clouds need constant/g: reading it again gives the missing file's error
+    if (!gravityFile_) readGravity(caseFolder_);
     for (const ParticleCloud& cloud : clouds_) {
       info() << "Cloud " << cloud.name() << ": " << cloud.size() << " particles"
              << (cloud.hasVectorField("U") ? ", moving ballistically" : ", static (no U field)")

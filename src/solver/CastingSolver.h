@@ -1,6 +1,7 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -86,7 +87,8 @@ class CastingSolver {
   // be back in place when latestTime is looked for.
   std::vector<std::string> repairedWrites_;
   TimeControl time_;
-  Vector gravity_;
+  std::optional<Vector> gravityFile_;  // constant/g, when the case has one
+  Vector gravity_;                     // it, else zero (a case that only conducts heat)
   BallisticMotion motion_;
   FlowSetup flowSetup_;
   HeatSetup heatSetup_;
