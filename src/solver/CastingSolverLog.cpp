@@ -1,0 +1,117 @@
+// What the solver prints at each printed step and at the end (OpenFOAM's log style).
+#include "solver/CastingSolver.h"
+
+#include <algorithm>
+#include <limits>
+#include <ostream>
+#include <sstream>
+
+namespace sphcast {
+
+void CastingSolver::logStep(bool printBlock) {
+  if (!printBlock) return;
+  info() << "deltaT = " << time_.deltaT() << "  (" << time_.deltaTLimiter() << ")\n"
+         << "Time = " << time_.timeName() << "\n\n";
+  if (flow_) {
+    const FluidSummary summary = summarizeFluid(*fluid_);
+    const FlowSettings& settings = flowSetup_.settings;
+    const double spacing = fluid_->attributes().at("spacing");
+    const double courant = (static_cast<double>(settings.soundSpeed) + summary.largestSpeed) *
+                           time_.deltaT() / spacing;
+    std::ostringstream line;
+    line.precision(6);
+    line << "Step " << time_.timeIndex() << "  Courant " << courant << "  max|U| "
+         << summary.largestSpeed << " m/s  Mach "
+         << summary.largestSpeed / static_cast<double>(settings.soundSpeed) << '\n'
+         << "Density range " << summary.lowestDensity << " .. " << summary.highestDensity
+         << " kg/m^3 (" << 100 * summary.lowestDeviation << " .. " << 100 * summary.highestDeviation
+         << " % of rho_s)  p " << summary.lowestPressure << " .. " << summary.highestPressure
+         << " Pa\n"
+         << "Mass " << summary.mass << " kg  kinetic energy " << summary.kineticEnergy
+         << " J  moved back from walls " << flow_->lastWallClearance().corrected << '\n';
+    info() << line.str();
+  }
+  if (energy_) logHeat();
+  if (solidification_) logSolidification();
+  info() << clock_.timesLine() << '\n'
+         << clock_.progressLine(time_.progress(), stepsTaken_, solidEnd()) << '\n'
+         << std::endl;  // flushed: a killed run's log ends at its last step
+}
+
+void CastingSolver::logHeat() {
+  std::ostringstream line;
+  line.precision(6);
+  if (flow_) {
+    std::string limiter;
+    const double limit = energy_->stableDeltaT(limiter);
+    line << "Heat: " << heatSteps_ << " heat steps in " << stepsTaken_ << " steps ("
+         << (cooling_ ? "cooling" : heatSetup_.heatEveryFlowStep ? "every flow step" : "interval auto")
+         << ", the last "
+         << heatDeltaT_ << " s long; " << limiter << " limit " << limit << " s)\n";
+  }
+  for (const HeatCloud& heat : energy_->context().clouds) {
+    if (heat.fixedTemperature) continue;
+    const auto& T = heat.cloud->scalarField("T");
+    const auto& u = heat.cloud->scalarField("u");
+    const auto& mass = heat.cloud->scalarField("mass");
+    double lowest = std::numeric_limits<double>::infinity(), highest = -lowest, energy = 0;
+    for (std::size_t i = 0; i < T.size(); ++i) {
+      lowest = std::min(lowest, double(T[i]));
+      highest = std::max(highest, double(T[i]));
+      energy += double(mass[i]) * double(u[i]);
+    }
+    line << "T " << heat.cloud->name() << ' ' << lowest << " .. " << highest
+         << " K  internal energy " << energy << " J\n";
+  }
+  info() << line.str();
+}
+
+std::optional<std::pair<double, std::string>> CastingSolver::solidEnd() const {
+  if (!solidification_ || !solidificationSetup_.endWhenSolid) return std::nullopt;
+  const auto seconds = solidEstimate_.secondsLeft();
+  if (!seconds) return std::nullopt;
+  return std::make_pair(*seconds, std::string("all solid, endWhenSolid"));
+}
+
+void CastingSolver::logSolidification() {
+  const SolidificationSummary s = solidification_->summary();
+  std::ostringstream line;
+  line.precision(4);
+  line << "Solidification: solid fraction " << s.solidFraction << " (by mass); of "
+       << s.particles << " particles " << s.liquid << " liquid, " << s.frozen << " frozen ("
+       << s.solid << " fully solid), " << s.particles - s.frozen << " flowing";
+  if (s.viscosityCapped > 0) line << " (" << s.viscosityCapped << " with mu capped)";
+  // with endWhenSolid the run ends with the last liquid, not at endTime: the progress line's
+  // ETA follows the rise of the solid fraction (CompletionEstimate)
+  if (solidificationSetup_.endWhenSolid) solidEstimate_.add(clock_.clockTime(), s.solidFraction);
+  if (cooling_) {
+    line << "\n    cooling: heat steps of " << heatDeltaT_ << " s, each with "
+         << solidificationSetup_.cooling->flowStepsPerHeatStep << " flow steps (the last "
+         << lastFlowSubStep_ << " s); " << flowSubSteps_ << " flow steps so far";
+  }
+  info() << line.str() << '\n';
+}
+
+void CastingSolver::logTimeSpent() {
+  std::ostringstream line;
+  line.precision(3);
+  line << "Time spent (wall, s):";
+  if (neighbourhood_) line << " neighbour search " << searchSeconds_ << ",";
+  if (flow_) {
+    const FlowTimings& t = flow_->timings();
+    line << " wall clearance " << t.wallClearance << ", flow rates " << t.rates;
+    if (surfaceTension_) line << " (surface tension " << surfaceTension_->seconds() << ")";
+    line << ", flow integration " << t.integration << ",";
+  }
+  if (energy_) line << " heat " << heatSeconds_ << ",";
+  line << " health checks " << checkSeconds_ << ", function objects " << functionSeconds_
+       << ", output " << outputSeconds_;
+  info() << line.str() << '\n' << "Run health: " << warnings_.summary() << '\n';
+}
+
+void CastingSolver::logRereadMessage() {
+  const std::string message = time_.takeRereadMessage();
+  if (!message.empty()) info() << message << "\n\n";
+}
+
+}  // namespace sphcast

@@ -1,0 +1,414 @@
+// The solver's construction: the case's clouds, the neighbourhood and every model of the step
+// set up from the dictionaries, the first time written again with their fields.
+#include "solver/CastingSolver.h"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <numbers>
+#include <ostream>
+
+#include "core/Error.h"
+#include "core/Gravity.h"
+#include "core/dictionary/Dictionary.h"
+#include "io/VtpCloud.h"
+#include "sph/CorrectedGradient.h"
+
+namespace sphcast {
+
+CastingSolver::CastingSolver(const CaseFolder& caseFolder)
+    : caseFolder_(caseFolder),
+      repairedWrites_(caseFolder.recoverInterruptedWrites()),
+      time_(caseFolder),
+      // constant/g for a flow or ballistic clouds; a case that only conducts heat needs none
+      gravityFile_(readGravityIfPresent(caseFolder)),
+      gravity_(gravityFile_.value_or(Vector::Zero())),
+      motion_(gravity_),
+      flowSetup_(readFlowSetup(caseFolder, gravityFile_)),
+      heatSetup_(readHeatSetup(caseFolder)),
+      surfaceTensionSetup_(readSurfaceTensionSetup(caseFolder, flowSetup_)),
+      solidificationSetup_(readSolidificationSetup(caseFolder, flowSetup_, heatSetup_)),
+      writer_(caseFolder, time_.settings().purgeWrite) {
+  for (const std::string& repaired : repairedWrites_) {
+    info() << "Repaired interrupted write: " << repaired << std::endl;
+  }
+  info() << "Starting from time " << time_.startTimeName() << " (index " << time_.timeIndex()
+         << ")\n";
+  clouds_ = readTimeFolderClouds(caseFolder_, time_.startTimeName());
+  if (clouds_.empty()) {
+    throw Error("time folder " + (caseFolder_.root() / time_.startTimeName()).string() +
+                " holds no cloud (.vtp) to run");
+  }
+  const std::vector<std::string> startFields = fieldInventory(clouds_);
+  // controlDict's entries beyond run control (TimeControl's), read once
+  const Dictionary controlDict = Dictionary::read(caseFolder_.systemFile("controlDict"));
+  health_ = HealthSettings::read(controlDict);
+  // Clouds join clouds_ before any model holds a pointer into it.
+  if (heatSetup_.enabled) loadHeatClouds();
+  if (flowSetup_.enabled || heatSetup_.enabled) {
+    setUpNeighbourhood();
+    if (flowSetup_.enabled) setUpFlow();
+    if (heatSetup_.enabled) setUpHeat();
+    if (solidificationSetup_.enabled) setUpSolidification();
+    startModels();
+    // setCastFields wrote the first time without the clouds and fields the models add (a held
+    // mold with its T, solidFraction, ...): written again with them, ParaView lists every field
+    // from the first time. It is the state a restart from this time starts from. A later time
+    // (a restart) is left as its run wrote it.
+    const auto times = caseFolder_.times();
+    const bool firstTime = !times.empty() && times.front().name == time_.startTimeName();
+    if (firstTime && fieldInventory(clouds_) != startFields) {
+      std::vector<const ParticleCloud*> written;
+      for (const ParticleCloud& cloud : clouds_) written.push_back(&cloud);
+      writer_.rewriteStart(time_.state(), written);
+      info() << "    (time " << time_.startTimeName()
+             << " written again with every cloud and field the run writes)\n";
+    }
+  } else {
+    // ballistic clouds need constant/g: reading it again gives the missing file's error
+    if (!gravityFile_) readGravity(caseFolder_);
+    for (const ParticleCloud& cloud : clouds_) {
+      info() << "Cloud " << cloud.name() << ": " << cloud.size() << " particles"
+             << (cloud.hasVectorField("U") ? ", moving ballistically" : ", static (no U field)")
+             << '\n';
+      if (time_.settings().adjustTimeStep && cloud.hasVectorField("U")) {
+        motion_.stableDeltaT(cloud, time_.settings().maxCo);  // fail now, not after writing
+      }
+    }
+  }
+  setUpFunctionObjects(controlDict);
+  info() << std::endl;
+}
+
+std::vector<std::string> CastingSolver::fieldInventory(const std::vector<ParticleCloud>& clouds) {
+  std::vector<std::string> names;
+  for (const ParticleCloud& cloud : clouds) {
+    names.push_back(cloud.name());
+    for (const auto& [name, field] : cloud.scalarFields()) names.push_back(cloud.name() + "." + name);
+    for (const auto& [name, field] : cloud.vectorFields()) names.push_back(cloud.name() + "." + name);
+    for (const auto& [name, field] : cloud.idFields()) names.push_back(cloud.name() + "." + name);
+  }
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+ParticleCloud* CastingSolver::findCloud(const std::string& name) {
+  for (ParticleCloud& cloud : clouds_) {
+    if (cloud.name() == name) return &cloud;
+  }
+  return nullptr;
+}
+
+ParticleCloud& CastingSolver::cloudNamed(const std::string& name) {
+  if (ParticleCloud* cloud = findCloud(name)) return *cloud;
+  std::string present;
+  for (const ParticleCloud& cloud : clouds_) present += " " + cloud.name();
+  throw Error("constant/physicsModels names the fluid cloud '" + name + "', but time " +
+              time_.startTimeName() + " holds only (" + present + " )");
+}
+
+// A heat cloud is taken from the start time when it is there, else from constant/particles
+// (a mold as particleizeMold wrote it): from then on it is written to every time folder, since
+// its temperature changes.
+void CastingSolver::loadHeatClouds() {
+  for (const std::string& name : heatSetup_.clouds) {
+    if (findCloud(name)) continue;
+    const auto file = caseFolder_.constant() / "particles" / (name + ".vtp");
+    if (!std::filesystem::exists(file)) {
+      std::string present;
+      for (const ParticleCloud& cloud : clouds_) present += " " + cloud.name();
+      throw DictionaryError(heatSetup_.cloudsAt, "heat cloud '" + name + "' is neither in time " +
+                                                     time_.startTimeName() + " (which holds (" +
+                                                     present + " )) nor in constant/particles");
+    }
+    clouds_.push_back(readCloudVtp(file, name));
+    info() << "Cloud " << name << ": from constant/particles (carries heat: written from now on)\n";
+  }
+}
+
+// Every cloud a model works on, registered once: the flow's fluid moves, everything else is
+// at rest (moving molds arrive with the rigid bodies).
+void CastingSolver::setUpNeighbourhood() {
+  const Real radius =
+      flowSetup_.enabled ? flowSetup_.settings.supportRadius : heatSetup_.supportRadius;
+  const PeriodicBox periodic =
+      flowSetup_.enabled ? flowSetup_.settings.periodic : heatSetup_.periodic;
+  if (flowSetup_.enabled && heatSetup_.enabled &&
+      heatSetup_.supportRadius != flowSetup_.settings.supportRadius) {
+    throw Error("internal: flow and heat read different supportRadius");
+  }
+  neighbourhood_ = std::make_unique<Neighbourhood>(radius, periodic);
+  if (flowSetup_.enabled) {
+    ParticleCloud& fluid = cloudNamed(flowSetup_.fluidCloud);
+    neighbourhood_->addCloud(fluid, Neighbourhood::Motion::moving);
+    evolving_.push_back(&fluid);
+    // A wall cloud is taken from the start time when it is there (setCastFields may have set
+    // its fields, or it carries heat), else from constant/particles, where particleizeMold
+    // wrote it.
+    for (const std::string& wallName : flowSetup_.wallClouds) {
+      if (const ParticleCloud* inTime = findCloud(wallName)) {
+        wallClouds_.push_back(inTime);
+        continue;
+      }
+      const auto file = caseFolder_.constant() / "particles" / (wallName + ".vtp");
+      if (!std::filesystem::exists(file)) {
+        throw Error("wall cloud '" + wallName + "' is neither in time " + time_.startTimeName() +
+                    " nor in constant/particles (run particleizeMold)");
+      }
+      staticClouds_.push_back(readCloudVtp(file, wallName));
+    }
+    for (const ParticleCloud& wall : staticClouds_) wallClouds_.push_back(&wall);
+    for (const ParticleCloud* wall : wallClouds_) neighbourhood_->addFixedCloud(*wall);
+  }
+  for (const std::string& name : heatSetup_.clouds) {
+    ParticleCloud& cloud = cloudNamed(name);
+    neighbourhood_->addCloud(cloud, Neighbourhood::Motion::fixed);  // no-op for the fluid
+    if (std::find(evolving_.begin(), evolving_.end(), &cloud) == evolving_.end()) {
+      evolving_.push_back(&cloud);
+    }
+  }
+  for (ParticleCloud* cloud : evolving_) lastGood_.push_back(*cloud);
+}
+
+void CastingSolver::setUpFlow() {
+  ParticleCloud& fluid = cloudNamed(flowSetup_.fluidCloud);
+  if (solidificationSetup_.enabled) {
+    flowSetup_.settings.cavitationPressure = solidificationSetup_.cavitationPressure;
+  }
+  for (const std::string& added : prepareFluidFields(flowSetup_, fluid)) {
+    info() << "Cloud " << fluid.name() << ": initial " << added << " from constant/\n";
+  }
+  const std::vector<const ParticleCloud*>& walls = wallClouds_;
+  flow_ =
+      std::make_unique<WeaklyCompressibleFlow>(flowSetup_.settings, fluid, walls, *neighbourhood_);
+  fluid_ = &fluid;
+  if (!walls.empty()) fillTime_ = std::make_unique<FillTime>(fluid, walls);
+  domain_ = walls.empty() ? defaultDomain({&fluid}) : defaultDomain(walls);
+  const FlowSettings& settings = flowSetup_.settings;
+  info() << "Flow: weakly compressible SPH (" << settings.dimension << "D), densityScheme "
+         << settings.densityScheme << ", kernelCorrection "
+         << (settings.kernelCorrection ? "on" : "off") << ", viscousForm " << settings.viscousForm
+         << ", h = " << settings.supportRadius << " m, c = " << settings.soundSpeed << " m/s\n"
+         << "    fluid " << fluid.name() << ": " << fluid.size() << " particles\n";
+  for (const ParticleCloud* wall : walls) {
+    info() << "    wall " << wall->name() << ": " << wall->size() << " particles\n";
+  }
+  for (int axis = 0; axis < 3; ++axis) {
+    if (!settings.periodic.isPeriodic(axis)) continue;
+    info() << "    periodic "
+           << "xyz"[axis] << ": [" << settings.periodic.lower(axis) << ", "
+           << settings.periodic.lower(axis) + settings.periodic.period(axis) << ")\n";
+  }
+  const Eigen::IOFormat plain(Eigen::StreamPrecision, Eigen::DontAlignCols, " ", " ");
+  info() << "    domain (" << domain_.lower.transpose().format(plain) << ") ("
+         << domain_.upper.transpose().format(plain)
+         << "): a particle outside it, or not finite, stops the run\n"
+         << "    health checks: density deviation warned above "
+         << 100 * health_.warnDensityDeviation << " %, stops above "
+         << 100 * health_.maxDensityDeviation << " %; a particle " << health_.maxWallPenetration
+         << " dx behind a wall surface, or a stable step below " << health_.minDeltaTFraction
+         << " of its running mean, stops the run\n"
+         << "    wall clearance " << settings.wallClearance
+         << " dx: fluid particles closer to a wall surface are moved back to it\n";
+  const SoundSpeedCheck soundSpeed = checkSoundSpeed(settings, fluid, walls);
+  if (soundSpeed.tooLow) {
+    warning(soundSpeed.message);
+  } else {
+    info() << "    " << soundSpeed.message << '\n';
+  }
+  if (surfaceTensionSetup_.enabled) {
+    SurfaceTensionSettings tension = surfaceTensionSetup_.settings;
+    tension.spacing = static_cast<Real>(fluid.attributes().at("spacing"));
+    surfaceTension_ =
+        std::make_unique<SurfaceEnergyTension>(tension, fluid, walls, *neighbourhood_);
+    flow_->addForceModel(*surfaceTension_);
+    const TemperatureTable& gamma = *tension.gasTension;
+    info() << "Surface tension: surface energy (paper eqs. (7)-(12)), R_d = "
+           << surfaceTension_->energyFactor()
+           << (tension.energyFactor > 0 ? "" : " (calibrated on a relaxed surface)") << ", Gamma_g "
+           << gamma.description()
+           << (gamma.isConstant() ? " = " + std::to_string(gamma(0)) + " N/m" : " (a table in T)")
+           << '\n';
+    const double compression = surfaceTension_->surfaceCompression(settings.soundSpeed);
+    info() << "    surface layer's compression R_d Gamma_g / (rho c^2 dx) = " << 100 * compression
+           << " % (at the particles' T now)\n";
+    if (compression > 0.03) {
+      warning("the surface tension compresses the surface layer by " +
+              std::to_string(100 * compression) +
+              " % of its density (R_d Gamma_g / (rho c^2 dx)): raise soundSpeed in system/sphSchemes "
+              "towards " +
+              std::to_string(settings.soundSpeed * std::sqrt(compression / 0.01)) +
+              " m/s for 1 %; the calibration of R_d was measured at 0.3 to 3 %");
+    }
+    if (!walls.empty()) {
+      info() << "    at the walls: "
+             << (tension.solidTension
+                     ? "Gamma_s = " + std::to_string(*tension.solidTension) + " N/m"
+                     : "contact angle " +
+                           std::to_string(
+                               std::acos(static_cast<double>(
+                                   tension.cosContactAngle ? *tension.cosContactAngle : Real(-1))) *
+                               180 / std::numbers::pi) +
+                           " degrees")
+             << ", chi over "
+             << (tension.wallSmoothing > 0 ? tension.wallSmoothing : tension.supportRadius)
+             << " m\n";
+    }
+  }
+  // Everything else stays where it is: only the fluid moves.
+}
+
+void CastingSolver::setUpHeat() {
+  HeatTransferContext context;
+  context.dimension = flowSetup_.enabled ? flowSetup_.settings.dimension : heatSetup_.dimension;
+  context.supportRadius = neighbourhood_->radius();
+  context.neighbourhood = neighbourhood_.get();
+  double spacing = 0;
+  for (const std::string& name : heatSetup_.clouds) {
+    ParticleCloud& cloud = cloudNamed(name);
+    HeatCloud heat{&cloud, &heatSetup_.materialOf(name), false, 0, {}};
+    if (const auto held = heatSetup_.fixedTemperature.find(name);
+        held != heatSetup_.fixedTemperature.end()) {
+      heat.fixedTemperature = true;
+      heat.heldTemperature = held->second;
+    }
+    if (const auto patches = heatSetup_.heldPatches.find(name);
+        patches != heatSetup_.heldPatches.end()) {
+      heat.heldPatches = patches->second;
+    }
+    const auto attribute = cloud.attributes().find("spacing");
+    if (attribute == cloud.attributes().end() || !(attribute->second > 0)) {
+      throw Error("heat cloud '" + name +
+                  "' has no positive 'spacing' attribute (the particle spacing, which "
+                  "particleizeMold and setCastFields write)");
+    }
+    // the finest cloud sets the regularisation and the step limits
+    spacing = spacing == 0 ? attribute->second : std::min(spacing, attribute->second);
+    context.clouds.push_back(heat);
+  }
+  context.spacing = static_cast<Real>(spacing);
+  energy_ = std::make_unique<EnergyEquation>(context, heatSetup_.heatTransfer);
+  if (energy_->needsExposedArea()) {
+    std::vector<ParticleCloud*> exposed;
+    std::vector<const ParticleCloud*> covering;
+    exposedAreaRestored_ = energy_->restarted();
+    for (const HeatCloud& heat : energy_->context().clouds) {
+      exposedAreaRestored_ = exposedAreaRestored_ && heat.cloud->hasScalarField("exposedArea");
+      exposed.push_back(heat.cloud);
+      covering.push_back(heat.cloud);
+    }
+    for (const ParticleCloud* wall : wallClouds_) {
+      if (std::find(covering.begin(), covering.end(), wall) == covering.end()) {
+        covering.push_back(wall);
+      }
+    }
+    exposedArea_ = std::make_unique<ExposedArea>(energy_->exposedAreaForm(), context.dimension,
+                                                 context.supportRadius, context.spacing, exposed,
+                                                 covering, *neighbourhood_);
+  }
+  info() << "Heat transfer: energy equation (17) on";
+  for (const HeatCloud& heat : energy_->context().clouds) {
+    info() << ' ' << heat.cloud->name() << " (" << heat.material->name;
+    if (heat.fixedTemperature) info() << ", held at " << heat.heldTemperature << " K";
+    for (std::size_t p = 0; p < heat.heldPatches.size(); ++p) {
+      info() << ", patch " << heatSetup_.heldPatchNames.at(heat.cloud->name())[p] << " held at "
+             << heat.heldPatches[p].second << " K";
+    }
+    info() << ')';
+  }
+  info() << '\n';
+  for (const std::string& line : energy_->descriptions()) info() << "    " << line << '\n';
+  if (exposedArea_) {
+    info() << "    exposed area A_i ("
+           << (energy_->exposedAreaForm() == ExposedAreaForm::gradient ? "gradient of s_i"
+                                                                       : "eq. 11")
+           << ") with R_A = " << exposedArea_->areaFactor()
+           << " (a flat surface counts its area)\n";
+  }
+  if (!flowSetup_.enabled) info() << "    no flow: the particles stay where they are\n";
+}
+
+// The fluid's rho_s, mu and solid fraction from its T before the flow's start state is computed
+// (a restart gets the same values: a frozen particle's rho_s is read back, the others follow T).
+void CastingSolver::setUpSolidification() {
+  SolidificationSettings settings = solidificationSetup_.settings;
+  const Material& material = *solidificationSetup_.material;
+  ParticleCloud& metal = cloudNamed(solidificationSetup_.cloud);
+  if (flow_) {
+    const FlowSettings& flow = flowSetup_.settings;
+    const double spacing = fluid_->attributes().at("spacing");
+    // 0.9 of the viscosity whose explicit limit 0.125 dx^2 rho / mu is the acoustic step
+    // maxCo dx / c (SolidificationSetup.h)
+    const double liquidDensity = (*material.density)(material.freezingRange->liquidus);
+    settings.viscosityLimit = static_cast<Real>(0.9 * 0.125 * liquidDensity * spacing *
+                                                flow.soundSpeed / time_.settings().maxCo);
+  }
+  solidification_ = std::make_unique<Solidification>(settings, material, metal);
+  neighbourhood_->requestPairs(metal, metal);  // for G at T_c (recordCriticalGradients)
+  solidification_->update(time_.value(), 0.0);
+  if (const auto mode = metal.attributes().find("coolingMode"); mode != metal.attributes().end()) {
+    cooling_ = solidificationSetup_.cooling && mode->second != 0;
+  }
+  info() << "Solidification: " << solidification_->description() << '\n';
+  if (flow_) {
+    info() << "    frozen particles stay where they are (wall for the melt; their own "
+              "contraction moves nothing); melt below "
+           << flowSetup_.settings.cavitationPressure << " Pa opens a cavity\n";
+  } else {
+    info() << "    no flow: the metal conducts and solidifies where it is\n";
+  }
+  logSolidification();
+}
+
+// G = |grad T| of the particles that have just crossed T_c (Solidification.h), from the pairs
+// of the last search: the positions the heat step used.
+void CastingSolver::recordCriticalGradients() {
+  const std::vector<std::size_t> pending = solidification_->pendingCriticalGradients();
+  if (pending.empty()) return;
+  ParticleCloud& metal = cloudNamed(solidificationSetup_.cloud);
+  const int dimension = flow_ ? flowSetup_.settings.dimension : heatSetup_.dimension;
+  const std::vector<Real> volume = particleVolumes(metal, dimension);
+  const NeighbourList& pairs = neighbourhood_->pairs(metal, metal);
+  auto& gradient = metal.scalarField("criticalGradient");
+  const auto& T = metal.scalarField("T");
+  for (const std::size_t i : pending) {
+    gradient[i] = correctedGradient(metal, T, volume, pairs, neighbourhood_->periodicBox(),
+                                    neighbourhood_->radius(), dimension, i)
+                      .norm();
+  }
+}
+
+// The first search and the rates of the start state (a restart keeps the order and the rates
+// it was written with).
+void CastingSolver::startModels() {
+  const bool restarted = (flow_ && flow_->restarted()) || (energy_ && energy_->restarted());
+  addWallTime(searchSeconds_,
+              [&] { neighbourhood_->update(restarted ? CloudOrder::keep : CloudOrder::byCell); });
+  // a restart has the contacts up to its time already (the next search is the next step's)
+  if (fillTime_ && !restarted) fillTime_->record(*neighbourhood_, time_.value());
+  if (solidification_) recordCriticalGradients();
+  // A restart keeps the A_i it was written with: summed again over neighbour lists in another
+  // order (the wall clearance moves particles after the search) they could differ in the last
+  // bit.
+  if (exposedArea_ && !exposedAreaRestored_) exposedArea_->compute();
+  if (flow_) flow_->start();
+  if (energy_) energy_->start();
+  info() << "    neighbourhood: " << neighbourhood_->pairCount() << " pairs\n";
+}
+
+void CastingSolver::setUpFunctionObjects(const Dictionary& controlDict) {
+  FunctionObjectContext context;
+  context.caseRoot = caseFolder_.root();
+  context.startTimeName = time_.startTimeName();
+  context.startTime = time_.startValue();
+  context.supportRadius = flowSetup_.enabled ? flowSetup_.settings.supportRadius : Real(0);
+  context.gravity = gravity_;
+  for (const ParticleCloud& cloud : clouds_) context.clouds.push_back(&cloud);
+  functions_ = FunctionObjectList(controlDict, context);
+  for (const auto& object : functions_.objects()) {
+    info() << "Function object " << object->name() << ": postProcessing/" << object->name() << '/'
+           << time_.startTimeName() << '\n';
+  }
+}
+
+}  // namespace sphcast
