@@ -51,6 +51,18 @@ value (0 0 -9.81);
 DICT
 }
 
+# onTheParabola CSV: the centroid of the thrown block (makeFreeFallCase's, the freeFall
+# tutorial's; castPostProcess's cloud summary, time in column 1, x in 3, z in 5) on its exact
+# parabola, x = 0.025 + t, z = 0.225 + 2 t - g t^2 / 2, within 1e-12 m at every row; prints the
+# largest error.
+onTheParabola() {
+    awk -F, 'NR > 1 {
+        t = $1; x = 0.025 + t; z = 0.225 + 2 * t - 0.5 * 9.81 * t * t
+        ex = $3 - x; ez = $5 - z; if (ex < 0) ex = -ex; if (ez < 0) ez = -ez
+        if (ex > worst) worst = ex; if (ez > worst) worst = ez
+    } END { printf "largest centroid error %.3g m\n", worst; exit (worst > 1e-12) }' "$1"
+}
+
 # setEntry FILE KEY VALUE: replaces "KEY ...;" in a dictionary.
 setEntry() { sed -i "s/^$2 .*/$2 $3;/" "$1"; }
 
