@@ -31,7 +31,8 @@ std::vector<fs::path> cloudFilesIn(const fs::path& folder) {
 }  // namespace
 
 void writeTimeFolder(const CaseFolder& caseFolder, const TimeState& time,
-                     const std::vector<const ParticleCloud*>& clouds) {
+                     const std::vector<const ParticleCloud*>& clouds,
+                     const std::vector<UniformFile>& uniformFiles) {
   const std::string& timeName = time.name;
   const fs::path writing = caseFolder.writingFolder(timeName);
   const fs::path final = caseFolder.root() / timeName;
@@ -42,6 +43,9 @@ void writeTimeFolder(const CaseFolder& caseFolder, const TimeState& time,
     writeCloudVtp(*cloud, writing / (cloud->name() + ".vtp"));
   }
   writeFileAtomically(writing / "uniform" / "time", uniformTimeDictionary(time));
+  for (const UniformFile& file : uniformFiles) {
+    writeFileAtomically(writing / "uniform" / file.name, file.text);
+  }
 
   // Two renames when the time exists already (a restart rewriting its start time, say); a kill
   // between them is repaired by CaseFolder::recoverInterruptedWrites.

@@ -10,9 +10,16 @@
 
 namespace sphcast {
 
+// A file of <time>/uniform/ beside `time`: its name and its text (the rigid bodies' state).
+struct UniformFile {
+  std::string name;
+  std::string text;
+};
+
 // Writes one complete time folder atomically (also used by setCastFields for 0/).
 void writeTimeFolder(const CaseFolder& caseFolder, const TimeState& time,
-                     const std::vector<const ParticleCloud*>& clouds);
+                     const std::vector<const ParticleCloud*>& clouds,
+                     const std::vector<UniformFile>& uniformFiles = {});
 
 // Rewrites <case>.pvd from what is on disk: every cloud of every time folder, and the static
 // clouds of constant/particles at every time that has no cloud of their name (a mold carrying

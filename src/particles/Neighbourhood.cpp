@@ -8,14 +8,18 @@ Neighbourhood::Neighbourhood(Real radius, const PeriodicBox& periodic)
     : radius_(radius), periodic_(periodic) {}
 
 void Neighbourhood::addCloud(ParticleCloud& cloud, Motion motion) {
-  if (has(cloud)) return;
+  if (has(cloud)) {
+    Entry& entry = entries_[entryOf(cloud)];
+    if (motion == Motion::rigid && !entry.movable) entry.moves = true;
+    return;
+  }
   entries_.push_back({&cloud, motion == Motion::moving ? &cloud : nullptr,
-                      std::make_unique<CellGrid>(radius_, periodic_)});
+                      motion != Motion::fixed, std::make_unique<CellGrid>(radius_, periodic_)});
 }
 
 void Neighbourhood::addFixedCloud(const ParticleCloud& cloud) {
   if (has(cloud)) return;
-  entries_.push_back({&cloud, nullptr, std::make_unique<CellGrid>(radius_, periodic_)});
+  entries_.push_back({&cloud, nullptr, false, std::make_unique<CellGrid>(radius_, periodic_)});
 }
 
 bool Neighbourhood::has(const ParticleCloud& cloud) const {
@@ -42,7 +46,7 @@ void Neighbourhood::requestPairs(const ParticleCloud& a, const ParticleCloud& b)
 
 void Neighbourhood::update(CloudOrder order) {
   for (Entry& entry : entries_) {
-    if (entry.binned && !entry.movable) continue;  // a fixed cloud's grid stays valid
+    if (entry.binned && !entry.moves) continue;  // a fixed cloud's grid stays valid
     entry.grid->build(entry.cloud->positions());
     // a cloud still in cell order (no particle changed cell) needs no reorder, which would copy
     // every field
@@ -55,7 +59,7 @@ void Neighbourhood::update(CloudOrder order) {
   for (Pairs& pairs : pairs_) {
     const Entry& a = entries_[pairs.a];
     const Entry& b = entries_[pairs.b];
-    if (pairs.built && !a.movable && !b.movable) continue;
+    if (pairs.built && !a.moves && !b.moves) continue;
     if (pairs.a == pairs.b) {
       pairs.list.buildWithin(a.cloud->positions(), *a.grid);
     } else {

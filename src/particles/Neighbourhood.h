@@ -22,9 +22,11 @@ enum class CloudOrder {
 // when it is built, for the pairs of clouds it needs (requestPairs), and reads them
 // (pairs(a, b)) when it adds its rates. A list is built once for all the models that share it.
 //
-// A moving cloud (the metal, a moving mold) is re-binned at every update() and reordered along
-// its grid; a fixed cloud (a mold at rest) is binned once and never reordered, and a list
-// between two fixed clouds (mold-mold conduction) is built once. Fields live in the clouds, so
+// A moving cloud (the metal) is re-binned at every update() and reordered along its grid; a
+// rigid cloud (a mold that moves as one body, bodies/RigidBody.h) is re-binned at every update
+// but never reordered (its particles keep their places in the body's frame); a fixed cloud (a
+// mold at rest) is binned once and never reordered, and a list between two fixed clouds
+// (mold-mold conduction) is built once. Fields live in the clouds, so
 // a reorder needs no hook in any model.
 //
 // Pair lists hold every pair closer than the search radius (the kernel's support radius h).
@@ -33,11 +35,13 @@ enum class CloudOrder {
 // skip nothing by distance and get W = 0 beyond h from the kernel's own clamp.
 class Neighbourhood {
  public:
-  enum class Motion { moving, fixed };
+  enum class Motion { moving, rigid, fixed };
 
   Neighbourhood(Real radius, const PeriodicBox& periodic);
 
   // Registers a cloud (once); its address must stay valid while the neighbourhood lives.
+  // A cloud registered fixed and then rigid becomes rigid (a body's mold that a heat or flow
+  // model registered first).
   void addCloud(ParticleCloud& cloud, Motion motion);
   void addFixedCloud(const ParticleCloud& cloud);
   bool has(const ParticleCloud& cloud) const;
@@ -62,7 +66,8 @@ class Neighbourhood {
  private:
   struct Entry {
     const ParticleCloud* cloud;
-    ParticleCloud* movable;  // null for a fixed cloud
+    ParticleCloud* movable;  // the cloud to reorder: null for a fixed or rigid cloud
+    bool moves;              // re-binned at every update (moving and rigid)
     std::unique_ptr<CellGrid> grid;
     bool binned = false;
   };

@@ -8,7 +8,9 @@ std::vector<WallSurfaceView> wallSurfaceViews(const ParticleCloud& fluid,
   std::vector<WallSurfaceView> views;
   for (const ParticleCloud* wall : walls) {
     views.push_back({wall->positions(), wall->vectorField("normal"),
-                     wall->scalarField("wallDistance"), &neighbourhood.pairs(fluid, *wall)});
+                     wall->scalarField("wallDistance"), &neighbourhood.pairs(fluid, *wall),
+                     wall->hasVectorField("U") ? std::span<const Vector>(wall->vectorField("U"))
+                                               : std::span<const Vector>()});
   }
   return views;
 }
@@ -19,7 +21,8 @@ WallSurfaceDistance wallSurfaceDistance(const Vector& x, std::size_t i,
   const Real patchRadius = Real(0.75) * spacing;
   const Real patchRadiusSquared = patchRadius * patchRadius;
   WallSurfaceDistance surface;
-  for (const WallSurfaceView& wall : walls) {
+  for (std::size_t w = 0; w < walls.size(); ++w) {
+    const WallSurfaceView& wall = walls[w];
     for (const std::uint32_t k : wall.neighboursOfFluid->of(i)) {
       const Vector& n = wall.normal[k];
       // x_i - s_k, with s_k = x_k + d_k n_k the wall particle's foot on the surface
@@ -28,7 +31,7 @@ WallSurfaceDistance wallSurfaceDistance(const Vector& x, std::size_t i,
       if (fromFoot.squaredNorm() - distance * distance > patchRadiusSquared)
         continue;                         // off k's patch
       if (distance < -spacing) continue;  // the far face of a thin body (see the header)
-      if (!surface.found || distance < surface.distance) surface = {true, distance, n};
+      if (!surface.found || distance < surface.distance) surface = {true, distance, n, w, k};
     }
   }
   return surface;

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <span>
 #include <vector>
 
@@ -19,13 +20,14 @@ namespace sphcast {
 constexpr double wallClearanceInSpacings = 0.25;
 
 // What a wall cloud offers the clearance pass: its particles' positions, unit normals (out of
-// the wall into the fluid), depths behind the wall surface, and each fluid particle's wall
-// neighbours.
+// the wall into the fluid), depths behind the wall surface, velocities (empty for a wall at
+// rest; a moving mold's, bodies/RigidBody.h), and each fluid particle's wall neighbours.
 struct WallSurfaceView {
   std::span<const Vector> position;
   std::span<const Vector> normal;
   std::span<const Real> depth;
   const NeighbourList* neighboursOfFluid;  // fluid particle i -> wall particles within h
+  std::span<const Vector> velocity = {};
 };
 
 // The wall surface seen from fluid particle i, estimated from its wall neighbours: each wall
@@ -49,10 +51,13 @@ struct WallSurfaceDistance {
   bool found = false;
   Real distance = 0;  // in front of the surface (negative: behind it)
   Vector normal = Vector::Zero();
+  std::size_t wall = 0;      // the view whose particle gave it
+  std::uint32_t particle = 0;  // that particle
 };
 
-// The views of `walls` (clouds with `normal` and `wallDistance`, as particleizeMold writes them)
-// seen from `fluid`, with the fluid's wall neighbours of the neighbourhood's last update.
+// The views of `walls` (clouds with `normal` and `wallDistance`, as particleizeMold writes them,
+// and `U` when they move) seen from `fluid`, with the fluid's wall neighbours of the
+// neighbourhood's last update.
 std::vector<WallSurfaceView> wallSurfaceViews(const ParticleCloud& fluid,
                                               const std::vector<const ParticleCloud*>& walls,
                                               const Neighbourhood& neighbourhood);

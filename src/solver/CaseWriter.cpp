@@ -14,8 +14,9 @@ CaseWriter::CaseWriter(const CaseFolder& caseFolder, int purgeWrite)
   warnOfStaleCaseIndexes(caseFolder_);
 }
 
-void CaseWriter::write(const TimeState& time, const std::vector<const ParticleCloud*>& clouds) {
-  writeTimeFolder(caseFolder_, time, clouds);
+void CaseWriter::write(const TimeState& time, const std::vector<const ParticleCloud*>& clouds,
+                       const std::vector<UniformFile>& uniformFiles) {
+  writeTimeFolder(caseFolder_, time, clouds, uniformFiles);
   if (writtenTimes_.empty() || writtenTimes_.back() != time.name) writtenTimes_.push_back(time.name);
   // purgeWrite as OpenFOAM: only times this run wrote are removed, never the start time.
   while (purgeWrite_ > 0 && writtenTimes_.size() > static_cast<std::size_t>(purgeWrite_)) {
@@ -29,8 +30,9 @@ void CaseWriter::write(const TimeState& time, const std::vector<const ParticleCl
 }
 
 void CaseWriter::rewriteStart(const TimeState& time,
-                              const std::vector<const ParticleCloud*>& clouds) {
-  writeTimeFolder(caseFolder_, time, clouds);
+                              const std::vector<const ParticleCloud*>& clouds,
+                              const std::vector<UniformFile>& uniformFiles) {
+  writeTimeFolder(caseFolder_, time, clouds, uniformFiles);
   writeCaseIndex(caseFolder_);
 }
 

@@ -19,10 +19,12 @@ class CaseWriter {
   // Warns of a stale <old case name>.pvd left by a copy of the case (warnOfStaleCaseIndexes).
   CaseWriter(const CaseFolder& caseFolder, int purgeWrite);
 
-  // Writes <time>/<cloud>.vtp for every cloud and <time>/uniform/time.
-  void write(const TimeState& time, const std::vector<const ParticleCloud*>& clouds);
+  // Writes <time>/<cloud>.vtp for every cloud, <time>/uniform/time and the uniform files.
+  void write(const TimeState& time, const std::vector<const ParticleCloud*>& clouds,
+             const std::vector<UniformFile>& uniformFiles = {});
   // Writes the start time again (with the fields the models added); never purged.
-  void rewriteStart(const TimeState& time, const std::vector<const ParticleCloud*>& clouds);
+  void rewriteStart(const TimeState& time, const std::vector<const ParticleCloud*>& clouds,
+                    const std::vector<UniformFile>& uniformFiles = {});
 
   void setPurgeWrite(int purgeWrite) { purgeWrite_ = purgeWrite; }
 

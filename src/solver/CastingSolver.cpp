@@ -23,6 +23,13 @@ double CastingSolver::stableDeltaT(std::string& limiter) const {
   if (flow_ || energy_) {
     double stable = std::numeric_limits<double>::infinity();
     if (flow_) stable = flow_->stepLimits(time_.settings().maxCo).smallest(limiter);
+    for (const auto& body : bodies_) {
+      const double limit = body->stableDeltaT(fluid_->attributes().at("spacing"));
+      if (limit < stable) {
+        stable = limit;
+        limiter = "body " + body->settings().name + "'s acceleration";
+      }
+    }
     // with a flow and `interval auto` the heat takes steps of its own (heatStepsWithFlow)
     if (energy_ && (!flow_ || heatSetup_.heatEveryFlowStep)) {
       std::string heatLimiter;
@@ -58,19 +65,21 @@ void CastingSolver::evolve(double deltaT) {
   }
   const bool heatThisStep = energy_ && heatStepsWithFlow(deltaT);
   // the first kicks with the rates of the current state, and the drift
-  if (flow_) flow_->kickAndDrift(deltaT);
+  if (flow_) {
+    flow_->kickAndDrift(deltaT);
+    driftBodies(deltaT);
+  }
   if (heatThisStep) addWallTime(heatSeconds_, [&] { energy_->halfKick(heatDeltaT_); });
   // the search at the new positions (nothing moves without a flow), the quantities models share
-  if (flow_) {
-    addWallTime(searchSeconds_, [&] { neighbourhood_->update(); });
-    if (fillTime_) fillTime_->record(*neighbourhood_, time_.value());
-    flow_->keepClearOfWalls();
-  }
+  if (flow_) searchAndKeepClear(deltaT);
   if (heatThisStep && flow_ && exposedArea_) {
     addWallTime(heatSeconds_, [&] { exposedArea_->compute(); });
   }
   // the rates at the new positions and the second kicks
-  if (flow_) flow_->computeRatesAndKick(deltaT);
+  if (flow_) {
+    flow_->computeRatesAndKick(deltaT);
+    kickBodies(deltaT);
+  }
   if (heatThisStep) {
     addWallTime(heatSeconds_, [&] {
       energy_->computeRates();
@@ -82,6 +91,15 @@ void CastingSolver::evolve(double deltaT) {
     });
     ++heatSteps_;
   }
+}
+
+// The search at the new positions, the fluid's first wall contacts, and the wall clearance with
+// its impulse on the bodies.
+void CastingSolver::searchAndKeepClear(double deltaT) {
+  addWallTime(searchSeconds_, [&] { neighbourhood_->update(); });
+  if (fillTime_) fillTime_->record(*neighbourhood_, time_.value());
+  flow_->keepClearOfWalls();
+  pushBodiesByClearance(deltaT);
 }
 
 // A stop between heat steps (stopAt writeNow) writes the heat brought up to the time written.
@@ -127,10 +145,10 @@ void CastingSolver::evolveCooling(double deltaT) {
       throw Error(problem.str());
     }
     flow_->kickAndDrift(flowDeltaT);
-    addWallTime(searchSeconds_, [&] { neighbourhood_->update(); });
-    if (fillTime_) fillTime_->record(*neighbourhood_, time_.value());
-    flow_->keepClearOfWalls();
+    driftBodies(flowDeltaT);
+    searchAndKeepClear(flowDeltaT);
     flow_->computeRatesAndKick(flowDeltaT);
+    kickBodies(flowDeltaT);
     ++flowSubSteps_;
     lastFlowSubStep_ = flowDeltaT;
   }
@@ -203,13 +221,14 @@ void CastingSolver::writeResults() {
   std::vector<const ParticleCloud*> written;
   for (const ParticleCloud& cloud : clouds_) written.push_back(&cloud);
   writer_.setPurgeWrite(time_.settings().purgeWrite);
-  writer_.write(time_.state(), written);
+  writer_.write(time_.state(), written, bodyStateFiles(time_.timeName()));
   info() << "Writing time " << time_.timeName() << std::endl;
 }
 
 void CastingSolver::run() {
   info() << "Starting time loop\n\n";
   functions_.execute(time_.state(), false);
+  writeBodyHistory();
   while (time_.run()) {
     logRereadMessage();
     updateCoolingMode();
@@ -231,6 +250,10 @@ void CastingSolver::run() {
     const TimeState before = time_.state();
     // reuses their storage: no allocation per step
     for (std::size_t c = 0; c < evolving_.size(); ++c) lastGood_[c] = *evolving_[c];
+    lastGoodBodies_.resize(bodies_.size());
+    for (std::size_t b = 0; b < bodies_.size(); ++b) {
+      lastGoodBodies_[b] = bodies_[b]->stateDictionary();
+    }
     time_.advance();
     ++stepsTaken_;
     // A step that throws (a far-flung particle the cell grid cannot place, memory exhausted)
@@ -251,7 +274,10 @@ void CastingSolver::run() {
     const bool printBlock = stepsTaken_ % time_.settings().logInterval == 0 || time_.writeTime();
     logStep(printBlock);
     if (time_.writeTime()) addWallTime(outputSeconds_, [&] { writeResults(); });
-    addWallTime(functionSeconds_, [&] { functions_.execute(time_.state(), time_.writeTime()); });
+    addWallTime(functionSeconds_, [&] {
+      functions_.execute(time_.state(), time_.writeTime());
+      writeBodyHistory();
+    });
   }
   logRereadMessage();
   info() << "Stopping: " << time_.stopReason() << " at time " << time_.timeName() << '\n';

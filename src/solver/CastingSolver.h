@@ -1,5 +1,6 @@
 #pragma once
 
+#include <fstream>
 #include <memory>
 #include <optional>
 #include <string>
@@ -10,7 +11,10 @@
 #include "core/TimeControl.h"
 #include "particles/ParticleCloud.h"
 #include "post/FunctionObject.h"
+#include "bodies/RigidBody.h"
+#include "io/TimeFolders.h"
 #include "solver/BallisticMotion.h"
+#include "solver/BodySetup.h"
 #include "solver/CaseWriter.h"
 #include "solver/FlowSetup.h"
 #include "solver/HeatSetup.h"
@@ -28,7 +32,8 @@ class Dictionary;
 
 // The casting time loop of sphCastFoam: builds the models constant/physicsModels names over one
 // shared neighbourhood, and steps them (evolve() spells out the order of the passes). With a
-// flow model the fluid cloud runs weakly compressible SPH among the wall clouds; with
+// flow model the fluid cloud runs weakly compressible SPH among the wall clouds, some of which
+// may move as the rigid bodies of constant/dynamicBodies; with
 // heatTransfer the heat clouds carry the energy equation (17), with or without a flow (without
 // one the particles stay where they are); with neither, the clouds move ballistically under
 // constant/g (BallisticMotion).
@@ -47,6 +52,8 @@ class CastingSolver {
   void loadHeatClouds();
   void setUpNeighbourhood();
   void setUpFlow();
+  void loadBodyClouds();  // CastingSolverBodies.cpp
+  void setUpBodies();
   void setUpHeat();
   void setUpSolidification();
   void recordCriticalGradients();
@@ -56,6 +63,15 @@ class CastingSolver {
   ParticleCloud& cloudNamed(const std::string& name);  // throws, listing the clouds present
   double stableDeltaT(std::string& limiter) const;
   void evolve(double deltaT);
+  void searchAndKeepClear(double deltaT);
+  // The bodies' phases beside the flow's: kick and drift, the clearance's impulse, the loads
+  // and the second kick.
+  void driftBodies(double deltaT);
+  void pushBodiesByClearance(double deltaT);
+  void kickBodies(double deltaT);
+  std::vector<UniformFile> bodyStateFiles(const std::string& timeName) const;
+  void writeBodyHistory();
+  void logBodies();
   void updateCoolingMode();
   void evolveCooling(double deltaT);
   bool heatStepsWithFlow(double deltaT);
@@ -94,6 +110,7 @@ class CastingSolver {
   HeatSetup heatSetup_;
   SurfaceTensionSetup surfaceTensionSetup_;
   SolidificationSetup solidificationSetup_;
+  BodySetup bodySetup_;
   std::vector<ParticleCloud> clouds_;        // of the time folders: read, stepped, written
   std::vector<ParticleCloud> staticClouds_;  // of constant/particles: read only
   // The cell grids and pair lists of every model, built once per step (with flow or heat).
@@ -105,6 +122,9 @@ class CastingSolver {
   std::unique_ptr<Solidification> solidification_;  // follows the fluid's T after heat steps
   std::unique_ptr<ExposedArea> exposedArea_;      // A_i, when a model reads it
   std::unique_ptr<FillTime> fillTime_;            // the fluid's first wall contact
+  std::vector<std::unique_ptr<RigidBody>> bodies_;  // moving walls of the flow
+  std::vector<std::string> lastGoodBodies_;         // their state before the step
+  std::vector<std::unique_ptr<std::ofstream>> bodyHistory_;
   bool exposedAreaRestored_ = false;              // read with a restart's clouds
   std::vector<const ParticleCloud*> wallClouds_;  // the flow's walls
   Domain domain_;

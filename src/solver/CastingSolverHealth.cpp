@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "core/Error.h"
+#include "core/dictionary/Dictionary.h"
 
 namespace sphcast {
 
@@ -138,10 +139,14 @@ void CastingSolver::stopWithLastGoodState(const TimeState& good, bool restoreSav
   }
   if (restoreSaved) {
     for (std::size_t c = 0; c < evolving_.size(); ++c) *evolving_[c] = lastGood_[c];
+    for (std::size_t b = 0; b < bodies_.size() && b < lastGoodBodies_.size(); ++b) {
+      const Dictionary state = Dictionary::parse(lastGoodBodies_[b], "dynamicBodies");
+      bodies_[b]->readState(state.subDict(bodies_[b]->settings().name), good.value);
+    }
   }
   std::vector<const ParticleCloud*> written;
   for (const ParticleCloud& cloud : clouds_) written.push_back(&cloud);
-  writer_.write(good, written);
+  writer_.write(good, written, bodyStateFiles(good.name));
   throw Error(failure + "The last good state, time " + good.name +
               ", is written (it passed every check); restart from it with a smaller maxCo or "
               "deltaT, a larger soundSpeed, or look for a gap in the walls there.");

@@ -31,6 +31,7 @@ void CastingSolver::logStep(bool printBlock) {
          << " J  moved back from walls " << flow_->lastWallClearance().corrected << '\n';
     info() << line.str();
   }
+  logBodies();
   if (energy_) logHeat();
   if (solidification_) logSolidification();
   info() << clock_.timesLine() << '\n'

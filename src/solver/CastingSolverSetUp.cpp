@@ -28,6 +28,7 @@ CastingSolver::CastingSolver(const CaseFolder& caseFolder)
       heatSetup_(readHeatSetup(caseFolder)),
       surfaceTensionSetup_(readSurfaceTensionSetup(caseFolder, flowSetup_)),
       solidificationSetup_(readSolidificationSetup(caseFolder, flowSetup_, heatSetup_)),
+      bodySetup_(readBodySetup(caseFolder)),
       writer_(caseFolder, time_.settings().purgeWrite) {
   for (const std::string& repaired : repairedWrites_) {
     info() << "Repaired interrupted write: " << repaired << std::endl;
@@ -45,9 +46,11 @@ CastingSolver::CastingSolver(const CaseFolder& caseFolder)
   health_ = HealthSettings::read(controlDict);
   // Clouds join clouds_ before any model holds a pointer into it.
   if (heatSetup_.enabled) loadHeatClouds();
+  loadBodyClouds();
   if (flowSetup_.enabled || heatSetup_.enabled) {
     setUpNeighbourhood();
     if (flowSetup_.enabled) setUpFlow();
+    if (!bodySetup_.bodies.empty()) setUpBodies();
     if (heatSetup_.enabled) setUpHeat();
     if (solidificationSetup_.enabled) setUpSolidification();
     startModels();
@@ -60,7 +63,7 @@ CastingSolver::CastingSolver(const CaseFolder& caseFolder)
     if (firstTime && fieldInventory(clouds_) != startFields) {
       std::vector<const ParticleCloud*> written;
       for (const ParticleCloud& cloud : clouds_) written.push_back(&cloud);
-      writer_.rewriteStart(time_.state(), written);
+      writer_.rewriteStart(time_.state(), written, bodyStateFiles(time_.startTimeName()));
       info() << "    (time " << time_.startTimeName()
              << " written again with every cloud and field the run writes)\n";
     }
@@ -127,7 +130,7 @@ void CastingSolver::loadHeatClouds() {
 }
 
 // Every cloud a model works on, registered once: the flow's fluid moves, everything else is
-// at rest (moving molds arrive with the rigid bodies).
+// at rest (a body's mold is registered again as rigid by setUpBodies).
 void CastingSolver::setUpNeighbourhood() {
   const Real radius =
       flowSetup_.enabled ? flowSetup_.settings.supportRadius : heatSetup_.supportRadius;
@@ -255,7 +258,6 @@ void CastingSolver::setUpFlow() {
              << " m\n";
     }
   }
-  // Everything else stays where it is: only the fluid moves.
 }
 
 void CastingSolver::setUpHeat() {
@@ -392,6 +394,7 @@ void CastingSolver::startModels() {
   // bit.
   if (exposedArea_ && !exposedAreaRestored_) exposedArea_->compute();
   if (flow_) flow_->start();
+  if (!restarted) kickBodies(0.0);  // their acceleration under the start state's loads
   if (energy_) energy_->start();
   info() << "    neighbourhood: " << neighbourhood_->pairCount() << " pairs\n";
 }

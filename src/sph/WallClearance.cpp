@@ -1,12 +1,21 @@
 #include "sph/WallClearance.h"
 
+#include <algorithm>
+
 namespace sphcast {
 
 WallClearanceReport enforceWallClearance(std::span<Vector> positions, std::span<Vector> velocities,
                                          const std::vector<WallSurfaceView>& walls,
                                          const PeriodicBox& periodic, Real spacing,
-                                         Real clearance, std::span<const Real> held) {
+                                         Real clearance, std::span<const Real> held,
+                                         std::span<Vector> velocityChange,
+                                         std::span<int> changeAtWall) {
   WallClearanceReport report;
+  const bool recording = !velocityChange.empty();
+  if (recording) {
+    std::fill(velocityChange.begin(), velocityChange.end(), Vector::Zero());
+    std::fill(changeAtWall.begin(), changeAtWall.end(), -1);
+  }
   if (walls.empty()) return report;
   const std::size_t count = positions.size();
   std::size_t corrected = 0;
@@ -31,8 +40,17 @@ WallClearanceReport enforceWallClearance(std::span<Vector> positions, std::span<
       }
     }
     positions[i] = periodic.wrap(positions[i] + (clearance - surface.distance) * surface.normal);
-    const Real towardsWall = velocities[i].dot(surface.normal);
-    if (towardsWall < 0) velocities[i] -= towardsWall * surface.normal;
+    const WallSurfaceView& wall = walls[surface.wall];
+    const Vector wallVelocity =
+        wall.velocity.empty() ? Vector::Zero() : Vector(wall.velocity[surface.particle]);
+    const Real towardsWall = (velocities[i] - wallVelocity).dot(surface.normal);
+    if (towardsWall < 0) {
+      velocities[i] -= towardsWall * surface.normal;
+      if (recording) {
+        velocityChange[i] = -towardsWall * surface.normal;
+        changeAtWall[i] = static_cast<int>(surface.wall);
+      }
+    }
   }
   report.corrected = corrected;
   report.beyondSurface = beyondSurface;

@@ -25,15 +25,20 @@ struct WallClearanceReport {
 // an impact too fast for the step, a particle can drift through between two wall particles.
 // This pass is the geometric guarantee behind the pressure: every fluid particle closer than
 // `clearance` to the surface (WallSurfaceDistance) is moved back along the wall normal to the
-// clearance, and its velocity towards the wall is removed (a perfectly inelastic contact with a
-// wall at rest; the tangential velocity is kept). Gather over the fluid particles: each writes
+// clearance, and its velocity towards the wall, relative to the wall's (a moving mold's), is
+// removed (a perfectly inelastic contact; the tangential velocity is kept). Gather over the fluid particles: each writes
 // only its own position and velocity, the result does not depend on the thread count.
 // Particles with held[i] != 0 (frozen metal, when `held` is not empty) are left where they are:
 // their surface distance, estimated from pair lists that change from step to step, would
 // otherwise nudge them by round-off-sized amounts.
+// With `velocityChange` (one per particle) each particle's change of velocity is kept there,
+// and the view it came from in `changeAtWall` (-1: none): the flow turns them into the
+// impulse on a moving mold, so that metal and mold conserve momentum.
 WallClearanceReport enforceWallClearance(std::span<Vector> positions, std::span<Vector> velocities,
                                          const std::vector<WallSurfaceView>& walls,
                                          const PeriodicBox& periodic, Real spacing, Real clearance,
-                                         std::span<const Real> held = {});
+                                         std::span<const Real> held = {},
+                                         std::span<Vector> velocityChange = {},
+                                         std::span<int> changeAtWall = {});
 
 }  // namespace sphcast

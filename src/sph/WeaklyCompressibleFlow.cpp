@@ -6,6 +6,8 @@
 #include <limits>
 #include <utility>
 
+#include <Eigen/Geometry>
+
 #include "core/Error.h"
 #include "core/Log.h"
 #include "sph/EquationOfState.h"
@@ -86,6 +88,10 @@ void WeaklyCompressibleFlow::checkInput() {
   }
   if (settings_.dimension == 2) requirePlane();
   for (const ParticleCloud* wall : walls_) wallPressure_.emplace_back(wall->size(), Real(0));
+  loadMeasured_.assign(walls_.size(), false);
+  wallLoads_.assign(walls_.size(), WallLoad{});
+  loadForce_.resize(walls_.size());
+  loadTorque_.resize(walls_.size());
   const auto& restart = restartFields();  // acceleration (a vector), densityRate
   restarted_ = fluid_.hasVectorField(restart[0]) && fluid_.hasScalarField(restart[1]);
   fluid_.addScalarField("p");
@@ -103,6 +109,54 @@ void WeaklyCompressibleFlow::checkInput() {
 const std::vector<std::string>& WeaklyCompressibleFlow::restartFields() {
   static const std::vector<std::string> fields{"acceleration", "densityRate"};
   return fields;
+}
+
+std::size_t WeaklyCompressibleFlow::wallIndex(const ParticleCloud& wall) const {
+  for (std::size_t w = 0; w < walls_.size(); ++w) {
+    if (walls_[w] == &wall) return w;
+  }
+  throw Error("flow: cloud '" + wall.name() + "' is not one of the flow's walls");
+}
+
+void WeaklyCompressibleFlow::measureLoadOn(const ParticleCloud& wall) {
+  loadMeasured_[wallIndex(wall)] = true;
+}
+
+const WallLoad& WeaklyCompressibleFlow::wallLoad(const ParticleCloud& wall) const {
+  return wallLoads_[wallIndex(wall)];
+}
+
+// The per-particle loads of the last pass, summed in particle order.
+void WeaklyCompressibleFlow::sumWallLoads() {
+  for (std::size_t w = 0; w < walls_.size(); ++w) {
+    if (!loadMeasured_[w]) continue;
+    Vector force = Vector::Zero(), torque = Vector::Zero();
+    for (std::size_t i = 0; i < loadForce_[w].size(); ++i) {
+      force += loadForce_[w][i];
+      torque += loadTorque_[w][i];
+    }
+    wallLoads_[w].force = force;
+    wallLoads_[w].torque = torque;
+  }
+}
+
+// The momentum the clearance gave the fluid particles it stopped at a measured wall, taken
+// from that wall (at the fluid particle's place: the wall particle is within h of it).
+void WeaklyCompressibleFlow::sumClearanceImpulses() {
+  for (WallLoad& load : wallLoads_) {
+    load.clearanceImpulse.setZero();
+    load.clearanceAngularImpulse.setZero();
+  }
+  if (clearanceWall_.empty()) return;
+  const auto& x = fluid_.positions();
+  const auto& mass = fluid_.scalarField("mass");
+  for (std::size_t i = 0; i < clearanceWall_.size(); ++i) {
+    const int w = clearanceWall_[i];
+    if (w < 0 || !loadMeasured_[w]) continue;
+    const Vector impulse = -mass[i] * clearanceVelocityChange_[i];
+    wallLoads_[w].clearanceImpulse += impulse;
+    wallLoads_[w].clearanceAngularImpulse += x[i].cross(impulse);
+  }
 }
 
 void WeaklyCompressibleFlow::start() {
@@ -136,13 +190,21 @@ std::vector<WallSurfaceView> WeaklyCompressibleFlow::wallSurfaces() const {
 
 void WeaklyCompressibleFlow::keepClearOfWalls() {
   const Real spacing = static_cast<Real>(fluid_.attributes().at("spacing"));
+  const bool anyLoad = std::find(loadMeasured_.begin(), loadMeasured_.end(), true) !=
+                       loadMeasured_.end();
+  if (anyLoad) {
+    clearanceVelocityChange_.resize(fluid_.size());
+    clearanceWall_.resize(fluid_.size());
+  }
   addWallTime(timings_.wallClearance, [&] {
     lastClearance_ =
         enforceWallClearance(fluid_.positions(), fluid_.vectorField("U"), wallSurfaces(),
                              settings_.periodic, spacing, settings_.wallClearance * spacing,
                              fluid_.hasScalarField("frozen")
                                  ? std::span<const Real>(fluid_.scalarField("frozen"))
-                                 : std::span<const Real>());
+                                 : std::span<const Real>(),
+                             clearanceVelocityChange_, clearanceWall_);
+    if (anyLoad) sumClearanceImpulses();
   });
   // The lists stay those of the positions before the move (by the clearance plus the depth it
   // had reached, under 0.75 dx unless the run then stops; most moves are far smaller): a pair
@@ -176,6 +238,10 @@ void WeaklyCompressibleFlow::extrapolateWallPressure() {
       const auto& wallX = walls_[w]->positions();
       const NeighbourList& fluidAround = fluidAroundWall(w);
       Real* wallPressure = wallPressure_[w].data();
+      // a moving wall's particles feel g - a_wall (eq. (27))
+      const Vector* wallAcceleration = walls_[w]->hasVectorField("acceleration")
+                                           ? walls_[w]->vectorField("acceleration").data()
+                                           : nullptr;
 #pragma omp parallel for schedule(static)
       for (std::size_t k = 0; k < wallX.size(); ++k) {
         WallPressureSums sums;
@@ -183,7 +249,8 @@ void WeaklyCompressibleFlow::extrapolateWallPressure() {
           const Vector xkf = separation(wallX[k], x[f]);
           sums.add(kernel.value(xkf.norm()), p[f], rho[f], xkf);
         }
-        wallPressure[k] = sums.wallPressure(gravity);
+        wallPressure[k] = sums.wallPressure(
+            wallAcceleration ? Vector(gravity - wallAcceleration[k]) : gravity);
       }
     }
   };
@@ -279,13 +346,24 @@ void WeaklyCompressibleFlow::computeRatesFor() {
     const Real* depth;
     const Real* pressure;
     const NeighbourList* neighbours;
+    const Vector* velocity;  // null: at rest
+    Vector* loadForce;       // per fluid particle, null unless the load is measured
+    Vector* loadTorque;
   };
   std::vector<WallArrays> walls;
   for (std::size_t w = 0; w < walls_.size(); ++w) {
+    const bool measured = loadMeasured_[w] && wantsAcceleration;
+    if (measured) {
+      loadForce_[w].resize(x.size());
+      loadTorque_[w].resize(x.size());
+    }
     walls.push_back({walls_[w]->positions().data(), walls_[w]->scalarField("volume").data(),
                      walls_[w]->vectorField("normal").data(),
                      walls_[w]->scalarField("wallDistance").data(), wallPressure_[w].data(),
-                     &wallPairs(w)});
+                     &wallPairs(w),
+                     walls_[w]->hasVectorField("U") ? walls_[w]->vectorField("U").data() : nullptr,
+                     measured ? loadForce_[w].data() : nullptr,
+                     measured ? loadTorque_[w].data() : nullptr});
   }
   const Real halfSpacing = Real(0.5) * spacing;
   const Vector gravity = settings_.gravity;
@@ -344,6 +422,9 @@ void WeaklyCompressibleFlow::computeRatesFor() {
       if (frozen && frozen[i] != 0 && !nearMelt[i]) {
         if constexpr (wantsDensityRate) densityRate[i] = 0;
         if constexpr (wantsAcceleration) acceleration[i] = Vector::Zero();
+        for (const WallArrays& wall : walls) {
+          if (wall.loadForce) wall.loadForce[i] = wall.loadTorque[i] = Vector::Zero();
+        }
         continue;
       }
       const Vector xi = x[i];
@@ -394,24 +475,39 @@ void WeaklyCompressibleFlow::computeRatesFor() {
         }
       }
       for (const WallArrays& wall : walls) {
+        // a measured wall's pairs are summed apart, so that the wall gets their exact negative
+        Vector wallForce = Vector::Zero(), wallTorque = Vector::Zero();
         for (const std::uint32_t k : wall.neighbours->of(i)) {
           const Vector xik = separation(xi, wall.position[k]);
           const Real r = xik.norm();
+          const Vector wallVelocity = wall.velocity ? wall.velocity[k] : Vector::Zero();
           const WallParticle particle{
-              Vector::Zero(), wall.normal[k],   wall.volume[k],
+              wallVelocity,   wall.normal[k],   wall.volume[k],
               wall.depth[k],  wall.pressure[k], eos.density(wall.pressure[k], restDensity[i])};
           const Vector gradW = kernel.gradient(xik, r);
+          Vector pairAcceleration = Vector::Zero();
+          Vector& target = wall.loadForce ? pairAcceleration : accel;
           accumulateWallPair<Dim, Interface, Viscosity>(
               self, muI, particle, halfSpacing, xik, r,
-              corrected ? Vector(correctionI * gradW) : gradW, constants, rate, accel);
+              corrected ? Vector(correctionI * gradW) : gradW, constants, rate, target);
           if (diffusive) {
-            // deltaSPH's artificial viscosity against the mirror velocity 2 v_wall - v_i (walls
-            // at rest): without it a means interface has no dissipation at an impact on a wall
+            // deltaSPH's artificial viscosity against the mirror velocity 2 v_wall - v_i:
+            // without it a means interface has no dissipation at an impact on a wall
             const Real etaSquared = constants.viscosityRegularisation;
-            accel +=
-                (viscousScale * wall.volume[k] * Real(2) * vi.dot(xik) / (r * r + etaSquared)) *
-                gradW;
+            target += (viscousScale * wall.volume[k] * Real(2) * (vi - wallVelocity).dot(xik) /
+                       (r * r + etaSquared)) *
+                      gradW;
           }
+          if (wall.loadForce) {
+            accel += pairAcceleration;
+            const Vector onWall = -mass[i] * pairAcceleration;
+            wallForce += onWall;
+            wallTorque += wall.position[k].cross(onWall);
+          }
+        }
+        if (wall.loadForce) {
+          wall.loadForce[i] = wallForce;
+          wall.loadTorque[i] = wallTorque;
         }
       }
       if constexpr (wantsDensityRate) densityRate[i] = rate;
@@ -423,6 +519,7 @@ void WeaklyCompressibleFlow::computeRatesFor() {
   } else {
     ratesWith(plainDifference);
   }
+  if constexpr (wantsAcceleration) sumWallLoads();
 }
 
 // The numerics are chosen by type once per pass, never by `if` inside the pair loop.
@@ -637,6 +734,12 @@ FlowStepLimits WeaklyCompressibleFlow::stepLimits(double maxCo) const {
                                           static_cast<double>(std::abs(densityRate[i] / rho[i])));
     largestKinematicViscosity =
         std::max(largestKinematicViscosity, static_cast<double>(mu[i] / rho[i]));
+  }
+  for (const ParticleCloud* wall : walls_) {  // a moving mold's speed counts as the fluid's
+    if (!wall->hasVectorField("U")) continue;
+    for (const Vector& u : wall->vectorField("U")) {
+      fastest = std::max(fastest, static_cast<double>(u.norm()));
+    }
   }
   const auto spacing = fluid_.attributes().find("spacing");
   if (spacing == fluid_.attributes().end()) {

@@ -61,7 +61,19 @@ struct FlowStepLimits {
   double smallest(std::string& limiter) const;
 };
 
-// Weakly compressible SPH for one fluid cloud among static wall clouds (paper eqs. (1)-(4),
+// What the fluid puts on a wall cloud whose load is measured (measureLoadOn): the exact negative
+// of every pair term the wall's particles put on the fluid (interface pressure, viscous,
+// deltaSPH's artificial viscosity), each acting at its wall particle, so that fluid and wall
+// conserve momentum pair by pair; and the momentum the last wall clearance took out of the fluid
+// particles it stopped at this wall.
+struct WallLoad {
+  Vector force = Vector::Zero();   // N, at the last evaluation of the rates
+  Vector torque = Vector::Zero();  // N m about the origin, likewise
+  Vector clearanceImpulse = Vector::Zero();         // N s, of the last keepClearOfWalls
+  Vector clearanceAngularImpulse = Vector::Zero();  // N m s about the origin, likewise
+};
+
+// Weakly compressible SPH for one fluid cloud among wall clouds (paper eqs. (1)-(4),
 // doc/physics.md): continuity and momentum with the interface pressure and velocity of a Riemann
 // solver (or plain means: densityScheme standard; plain means with the density diffusion and
 // artificial viscosity of Antuono et al. 2010: deltaSPH), optionally with the normalised kernel
@@ -77,7 +89,10 @@ struct FlowStepLimits {
 // acceleration, densityRate (kept in the cloud, so a restart continues bit for bit). Cloud
 // attribute spacing (dx) for the step limits. Wall fields read (as particleizeMold writes them):
 // volume, normal (unit, out of the wall into the fluid), wallDistance (depth behind the wall
-// surface); walls are at rest (moving walls arrive with the rigid bodies).
+// surface); a wall with a field U moves (a mold that is a rigid body, bodies/RigidBody.h): U and,
+// when present, acceleration enter its mirror state (no penetration and no slip relative to the
+// wall; the extrapolated pressure with g - a_wall, Adami et al. 2012 eq. (27)), the wall
+// clearance and the acoustic step limit. Whoever moves it keeps U and acceleration current.
 //
 // The pairs come from a Neighbourhood: the solver's, shared with the other models of the step
 // (the solver then calls the phases of a step in order, with its own search between them), or
@@ -119,6 +134,11 @@ class WeaklyCompressibleFlow {
   void computeRatesAndKick(double deltaT);
 
   std::size_t fluidPairCount() const { return fluidPairs().pairCount(); }
+
+  // Measures the load on `wall` (one of the flow's walls) at every evaluation of the rates and
+  // wall clearance from now on; until the next rates, the load is zero.
+  void measureLoadOn(const ParticleCloud& wall);
+  const WallLoad& wallLoad(const ParticleCloud& wall) const;
 
   // What the wall clearance did in the last step (for the run's health checks).
   const WallClearanceReport& lastWallClearance() const { return lastClearance_; }
@@ -166,7 +186,19 @@ class WeaklyCompressibleFlow {
   std::unique_ptr<Neighbourhood> ownNeighbourhood_;  // null in a shared one
   Neighbourhood& neighbourhood_;
   bool restarted_ = false;
+  std::size_t wallIndex(const ParticleCloud& wall) const;
+  void sumWallLoads();
+  void sumClearanceImpulses();
+
   std::vector<std::vector<Real>> wallPressure_;  // per wall cloud, per particle
+  // Loads (measureLoadOn): per wall, whether measured, the sums, and per fluid particle the
+  // force and torque of its pairs with the wall (summed in particle order: the same on any
+  // number of threads)
+  std::vector<bool> loadMeasured_;
+  std::vector<WallLoad> wallLoads_;
+  std::vector<std::vector<Vector>> loadForce_, loadTorque_;
+  std::vector<Vector> clearanceVelocityChange_;  // of the last keepClearOfWalls, with loads
+  std::vector<int> clearanceWall_;
   std::vector<Matrix> correction_;               // L_i, with kernelCorrection or deltaSPH
   std::vector<Vector> densityGradient_;          // renormalised grad rho (deltaSPH)
   WallClearanceReport lastClearance_;

@@ -1,0 +1,295 @@
+#include "bodies/RigidBody.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+
+#include <Eigen/Eigenvalues>
+
+#include "core/Error.h"
+#include "core/dictionary/Dictionary.h"
+
+namespace sphcast {
+
+RigidBody::RigidBody(RigidBodySettings settings, ParticleCloud& cloud, const Vector& gravity)
+    : settings_(std::move(settings)), cloud_(cloud), gravity_(gravity) {
+  if (cloud_.size() == 0) {
+    throw Error("body '" + settings_.name + "': its cloud '" + cloud_.name() + "' is empty");
+  }
+  cloud_.scalarField("volume");  // each look-up throws an Error naming the cloud's fields
+  const auto& normal = cloud_.vectorField("normal");
+  // the places in the body's frame: the cloud as it is at the start (a restart reads them back)
+  if (!cloud_.hasVectorField("restPosition")) {
+    cloud_.addVectorField("restPosition") = cloud_.positions();
+    cloud_.addVectorField("restNormal") = normal;
+  }
+  cloud_.addVectorField("U");
+  cloud_.addVectorField("acceleration");
+  computeMassProperties();
+  centre_ = startCentre_;
+  // until the first loads (setLoadsAndKick with dt 0 at the start): gravity and the press
+  force_ = static_cast<Real>(mass_) * gravity_ + settings_.appliedForce;
+  acceleration_ = constrained(force_ / static_cast<Real>(mass_));
+}
+
+// Uniform density over the particles' volumes (each particle a cube of its volume for its own
+// inertia), unless the dictionary gives the values.
+void RigidBody::computeMassProperties() {
+  const auto& rest = cloud_.vectorField("restPosition");
+  const auto& volume = cloud_.scalarField("volume");
+  double totalVolume = 0;
+  Vector moment = Vector::Zero();
+  for (std::size_t k = 0; k < rest.size(); ++k) {
+    totalVolume += volume[k];
+    moment += volume[k] * rest[k];
+  }
+  if (!(totalVolume > 0)) {
+    throw Error("body '" + settings_.name + "': the particles of cloud '" + cloud_.name() +
+                "' have no volume");
+  }
+  mass_ = settings_.mass ? *settings_.mass : *settings_.density * totalVolume;
+  startCentre_ = settings_.centreOfMass ? *settings_.centreOfMass
+                                        : Vector(moment / static_cast<Real>(totalVolume));
+  if (settings_.momentOfInertia) {
+    principalInertia_ = *settings_.momentOfInertia;
+    principalAxes_.setIdentity();
+    return;
+  }
+  const Real density = static_cast<Real>(mass_ / totalVolume);
+  Matrix3 inertia = Matrix3::Zero();
+  for (std::size_t k = 0; k < rest.size(); ++k) {
+    const Vector d = rest[k] - startCentre_;
+    const Real m = density * volume[k];
+    const Real own = m * std::pow(volume[k], Real(2) / 3) / 6;  // a cube's about its centre
+    inertia += m * (d.squaredNorm() * Matrix3::Identity() - d * d.transpose()) +
+               own * Matrix3::Identity();
+  }
+  const Eigen::SelfAdjointEigenSolver<Matrix3> principal(inertia);
+  principalInertia_ = principal.eigenvalues();
+  principalAxes_ = principal.eigenvectors();
+}
+
+Vector RigidBody::inverseInertiaTimes(const Vector& angularMomentum) const {
+  const Matrix3 axes = orientation_.toRotationMatrix() * principalAxes_;
+  Vector inBody = axes.transpose() * angularMomentum;
+  for (int a = 0; a < 3; ++a) {
+    inBody[a] = principalInertia_[a] > 0 ? inBody[a] / principalInertia_[a] : Real(0);
+  }
+  return axes * inBody;
+}
+
+Vector RigidBody::angularVelocity() const {
+  if (settings_.rotationLocked || settings_.prescribed()) return Vector::Zero();
+  return inverseInertiaTimes(angularMomentum_);
+}
+
+bool RigidBody::held(double stepStart) const {
+  return !settings_.prescribed() && stepStart < settings_.releaseTime;
+}
+
+Vector RigidBody::constrained(const Vector& linear) const {
+  switch (settings_.translation) {
+    case RigidBodySettings::Translation::free:
+      return linear;
+    case RigidBodySettings::Translation::axis:
+      return linear.dot(settings_.axis) * settings_.axis;
+    case RigidBodySettings::Translation::locked:
+      break;
+  }
+  return Vector::Zero();
+}
+
+Vector RigidBody::prescribedDisplacement(double time) const {
+  const auto& table = settings_.displacement;
+  if (time <= std::get<0>(table.front())) return std::get<1>(table.front());
+  if (time >= std::get<0>(table.back())) return std::get<1>(table.back());
+  const auto after = std::upper_bound(
+      table.begin(), table.end(), time,
+      [](double t, const std::tuple<double, Vector>& point) { return t < std::get<0>(point); });
+  const auto before = after - 1;
+  const double t0 = std::get<0>(*before), t1 = std::get<0>(*after);
+  const Real weight = static_cast<Real>((time - t0) / (t1 - t0));
+  return (1 - weight) * std::get<1>(*before) + weight * std::get<1>(*after);
+}
+
+// x_k = x0_k + d + (R - I) r_k: with R = I exactly (no rotation) a particle moves by d alone,
+// so a 2D body stays on its plane to the bit.
+void RigidBody::placeParticles() {
+  const Matrix3 rotation = orientation_.toRotationMatrix();
+  const Matrix3 turn = rotation - Matrix3::Identity();
+  const Vector travel = centre_ - startCentre_;
+  const auto& rest = cloud_.vectorField("restPosition");
+  const auto& restNormal = cloud_.vectorField("restNormal");
+  auto& x = cloud_.positions();
+  auto& normal = cloud_.vectorField("normal");
+  const bool turned = !turn.isZero(0);
+#pragma omp parallel for schedule(static)
+  for (std::size_t k = 0; k < x.size(); ++k) {
+    x[k] = turned ? Vector(rest[k] + travel + turn * (rest[k] - startCentre_))
+                  : Vector(rest[k] + travel);
+    if (turned) normal[k] = rotation * restNormal[k];
+  }
+  if (!turned) std::copy(restNormal.begin(), restNormal.end(), normal.begin());
+}
+
+void RigidBody::updateParticleVelocities(bool heldNow) {
+  const Vector omega = angularVelocity();
+  const Vector linearAcceleration = heldNow ? Vector::Zero() : acceleration_;
+  const auto& x = cloud_.positions();
+  auto& u = cloud_.vectorField("U");
+  auto& a = cloud_.vectorField("acceleration");
+#pragma omp parallel for schedule(static)
+  for (std::size_t k = 0; k < x.size(); ++k) {
+    const Vector arm = x[k] - centre_;
+    u[k] = velocity_ + omega.cross(arm);
+    a[k] = linearAcceleration + omega.cross(omega.cross(arm));
+  }
+}
+
+void RigidBody::kickAndDrift(double deltaT, double timeAfter) {
+  const Real dt = static_cast<Real>(deltaT);
+  if (settings_.prescribed()) {
+    const Vector before = prescribedDisplacement(timeAfter - deltaT);
+    const Vector after = prescribedDisplacement(timeAfter);
+    centre_ = startCentre_ + after;
+    velocity_ = (after - before) / dt;
+    placeParticles();
+    updateParticleVelocities(false);
+    return;
+  }
+  if (held(timeAfter - deltaT)) {
+    velocity_.setZero();
+    angularMomentum_.setZero();
+    updateParticleVelocities(true);
+    return;
+  }
+  velocity_ += Real(0.5) * dt * acceleration_;
+  if (!settings_.rotationLocked) angularMomentum_ += Real(0.5) * dt * torque_;
+  centre_ += dt * velocity_;
+  if (settings_.endStop) {
+    const Real travel = settings_.endStop->norm();
+    const Vector direction = *settings_.endStop / travel;
+    const Real beyond = (centre_ - startCentre_).dot(direction) - travel;
+    if (beyond >= 0) {  // a hard stop: at the stop, with no speed into it
+      centre_ -= beyond * direction;
+      velocity_ -= std::max(velocity_.dot(direction), Real(0)) * direction;
+      atStop_ = true;
+    }
+  }
+  if (!settings_.rotationLocked) {
+    const Vector omega = angularVelocity();
+    const Real angle = omega.norm() * dt;
+    if (angle > 0) {
+      orientation_ = (Quaternion(Eigen::AngleAxis<Real>(angle, omega.normalized())) * orientation_)
+                         .normalized();
+    }
+  }
+  placeParticles();
+  updateParticleVelocities(false);
+}
+
+void RigidBody::takeImpulse(const Vector& impulse, const Vector& angularImpulse, double deltaT,
+                            double time) {
+  if (settings_.prescribed() || held(time - deltaT)) return;  // the machine, or the holder
+  velocity_ += constrained(impulse / static_cast<Real>(mass_));
+  if (atStop_) {  // the stop takes what pushes into it
+    const Vector direction = settings_.endStop->normalized();
+    velocity_ -= std::max(velocity_.dot(direction), Real(0)) * direction;
+  }
+  if (!settings_.rotationLocked) angularMomentum_ += angularImpulse - centre_.cross(impulse);
+  updateParticleVelocities(false);
+}
+
+void RigidBody::setLoadsAndKick(const Vector& fluidForce, const Vector& fluidTorque,
+                                double deltaT, double time) {
+  const Real dt = static_cast<Real>(deltaT);
+  fluidForce_ = fluidForce;
+  force_ = fluidForce + static_cast<Real>(mass_) * gravity_ + settings_.appliedForce;
+  torque_ = fluidTorque - centre_.cross(fluidForce);  // gravity and the applied force: at c
+  if (settings_.prescribed()) {
+    updateParticleVelocities(false);
+    return;
+  }
+  Vector acceleration = constrained(force_ / static_cast<Real>(mass_));
+  if (atStop_) {
+    const Vector direction = settings_.endStop->normalized();
+    const Real into = acceleration.dot(direction);
+    if (into >= 0) {
+      acceleration -= into * direction;  // the stop holds it
+    } else {
+      atStop_ = false;  // pulled back off the stop
+    }
+  }
+  acceleration_ = acceleration;
+  if (held(time - deltaT)) {
+    velocity_.setZero();
+    angularMomentum_.setZero();
+    updateParticleVelocities(true);
+    return;
+  }
+  velocity_ += Real(0.5) * dt * acceleration_;
+  if (!settings_.rotationLocked) angularMomentum_ += Real(0.5) * dt * torque_;
+  updateParticleVelocities(false);
+}
+
+double RigidBody::stableDeltaT(double spacing) const {
+  const double a = acceleration_.norm();
+  return a > 0 ? 0.25 * std::sqrt(spacing / a) : std::numeric_limits<double>::infinity();
+}
+
+namespace {
+std::string vectorText(const Vector& v) {
+  char text[96];
+  std::snprintf(text, sizeof text, "(%.17g %.17g %.17g)", static_cast<double>(v[0]),
+                static_cast<double>(v[1]), static_cast<double>(v[2]));
+  return text;
+}
+}  // namespace
+
+std::string RigidBody::stateDictionary() const {
+  char quaternion[128];
+  std::snprintf(quaternion, sizeof quaternion, "(%.17g %.17g %.17g %.17g)",
+                static_cast<double>(orientation_.w()), static_cast<double>(orientation_.x()),
+                static_cast<double>(orientation_.y()), static_cast<double>(orientation_.z()));
+  std::string text = settings_.name + "\n{\n";
+  auto line = [&text](const char* key, const std::string& value) {
+    char padded[32];
+    std::snprintf(padded, sizeof padded, "    %-16s", key);
+    text += padded + value + ";\n";
+  };
+  line("centreOfMass", vectorText(centre_));
+  line("displacement", vectorText(centre_ - startCentre_));
+  line("orientation", quaternion);  // (w x y z)
+  line("velocity", vectorText(velocity_));
+  line("angularMomentum", vectorText(angularMomentum_));
+  line("angularVelocity", vectorText(angularVelocity()));
+  line("acceleration", vectorText(acceleration_));
+  line("torque", vectorText(torque_));
+  line("force", vectorText(force_));
+  line("fluidForce", vectorText(fluidForce_));
+  line("atEndStop", atStop_ ? "yes" : "no");
+  return text + "}\n";
+}
+
+void RigidBody::readState(const Dictionary& state, double time) {
+  centre_ = state.get<Vector>("centreOfMass");
+  const auto q = state.get<std::vector<double>>("orientation");
+  if (q.size() != 4) {
+    throw DictionaryError(state.location("orientation"),
+                          "'orientation' in " + state.name() + " must be a quaternion (w x y z)");
+  }
+  orientation_ = Quaternion(static_cast<Real>(q[0]), static_cast<Real>(q[1]),
+                            static_cast<Real>(q[2]), static_cast<Real>(q[3]));
+  velocity_ = state.get<Vector>("velocity");
+  angularMomentum_ = state.get<Vector>("angularMomentum");
+  acceleration_ = state.get<Vector>("acceleration");
+  torque_ = state.get<Vector>("torque");
+  force_ = state.get<Vector>("force");
+  fluidForce_ = state.get<Vector>("fluidForce");
+  atStop_ = state.get<bool>("atEndStop");
+  placeParticles();
+  updateParticleVelocities(held(time) && velocity_.isZero(0));
+}
+
+}  // namespace sphcast

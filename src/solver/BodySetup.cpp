@@ -1,0 +1,184 @@
+#include "solver/BodySetup.h"
+
+#include <cmath>
+#include <filesystem>
+#include <set>
+
+#include "core/Error.h"
+
+namespace sphcast {
+
+namespace {
+const Dimensions massUnit{{1, 0, 0, 0, 0, 0, 0}};
+const Dimensions densityUnit{{1, -3, 0, 0, 0, 0, 0}};
+const Dimensions length{{0, 1, 0, 0, 0, 0, 0}};
+const Dimensions inertiaUnit{{1, 2, 0, 0, 0, 0, 0}};
+const Dimensions time{{0, 0, 1, 0, 0, 0, 0}};
+const Dimensions forceUnit{{1, 1, -2, 0, 0, 0, 0}};
+
+bool finite(const Vector& v) { return v.allFinite(); }
+
+// A word out of `words`, or a vector: "free", "locked" or "(0 0 1)" ("" and the vector).
+std::string wordOrVector(const Dictionary& body, const std::string& key,
+                         const std::vector<std::string>& words, Vector& vector) {
+  try {
+    vector = body.get<Vector>(key);
+    return "";
+  } catch (const DictionaryError&) {
+    return body.getChoice(key, words);  // not a vector: the word's error, if it is none
+  }
+}
+
+RigidBodySettings readBody(const Dictionary& body, const std::string& name) {
+  body.checkKeys({"cloud", "motion", "mass", "density", "centreOfMass", "momentOfInertia",
+                  "translation", "rotation", "releaseTime", "endStop", "appliedForce",
+                  "displacement"});
+  RigidBodySettings settings;
+  settings.name = name;
+  settings.cloud = body.getOrDefault<std::string>("cloud", name);
+  const bool prescribed =
+      body.getChoiceOrDefault("motion", {"dynamic", "prescribed"}, "dynamic") == "prescribed";
+  if (body.found("mass") == body.found("density")) {
+    throw DictionaryError(body.location(),
+                          "body '" + name + "' in " + body.name() +
+                              " needs either 'mass' (kg) or 'density' (kg/m^3, for the mass of "
+                              "its particles' volume), not " +
+                              (body.found("mass") ? "both" : "neither"));
+  }
+  auto positive = [&](const char* key, const Dimensions& unit) {
+    const double value = body.get<double>(key, unit);
+    if (!(value > 0) || !std::isfinite(value)) {
+      throw DictionaryError(body.location(key), std::string("'") + key + "' of body '" + name +
+                                                    "' must be positive");
+    }
+    return value;
+  };
+  if (body.found("mass")) settings.mass = positive("mass", massUnit);
+  if (body.found("density")) settings.density = positive("density", densityUnit);
+  if (body.found("centreOfMass")) settings.centreOfMass = body.get<Vector>("centreOfMass", length);
+  if (body.found("momentOfInertia")) {
+    const Vector inertia = body.get<Vector>("momentOfInertia", inertiaUnit);
+    if (!((inertia.array() > 0).all()) || !finite(inertia)) {
+      throw DictionaryError(body.location("momentOfInertia"),
+                            "'momentOfInertia' of body '" + name +
+                                "' must be three positive principal moments (kg m^2)");
+    }
+    settings.momentOfInertia = inertia;
+  }
+  if (prescribed) {
+    for (const char* dynamicOnly :
+         {"translation", "rotation", "releaseTime", "endStop", "appliedForce"}) {
+      if (body.found(dynamicOnly)) {
+        throw DictionaryError(body.location(dynamicOnly),
+                              std::string("'") + dynamicOnly + "' of body '" + name +
+                                  "' is for motion dynamic; a prescribed body follows "
+                                  "'displacement' alone");
+      }
+    }
+    settings.displacement = body.get<std::vector<std::tuple<double, Vector>>>("displacement");
+    const SourceLocation at = body.location("displacement");
+    if (settings.displacement.empty()) {
+      throw DictionaryError(at, "'displacement' of body '" + name + "' is an empty table");
+    }
+    for (std::size_t p = 0; p < settings.displacement.size(); ++p) {
+      const auto& [t, d] = settings.displacement[p];
+      if (!std::isfinite(t) || !finite(d)) {
+        throw DictionaryError(at, "'displacement' of body '" + name + "': point " +
+                                      std::to_string(p) + " is not finite");
+      }
+      if (p > 0 && !(t > std::get<0>(settings.displacement[p - 1]))) {
+        throw DictionaryError(at, "'displacement' of body '" + name + "': the times must rise; "
+                                      "point " + std::to_string(p) + " (t = " +
+                                      std::to_string(t) + " s) does not follow point " +
+                                      std::to_string(p - 1));
+      }
+    }
+    return settings;
+  }
+  if (body.found("displacement")) {
+    throw DictionaryError(body.location("displacement"),
+                          "'displacement' of body '" + name + "' needs motion prescribed");
+  }
+  if (body.found("translation")) {
+    Vector axis = Vector::Zero();
+    const std::string word = wordOrVector(body, "translation", {"free", "locked"}, axis);
+    if (word == "locked") {
+      settings.translation = RigidBodySettings::Translation::locked;
+    } else if (word.empty()) {
+      if (!finite(axis) || !(axis.norm() > 0)) {
+        throw DictionaryError(body.location("translation"),
+                              "'translation' of body '" + name +
+                                  "': the axis must be a non-zero vector");
+      }
+      settings.translation = RigidBodySettings::Translation::axis;
+      settings.axis = axis.normalized();
+    }
+  }
+  settings.rotationLocked =
+      body.getChoiceOrDefault("rotation", {"free", "locked"}, "free") == "locked";
+  if (body.found("releaseTime")) settings.releaseTime = body.get<double>("releaseTime", time);
+  if (body.found("endStop")) {
+    const Vector stop = body.get<Vector>("endStop", length);
+    if (!finite(stop) || !(stop.norm() > 0)) {
+      throw DictionaryError(body.location("endStop"),
+                            "'endStop' of body '" + name +
+                                "' must be a non-zero travel of the centre (m)");
+    }
+    if (settings.translation == RigidBodySettings::Translation::axis &&
+        (stop - stop.dot(settings.axis) * settings.axis).norm() > 1e-9 * stop.norm()) {
+      throw DictionaryError(body.location("endStop"),
+                            "'endStop' of body '" + name +
+                                "' does not lie along its translation axis");
+    }
+    if (settings.translation == RigidBodySettings::Translation::locked) {
+      throw DictionaryError(body.location("endStop"),
+                            "'endStop' of body '" + name + "': its translation is locked");
+    }
+    settings.endStop = stop;
+  }
+  if (body.found("appliedForce")) {
+    settings.appliedForce = body.get<Vector>("appliedForce", forceUnit);
+    if (!finite(settings.appliedForce)) {
+      throw DictionaryError(body.location("appliedForce"),
+                            "'appliedForce' of body '" + name + "' is not finite");
+    }
+  }
+  return settings;
+}
+}  // namespace
+
+BodySetup readBodySetup(const CaseFolder& caseFolder) {
+  BodySetup setup;
+  const auto file = caseFolder.constantFile("dynamicBodies");
+  if (!std::filesystem::exists(file)) return setup;
+  const Dictionary bodies = Dictionary::read(file);
+  std::set<std::string> clouds;
+  for (const std::string& name : bodies.keys()) {
+    if (!bodies.isDict(name)) {
+      throw DictionaryError(bodies.location(name),
+                            "'" + name + "' in " + bodies.name() +
+                                " is not a body: each body is a sub-dictionary { cloud ...; }");
+    }
+    const Dictionary& body = bodies.subDict(name);
+    setup.bodies.push_back(readBody(body, name));
+    setup.declaredAt[name] = body.location();
+    if (!clouds.insert(setup.bodies.back().cloud).second) {
+      throw DictionaryError(body.location(), "body '" + name + "' moves cloud '" +
+                                                 setup.bodies.back().cloud +
+                                                 "', which another body moves already");
+    }
+  }
+  return setup;
+}
+
+std::string bodyStateFile(const std::string& timeName,
+                          const std::vector<const RigidBody*>& bodies) {
+  std::string text =
+      "FoamFile\n{\n    version     2.0;\n    format      ascii;\n    class       dictionary;\n"
+      "    location    \"" +
+      timeName + "/uniform\";\n    object      dynamicBodies;\n}\n\n";
+  for (const RigidBody* body : bodies) text += body->stateDictionary() + '\n';
+  return text;
+}
+
+}  // namespace sphcast

@@ -1,0 +1,176 @@
+// The rigid bodies of constant/dynamicBodies in the time loop: their clouds, their set-up and
+// restart, their phases beside the flow's, their state in uniform/ and their history.
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <ostream>
+#include <sstream>
+
+#include "core/Error.h"
+#include "io/VtpCloud.h"
+#include "solver/CastingSolver.h"
+
+namespace sphcast {
+
+// A body's cloud is taken from the start time when it is there (a restart, or a mold carrying
+// heat), else from constant/particles: from then on it is written to every time folder, since
+// it moves. It must be one of the flow's walls.
+void CastingSolver::loadBodyClouds() {
+  for (const RigidBodySettings& body : bodySetup_.bodies) {
+    const SourceLocation& at = bodySetup_.declaredAt.at(body.name);
+    if (!flowSetup_.enabled) {
+      throw DictionaryError(at, "body '" + body.name +
+                                    "' moves under the fluid's load, but constant/physicsModels "
+                                    "has no flow");
+    }
+    const auto& walls = flowSetup_.wallClouds;
+    if (std::find(walls.begin(), walls.end(), body.cloud) == walls.end()) {
+      throw DictionaryError(at, "body '" + body.name + "' moves cloud '" + body.cloud +
+                                    "', which is not one of the flow's walls (constant/"
+                                    "physicsModels, flow/walls)");
+    }
+    if (findCloud(body.cloud)) continue;
+    const auto file = caseFolder_.constant() / "particles" / (body.cloud + ".vtp");
+    if (!std::filesystem::exists(file)) {
+      throw DictionaryError(at, "the cloud '" + body.cloud + "' of body '" + body.name +
+                                    "' is neither in time " + time_.startTimeName() +
+                                    " nor in constant/particles (run particleizeMold)");
+    }
+    clouds_.push_back(readCloudVtp(file, body.cloud));
+    info() << "Cloud " << body.cloud << ": from constant/particles (a rigid body: written from "
+           << "now on)\n";
+  }
+}
+
+// The bodies over the flow's walls; a restart reads their state from uniform/dynamicBodies.
+void CastingSolver::setUpBodies() {
+  const auto stateFile = caseFolder_.root() / time_.startTimeName() / "uniform" / "dynamicBodies";
+  std::optional<Dictionary> state;
+  if (std::filesystem::exists(stateFile)) state = Dictionary::read(stateFile);
+  for (const RigidBodySettings& settings : bodySetup_.bodies) {
+    ParticleCloud& cloud = cloudNamed(settings.cloud);
+    const bool hadRestPositions = cloud.hasVectorField("restPosition");
+    auto body = std::make_unique<RigidBody>(settings, cloud, gravity_);
+    if (state && state->found(settings.name)) {
+      body->readState(state->subDict(settings.name), time_.value());
+    } else if (hadRestPositions) {
+      throw Error("cloud '" + cloud.name() + "' of time " + time_.startTimeName() +
+                  " has moved as body '" + settings.name + "', but " + stateFile.string() +
+                  " has no state for it");
+    }
+    neighbourhood_->addCloud(cloud, Neighbourhood::Motion::rigid);
+    flow_->measureLoadOn(cloud);
+    if (std::find(evolving_.begin(), evolving_.end(), &cloud) == evolving_.end()) {
+      evolving_.push_back(&cloud);
+      lastGood_.push_back(cloud);
+    }
+    const Eigen::IOFormat plain(Eigen::StreamPrecision, Eigen::DontAlignCols, " ", " ");
+    info() << "Body " << settings.name << ": cloud " << cloud.name() << " (" << cloud.size()
+           << " particles), mass " << body->mass() << " kg, centre ("
+           << body->centre().transpose().format(plain) << "), ";
+    if (settings.prescribed()) {
+      info() << "prescribed displacement (" << settings.displacement.size() << " points)\n";
+    } else {
+      switch (settings.translation) {
+        case RigidBodySettings::Translation::free:
+          info() << "translation free";
+          break;
+        case RigidBodySettings::Translation::axis:
+          info() << "translation along (" << settings.axis.transpose().format(plain) << ")";
+          break;
+        case RigidBodySettings::Translation::locked:
+          info() << "translation locked";
+          break;
+      }
+      info() << ", rotation " << (settings.rotationLocked ? "locked" : "free");
+      if (settings.releaseTime > 0) info() << ", held until t = " << settings.releaseTime << " s";
+      if (settings.endStop) {
+        info() << ", end stop at a travel of (" << settings.endStop->transpose().format(plain)
+               << ") (hard: no rebound)";
+      }
+      if (!settings.appliedForce.isZero(0)) {
+        info() << ", applied force (" << settings.appliedForce.transpose().format(plain) << ") N";
+      }
+      info() << '\n';
+    }
+    bodies_.push_back(std::move(body));
+  }
+  if (!bodies_.empty()) {
+    info() << "    bodies' history: postProcessing/dynamicBodies/" << time_.startTimeName()
+           << "/<body>.dat (every step)\n";
+  }
+}
+
+void CastingSolver::driftBodies(double deltaT) {
+  for (auto& body : bodies_) body->kickAndDrift(deltaT, time_.value());
+}
+
+void CastingSolver::pushBodiesByClearance(double deltaT) {
+  for (auto& body : bodies_) {
+    const WallLoad& load = flow_->wallLoad(body->cloud());
+    body->takeImpulse(load.clearanceImpulse, load.clearanceAngularImpulse, deltaT,
+                      time_.value());
+  }
+}
+
+void CastingSolver::kickBodies(double deltaT) {
+  for (auto& body : bodies_) {
+    const WallLoad& load = flow_->wallLoad(body->cloud());
+    body->setLoadsAndKick(load.force, load.torque, deltaT, time_.value());
+  }
+}
+
+std::vector<UniformFile> CastingSolver::bodyStateFiles(const std::string& timeName) const {
+  if (bodies_.empty()) return {};
+  std::vector<const RigidBody*> bodies;
+  for (const auto& body : bodies_) bodies.push_back(body.get());
+  return {{"dynamicBodies", bodyStateFile(timeName, bodies)}};
+}
+
+// A row per step of every body: time, displacement of the centre, velocity, the fluid's force,
+// the total force, whether at the end stop (flushed: a killed run keeps its rows).
+void CastingSolver::writeBodyHistory() {
+  if (bodies_.empty()) return;
+  if (bodyHistory_.empty()) {
+    const auto folder =
+        caseFolder_.root() / "postProcessing" / "dynamicBodies" / time_.startTimeName();
+    std::filesystem::create_directories(folder);
+    for (const auto& body : bodies_) {
+      auto& file = bodyHistory_.emplace_back(
+          std::make_unique<std::ofstream>(folder / (body->settings().name + ".dat")));
+      char startLine[64];
+      std::snprintf(startLine, sizeof startLine, "# startTime %.17g\n", time_.startValue());
+      *file << startLine
+            << "# time displacement(x y z) m  velocity(x y z) m/s  fluidForce(x y z) N  "
+               "force(x y z) N  atEndStop\n";
+    }
+  }
+  for (std::size_t b = 0; b < bodies_.size(); ++b) {
+    const RigidBody& body = *bodies_[b];
+    char row[512];
+    const Vector d = body.displacement(), v = body.velocity(), f = body.fluidForce(),
+                 total = body.force();
+    std::snprintf(row, sizeof row,
+                  "%.10g  %.10g %.10g %.10g  %.10g %.10g %.10g  %.10g %.10g %.10g  %.10g %.10g "
+                  "%.10g  %d\n",
+                  time_.value(), d[0], d[1], d[2], v[0], v[1], v[2], f[0], f[1], f[2], total[0],
+                  total[1], total[2], body.atEndStop() ? 1 : 0);
+    *bodyHistory_[b] << row << std::flush;
+  }
+}
+
+void CastingSolver::logBodies() {
+  for (const auto& body : bodies_) {
+    std::ostringstream line;
+    line.precision(6);
+    const Eigen::IOFormat plain(Eigen::StreamPrecision, Eigen::DontAlignCols, " ", " ");
+    line << "Body " << body->settings().name << ": travel ("
+         << body->displacement().transpose().format(plain) << ") m  velocity ("
+         << body->velocity().transpose().format(plain) << ") m/s  fluid force ("
+         << body->fluidForce().transpose().format(plain) << ") N"
+         << (body->atEndStop() ? "  at the end stop" : "") << '\n';
+    info() << line.str();
+  }
+}
+
+}  // namespace sphcast
