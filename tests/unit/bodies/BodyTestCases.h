@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 #include "particles/ParticleCloud.h"
 
@@ -11,8 +12,9 @@ namespace sphcast::testing {
 // (2D: one layer at z = 0, nz = 1 and depth `dx` per particle's volume dx^2). Each particle's
 // normal points out of the body through its nearest face, its wallDistance is its depth behind
 // that face, as particleizeMold writes a filled volume.
-inline ParticleCloud boxBody(int nx, int ny, int nz, Real dx, const Vector& lower, bool plane) {
-  ParticleCloud body("body");
+inline ParticleCloud boxBody(int nx, int ny, int nz, Real dx, const Vector& lower, bool plane,
+                             const std::string& name = "body") {
+  ParticleCloud body(name);
   body.addScalarField("volume");
   body.addVectorField("normal");
   body.addScalarField("wallDistance");

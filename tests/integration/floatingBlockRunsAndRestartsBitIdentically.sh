@@ -1,0 +1,70 @@
+#!/bin/bash
+# A rigid body through the whole tool chain: particleizeMold fills a block (mode volume) beside
+# the tank's shell, constant/dynamicBodies makes it a body of half the water's density, held for
+# 0.02 s, sliding along z; it falls into the water and floats. Its state is in every time
+# folder's uniform/dynamicBodies, its history in postProcessing/dynamicBodies, and a run stopped
+# at 0.1 s and restarted writes the uninterrupted run's 0.15 and 0.2 byte for byte (block.vtp and
+# the body's state too). Errors in constant/dynamicBodies name the file, the line and the key.
+. "$SPHCAST_TEST_TOOLS"
+coarseWaterTank "$scratch/whole"  # dx = 10 mm: 500 water particles, the water's surface at 0.05
+cat > constant/geometry/block.geo <<'GEO'
+SetFactory("OpenCASCADE");
+Box(1) = {0.03, 0.03, 0.07, 0.04, 0.04, 0.02};
+Physical Volume("block") = {1};
+GEO
+sed -i 's/^geometry .*/geometry ("tank.geo" "block.geo");/' system/particleizeMoldDict
+sed -i 's/^\( *tankWall { cloud tank; type fixedWall; mode shell; }\)/\1\n    block { cloud block; type rigidBody; mode volume; }/' system/particleizeMoldDict
+sed -i 's/walls *(tank);/walls (tank block);/' constant/physicsModels
+cat > constant/dynamicBodies <<'DICT'
+FoamFile { version 2.0; format ascii; class dictionary; object dynamicBodies; }
+block
+{
+    density         500;
+    translation     (0 0 1);
+    rotation        locked;
+    releaseTime     0.02;
+}
+DICT
+particleizeMold > log.particleizeMold 2>&1 || fail "particleizeMold: $(tail -5 log.particleizeMold)"
+setCastFields > log.setCastFields 2>&1 || fail "setCastFields: $(tail -5 log.setCastFields)"
+cp -r "$scratch/whole" "$scratch/stopped"
+cp -r "$scratch/whole" "$scratch/bad"
+
+sphCastFoam > log.sphCastFoam 2>&1 || fail "sphCastFoam: $(tail -5 log.sphCastFoam)"
+grep -q "^Body block: cloud block (32 particles), mass 0.016 kg" log.sphCastFoam ||
+    fail "no body line: $(grep -m1 '^Body' log.sphCastFoam)"
+for t in 0 0.1 0.2; do
+    [ -f "$t/block.vtp" ] || fail "time $t has no block.vtp"
+    grep -q "^ *displacement" "$t/uniform/dynamicBodies" || fail "time $t has no body state"
+done
+history=postProcessing/dynamicBodies/0/block.dat
+[ -f "$history" ] || fail "no $history"
+# held to 0.02 s, then it falls 0.02 m onto the water (0.064 s) and floats: density 500 gives a
+# draft of half its 0.02 m height, a displacement of -0.03 at rest; it never reaches the floor
+awk '!/^#/ && $1 < 0.0199 && $4 != 0 { bad = 1 } END { exit bad }' "$history" ||
+    fail "the block moved before its release"
+awk '!/^#/ && ($2 != 0 || $3 != 0) { bad = 1 } END { exit bad }' "$history" ||
+    fail "the block left its axis"
+awk '!/^#/ { if ($4 < lowest) lowest = $4; last = $4 }
+     END { printf "lowest %.4f, last %.4f\n", lowest, last; exit !(lowest > -0.06 && last < -0.015) }' \
+    "$history" > depth.txt || fail "the block did not float: $(cat depth.txt)"
+
+cd "$scratch/stopped"
+setEntry system/controlDict endTime 0.1
+sphCastFoam > log.1 2>&1 || fail "first part: $(tail -5 log.1)"
+setEntry system/controlDict endTime 0.2
+sphCastFoam > log.2 2>&1 || fail "restart: $(tail -5 log.2)"
+for t in 0.15 0.2; do
+    sameTimeFolder "$scratch/whole/$t" "$t" || fail "time $t differs from the uninterrupted run"
+done
+
+cd "$scratch/bad"
+sed -i 's/^block$/blocks/' constant/dynamicBodies
+sphCastFoam > log.bad 2>&1 && fail "a body of a cloud that is no wall ran"
+grep -q "dynamicBodies:2:.*body 'blocks' moves cloud 'blocks', which is not one of the flow's walls" log.bad ||
+    fail "the error does not name the body: $(grep -m1 -i error log.bad)"
+sed -i 's/^blocks$/block/; s/density *500;/density 500; mass 0.1;/' constant/dynamicBodies
+sphCastFoam > log.bad 2>&1 && fail "a body with mass and density ran"
+grep -q "needs either 'mass' (kg) or 'density'" log.bad || fail "mass and density: $(grep -m1 -i error log.bad)"
+[ ! -d 0.05 ] || fail "a refused run wrote a time"
+pass "floating block: held, falls, floats at $(cat "$scratch/whole/depth.txt"); restart bit for bit; bad bodies refused"
