@@ -30,7 +30,8 @@ RigidBody::RigidBody(RigidBodySettings settings, ParticleCloud& cloud, const Vec
   centre_ = startCentre_;
   // until the first loads (setLoadsAndKick with dt 0 at the start): gravity and the press
   force_ = static_cast<Real>(mass_) * gravity_ + settings_.appliedForce;
-  acceleration_ = constrained(force_ / static_cast<Real>(mass_));
+  // a driven body's acceleration is the table's: zero between its points
+  if (!settings_.prescribed()) acceleration_ = constrained(force_ / static_cast<Real>(mass_));
 }
 
 // Uniform density over the particles' volumes (each particle a cube of its volume for its own
