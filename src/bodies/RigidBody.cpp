@@ -63,8 +63,8 @@ void RigidBody::computeMassProperties() {
     const Vector d = rest[k] - startCentre_;
     const Real m = density * volume[k];
     const Real own = m * std::pow(volume[k], Real(2) / 3) / 6;  // a cube's about its centre
-    inertia += m * (d.squaredNorm() * Matrix3::Identity() - d * d.transpose()) +
-               own * Matrix3::Identity();
+    inertia +=
+        m * (d.squaredNorm() * Matrix3::Identity() - d * d.transpose()) + own * Matrix3::Identity();
   }
   const Eigen::SelfAdjointEigenSolver<Matrix3> principal(inertia);
   principalInertia_ = principal.eigenvalues();
@@ -202,8 +202,8 @@ void RigidBody::takeImpulse(const Vector& impulse, const Vector& angularImpulse,
   updateParticleVelocities(false);
 }
 
-void RigidBody::setLoadsAndKick(const Vector& fluidForce, const Vector& fluidTorque,
-                                double deltaT, double time) {
+void RigidBody::setLoadsAndKick(const Vector& fluidForce, const Vector& fluidTorque, double deltaT,
+                                double time) {
   const Real dt = static_cast<Real>(deltaT);
   fluidForce_ = fluidForce;
   force_ = fluidForce + static_cast<Real>(mass_) * gravity_ + settings_.appliedForce;

@@ -94,8 +94,7 @@ class RigidBody {
   void kickAndDrift(double deltaT, double timeAfter);
   // The wall clearance's impulse (N s; angular, N m s about the origin), taken at once (by the
   // body unless it is held or driven) in the step of deltaT ending at `time`.
-  void takeImpulse(const Vector& impulse, const Vector& angularImpulse, double deltaT,
-                   double time);
+  void takeImpulse(const Vector& impulse, const Vector& angularImpulse, double deltaT, double time);
   // The loads at the new positions (fluid force, torque about the origin) and the second kick
   // of the step of deltaT ending at `time`. At the start (deltaT 0) it sets the acceleration the
   // first step's kick uses.
@@ -125,8 +124,8 @@ class RigidBody {
   ParticleCloud& cloud_;
   Vector gravity_;
   double mass_ = 0;
-  Vector startCentre_ = Vector::Zero();  // the centre of mass at the rest positions
-  Vector principalInertia_ = Vector::Zero();  // about the centre, in the body's frame
+  Vector startCentre_ = Vector::Zero();          // the centre of mass at the rest positions
+  Vector principalInertia_ = Vector::Zero();     // about the centre, in the body's frame
   Matrix3 principalAxes_ = Matrix3::Identity();  // columns: the body frame's principal axes
 
   Vector centre_ = Vector::Zero();

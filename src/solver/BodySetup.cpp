@@ -48,8 +48,8 @@ RigidBodySettings readBody(const Dictionary& body, const std::string& name) {
   auto positive = [&](const char* key, const Dimensions& unit) {
     const double value = body.get<double>(key, unit);
     if (!(value > 0) || !std::isfinite(value)) {
-      throw DictionaryError(body.location(key), std::string("'") + key + "' of body '" + name +
-                                                    "' must be positive");
+      throw DictionaryError(body.location(key),
+                            std::string("'") + key + "' of body '" + name + "' must be positive");
     }
     return value;
   };
@@ -87,10 +87,11 @@ RigidBodySettings readBody(const Dictionary& body, const std::string& name) {
                                       std::to_string(p) + " is not finite");
       }
       if (p > 0 && !(t > std::get<0>(settings.displacement[p - 1]))) {
-        throw DictionaryError(at, "'displacement' of body '" + name + "': the times must rise; "
-                                      "point " + std::to_string(p) + " (t = " +
-                                      std::to_string(t) + " s) does not follow point " +
-                                      std::to_string(p - 1));
+        throw DictionaryError(at, "'displacement' of body '" + name +
+                                      "': the times must rise; "
+                                      "point " +
+                                      std::to_string(p) + " (t = " + std::to_string(t) +
+                                      " s) does not follow point " + std::to_string(p - 1));
       }
     }
     return settings;
@@ -106,9 +107,9 @@ RigidBodySettings readBody(const Dictionary& body, const std::string& name) {
       settings.translation = RigidBodySettings::Translation::locked;
     } else if (word.empty()) {
       if (!finite(axis) || !(axis.norm() > 0)) {
-        throw DictionaryError(body.location("translation"),
-                              "'translation' of body '" + name +
-                                  "': the axis must be a non-zero vector");
+        throw DictionaryError(
+            body.location("translation"),
+            "'translation' of body '" + name + "': the axis must be a non-zero vector");
       }
       settings.translation = RigidBodySettings::Translation::axis;
       settings.axis = axis.normalized();
@@ -120,15 +121,15 @@ RigidBodySettings readBody(const Dictionary& body, const std::string& name) {
   if (body.found("endStop")) {
     const Vector stop = body.get<Vector>("endStop", length);
     if (!finite(stop) || !(stop.norm() > 0)) {
-      throw DictionaryError(body.location("endStop"),
-                            "'endStop' of body '" + name +
-                                "' must be a non-zero travel of the centre (m)");
+      throw DictionaryError(
+          body.location("endStop"),
+          "'endStop' of body '" + name + "' must be a non-zero travel of the centre (m)");
     }
     if (settings.translation == RigidBodySettings::Translation::axis &&
         (stop - stop.dot(settings.axis) * settings.axis).norm() > 1e-9 * stop.norm()) {
-      throw DictionaryError(body.location("endStop"),
-                            "'endStop' of body '" + name +
-                                "' does not lie along its translation axis");
+      throw DictionaryError(
+          body.location("endStop"),
+          "'endStop' of body '" + name + "' does not lie along its translation axis");
     }
     if (settings.translation == RigidBodySettings::Translation::locked) {
       throw DictionaryError(body.location("endStop"),

@@ -108,8 +108,7 @@ void CastingSolver::driftBodies(double deltaT) {
 void CastingSolver::pushBodiesByClearance(double deltaT) {
   for (auto& body : bodies_) {
     const WallLoad& load = flow_->wallLoad(body->cloud());
-    body->takeImpulse(load.clearanceImpulse, load.clearanceAngularImpulse, deltaT,
-                      time_.value());
+    body->takeImpulse(load.clearanceImpulse, load.clearanceAngularImpulse, deltaT, time_.value());
   }
 }
 

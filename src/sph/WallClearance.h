@@ -26,8 +26,9 @@ struct WallClearanceReport {
 // This pass is the geometric guarantee behind the pressure: every fluid particle closer than
 // `clearance` to the surface (WallSurfaceDistance) is moved back along the wall normal to the
 // clearance, and its velocity towards the wall, relative to the wall's (a moving mold's), is
-// removed (a perfectly inelastic contact; the tangential velocity is kept). Gather over the fluid particles: each writes
-// only its own position and velocity, the result does not depend on the thread count.
+// removed (a perfectly inelastic contact; the tangential velocity is kept). Gather over the
+// fluid particles: each writes only its own position and velocity, the result does not depend
+// on the thread count.
 // Particles with held[i] != 0 (frozen metal, when `held` is not empty) are left where they are:
 // their surface distance, estimated from pair lists that change from step to step, would
 // otherwise nudge them by round-off-sized amounts.

@@ -23,7 +23,8 @@ const Vector gravity(0, -9.81, 0);
 
 struct DropResult {
   double largestMomentumError = 0;  // per step, over |dt (M_f + M_b) g|
-  double largestImpulse = 0;  // the largest step impulse of the body's fluid load, over its weight's
+  double largestImpulse =
+      0;  // the largest step impulse of the body's fluid load, over its weight's
   Vector centre = Vector::Zero();
   Vector bodyVelocity = Vector::Zero();
   std::size_t clearanceContacts = 0;
@@ -42,8 +43,7 @@ DropResult dropBodyOntoPool(int steps) {
   auto fluid = testing::fluidBlock2D(columns, rows, dx, Vector::Zero(), 1000, 0.01);
   auto tank = testing::tankWalls2D(columns, rows + 14, dx);
   // 8 x 4 cells, its bottom 1.5 dx above the pool, off centre so that it also turns
-  auto block =
-      testing::boxBody(8, 4, 1, dx, Vector(9 * dx, (rows + 1.5) * dx, 0), true, "block");
+  auto block = testing::boxBody(8, 4, 1, dx, Vector(9 * dx, (rows + 1.5) * dx, 0), true, "block");
   FlowSettings settings;
   settings.dimension = 2;
   settings.supportRadius = 3 * dx;
@@ -91,10 +91,10 @@ DropResult dropBodyOntoPool(int steps) {
     const double scale = dt * (fluidMass + body.mass()) * gravity.norm();
     result.largestMomentumError =
         std::max(result.largestMomentumError, (after - before - external).norm() / scale);
-    result.largestImpulse = std::max(
-        result.largestImpulse,
-        (0.5 * dt * (bodyBefore + onBody.force) + onBody.clearanceImpulse).norm() /
-            (dt * body.mass() * gravity.norm()));
+    result.largestImpulse =
+        std::max(result.largestImpulse,
+                 (0.5 * dt * (bodyBefore + onBody.force) + onBody.clearanceImpulse).norm() /
+                     (dt * body.mass() * gravity.norm()));
   }
   result.centre = body.centre();
   result.bodyVelocity = body.velocity();

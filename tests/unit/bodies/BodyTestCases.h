@@ -23,14 +23,12 @@ inline ParticleCloud boxBody(int nx, int ny, int nz, Real dx, const Vector& lowe
       for (int i = 0; i < nx; ++i) {
         const std::size_t p = body.size();
         body.resize(p + 1);
-        body.positions()[p] =
-            lower + Vector((i + Real(0.5)) * dx, (j + Real(0.5)) * dx,
-                           plane ? Real(0) : (k + Real(0.5)) * dx);
+        body.positions()[p] = lower + Vector((i + Real(0.5)) * dx, (j + Real(0.5)) * dx,
+                                             plane ? Real(0) : (k + Real(0.5)) * dx);
         // the nearest face: distance in cells to each of the faces
-        const int toFace[6] = {i, nx - 1 - i, j, ny - 1 - j, plane ? 1 << 20 : k,
-                               plane ? 1 << 20 : nz - 1 - k};
-        const int nearest =
-            static_cast<int>(std::min_element(toFace, toFace + 6) - toFace);
+        const int toFace[6] = {i,          nx - 1 - i,          j,
+                               ny - 1 - j, plane ? 1 << 20 : k, plane ? 1 << 20 : nz - 1 - k};
+        const int nearest = static_cast<int>(std::min_element(toFace, toFace + 6) - toFace);
         Vector n = Vector::Zero();
         n[nearest / 2] = nearest % 2 == 0 ? -1 : 1;
         body.scalarField("volume")[p] = plane ? dx * dx : dx * dx * dx;

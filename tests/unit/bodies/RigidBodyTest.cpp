@@ -152,8 +152,8 @@ TEST(RigidBody, HeldUntilReleaseThenFalls) {
 TEST(RigidBody, PrescribedDisplacementIsFollowedAndItsSlopeIsTheVelocity) {
   auto cloud = testing::boxBody(3, 3, 3, dx, Vector::Zero(), false);
   RigidBodySettings settings = densityBody();
-  settings.displacement = {{0.0, Vector::Zero()}, {0.1, Vector(0, 0, -0.01)},
-                           {0.2, Vector(0, 0, -0.01)}};
+  settings.displacement = {
+      {0.0, Vector::Zero()}, {0.1, Vector(0, 0, -0.01)}, {0.2, Vector(0, 0, -0.01)}};
   RigidBody body(settings, cloud, Vector(0, 0, -9.81));
   double time = 0;
   stepWithoutFluid(body, 0.004, 10, time);  // 0.04 s
@@ -176,7 +176,9 @@ TEST(RigidBody, TorqueFreeSpinConservesAngularMomentumAndTurnsTheParticles) {
   momentum << "(0 0 " << omega * inertia << ")";
   const Dictionary state = Dictionary::parse(
       "body { centreOfMass (0.003 0.003 0.003); orientation (1 0 0 0); velocity (0 0 0); "
-      "angularMomentum " + momentum.str() + "; acceleration (0 0 0); torque (0 0 0); "
+      "angularMomentum " +
+      momentum.str() +
+      "; acceleration (0 0 0); torque (0 0 0); "
       "force (0 0 0); fluidForce (0 0 0); atEndStop no; }");
   body.readState(state.subDict("body"), 0);
   double time = 0;

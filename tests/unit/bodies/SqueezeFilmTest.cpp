@@ -32,8 +32,8 @@ struct GapForce {
 
 std::vector<GapForce> squeezePlate(const std::vector<double>& gaps) {
   const int first = (columns - plateColumns) / 2;
-  ParticleCloud fluid = testing::fluidBlock2D(columns, liquidRows, dx, Vector::Zero(), density,
-                                              viscosity);
+  ParticleCloud fluid =
+      testing::fluidBlock2D(columns, liquidRows, dx, Vector::Zero(), density, viscosity);
   {  // the plate's cells hold no liquid (the fields are uniform: the first particle's serve)
     std::size_t count = 0;
     for (std::size_t i = 0; i < fluid.size(); ++i) {
@@ -47,8 +47,8 @@ std::vector<GapForce> squeezePlate(const std::vector<double>& gaps) {
     fluid.resize(count);
   }
   auto tank = testing::tankWalls2D(columns, liquidRows + 8, dx);
-  auto plate = testing::boxBody(plateColumns, plateLayers, 1, dx, Vector(first * dx, startGap * dx, 0),
-                                true, "plate");
+  auto plate = testing::boxBody(plateColumns, plateLayers, 1, dx,
+                                Vector(first * dx, startGap * dx, 0), true, "plate");
   const double travel = (startGap - 2.5) * dx;
   RigidBodySettings settings;
   settings.name = settings.cloud = "plate";
