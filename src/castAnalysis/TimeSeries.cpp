@@ -16,6 +16,15 @@
 namespace sphcast {
 
 namespace {
+// The energy a pouring inlet brought into the cloud (J): part of the books' change.
+double inflowEnergy(const ParticleCloud& cloud) {
+  const auto inflow = cloud.attributes().find("inflowEnergy");
+  return inflow == cloud.attributes().end() ? 0.0 : inflow->second;
+}
+}  // namespace
+
+
+namespace {
 
 constexpr double nan = std::numeric_limits<double>::quiet_NaN();
 
@@ -140,7 +149,7 @@ std::string TimeSeries::csvRow(double time, const ParticleCloud& cloud) {
     }
     if (const auto start = cloud.attributes().find("internalEnergyAtStart");
         start != cloud.attributes().end()) {
-      change = internal - start->second;
+      change = internal - start->second - inflowEnergy(cloud);
     }
   }
   char row[768];
@@ -165,8 +174,8 @@ std::string TimeSeries::energyBalanceRow(const WrittenTime& time) {
     for (std::size_t i = 0; i < cloud.size(); ++i) {
       internal += double(cloud.scalarField("mass")[i]) * double(cloud.scalarField("u")[i]);
     }
-    change += internal - start->second;
-    scale += std::abs(start->second);
+    change += internal - start->second - inflowEnergy(cloud);
+    scale += std::abs(start->second) + inflowEnergy(cloud);
     for (const auto& [key, value] : cloud.attributes()) {
       if (key.rfind("heatLost.", 0) == 0) lost += value;
     }

@@ -543,60 +543,65 @@ ParticleCloud fillCloud(const CloudPlan& plan, double spacing, int dimension,
   }
   info() << "\n";
 
-  Vector lower = centres.front(), upper = centres.front();
-  for (const Vector& c : centres) {
-    lower = lower.cwiseMin(c);
-    upper = upper.cwiseMax(c);
-  }
-  if (plan.relaxationIterations > 0 && (upper - lower).minCoeff() <= Real(0)) {
-    throw DictionaryError(plan.relaxationAt,
-                          "cloud '" + plan.name +
-                              "' is one particle thick along an axis (a 2D case): the relaxation "
-                              "uses the 3D kernel; remove 'relaxation' for this cloud");
-  }
-  if (plan.relaxationIterations > 0) {
-    const double h = settings.supportRadius(spacing);
-    const auto margin = static_cast<std::int64_t>(std::ceil(h / spacing));
-    const auto beyond =
-        latticeBeyondFreeSurface(plan, spacing, margin, dimension, h, centres, mold);
-    const Vector reach = Vector::Constant(static_cast<Real>(h));
-    FixedNeighbours fixed = mold.within(lower - reach, upper + reach);
-    fixed.positions.insert(fixed.positions.end(), beyond.begin(), beyond.end());
-    fixed.volumes.insert(fixed.volumes.end(), beyond.size(), static_cast<Real>(dx3));
-    // The lattice beyond the free surface is kept at the clearance too: without it, metal next
-    // to the rim rose to the region's top, dx/2 under a fixed point (measured: nearest
-    // neighbour 0.52 dx on the open cone at 90,685 particles).
-    CellGrid beyondGrid(static_cast<Real>(mold.clearance()));
-    if (!beyond.empty()) beyondGrid.build(beyond);
-    NeighbourList nearBeyond;
-    // ... and no move brings a particle nearer a wall surface than the flow's clearance
-    const Real minimumGap = static_cast<Real>(wallClearanceInSpacings * spacing);
-    auto allowed = [&](const std::vector<Vector>& trial) {
-      std::vector<bool> ok = mold.clear(trial);
-      if (!beyond.empty()) nearBeyond.buildBetween(trial, beyond, beyondGrid);
-      const auto surfaces = mold.wallSurfaceDistances(trial, 1.5 * spacing);
-      for (std::size_t i = 0; i < trial.size(); ++i) {
-        ok[i] = ok[i] && (beyond.empty() || nearBeyond.of(i).empty()) &&
-                insideAnyRegion(plan, trial[i]) &&
-                (!surfaces[i].found || surfaces[i].distance >= minimumGap);
-      }
-      return ok;
-    };
-    const RelaxationSettings relaxation{plan.relaxationIterations, spacing, h, mold.clearance()};
-    info() << "Cloud " << plan.name << ": relaxing the packing, " << plan.relaxationIterations
-           << " iterations, h = " << h << " m, " << beyond.size()
-           << " fixed lattice points beyond the free surface\n";
-    const auto statistics = relaxPacking(centres, fixed, allowed, relaxation);
-    logPacking(plan.name, "before relaxation", statistics[0], spacing);
-    logPacking(plan.name, "after relaxation", statistics[1], spacing);
+  if (plan.regions.empty()) {
+    info() << "Cloud " << plan.name
+           << ": no regions: an empty cloud, for a pouring inlet (constant/inlets) to fill\n";
   } else {
-    // Spacing only: the nearest particle, metal or mold, within 2 dx.
-    const Vector reach = Vector::Constant(static_cast<Real>(2.0 * spacing));
-    const auto s = packingStatistics(centres, mold.within(lower - reach, upper + reach), spacing,
-                                     2.0 * spacing);
-    info() << "Cloud " << plan.name << ": nearest neighbour (metal or mold) min "
-           << s.nearestMin / spacing << " dx, mean " << s.nearestMean / spacing << " dx, max "
-           << s.nearestMax / spacing << " dx\n";
+    Vector lower = centres.front(), upper = centres.front();
+    for (const Vector& c : centres) {
+      lower = lower.cwiseMin(c);
+      upper = upper.cwiseMax(c);
+    }
+    if (plan.relaxationIterations > 0 && (upper - lower).minCoeff() <= Real(0)) {
+      throw DictionaryError(plan.relaxationAt,
+                            "cloud '" + plan.name +
+                                "' is one particle thick along an axis (a 2D case): the relaxation "
+                                "uses the 3D kernel; remove 'relaxation' for this cloud");
+    }
+    if (plan.relaxationIterations > 0) {
+      const double h = settings.supportRadius(spacing);
+      const auto margin = static_cast<std::int64_t>(std::ceil(h / spacing));
+      const auto beyond =
+          latticeBeyondFreeSurface(plan, spacing, margin, dimension, h, centres, mold);
+      const Vector reach = Vector::Constant(static_cast<Real>(h));
+      FixedNeighbours fixed = mold.within(lower - reach, upper + reach);
+      fixed.positions.insert(fixed.positions.end(), beyond.begin(), beyond.end());
+      fixed.volumes.insert(fixed.volumes.end(), beyond.size(), static_cast<Real>(dx3));
+      // The lattice beyond the free surface is kept at the clearance too: without it, metal next
+      // to the rim rose to the region's top, dx/2 under a fixed point (measured: nearest
+      // neighbour 0.52 dx on the open cone at 90,685 particles).
+      CellGrid beyondGrid(static_cast<Real>(mold.clearance()));
+      if (!beyond.empty()) beyondGrid.build(beyond);
+      NeighbourList nearBeyond;
+      // ... and no move brings a particle nearer a wall surface than the flow's clearance
+      const Real minimumGap = static_cast<Real>(wallClearanceInSpacings * spacing);
+      auto allowed = [&](const std::vector<Vector>& trial) {
+        std::vector<bool> ok = mold.clear(trial);
+        if (!beyond.empty()) nearBeyond.buildBetween(trial, beyond, beyondGrid);
+        const auto surfaces = mold.wallSurfaceDistances(trial, 1.5 * spacing);
+        for (std::size_t i = 0; i < trial.size(); ++i) {
+          ok[i] = ok[i] && (beyond.empty() || nearBeyond.of(i).empty()) &&
+                  insideAnyRegion(plan, trial[i]) &&
+                  (!surfaces[i].found || surfaces[i].distance >= minimumGap);
+        }
+        return ok;
+      };
+      const RelaxationSettings relaxation{plan.relaxationIterations, spacing, h, mold.clearance()};
+      info() << "Cloud " << plan.name << ": relaxing the packing, " << plan.relaxationIterations
+             << " iterations, h = " << h << " m, " << beyond.size()
+             << " fixed lattice points beyond the free surface\n";
+      const auto statistics = relaxPacking(centres, fixed, allowed, relaxation);
+      logPacking(plan.name, "before relaxation", statistics[0], spacing);
+      logPacking(plan.name, "after relaxation", statistics[1], spacing);
+    } else {
+      // Spacing only: the nearest particle, metal or mold, within 2 dx.
+      const Vector reach = Vector::Constant(static_cast<Real>(2.0 * spacing));
+      const auto s = packingStatistics(centres, mold.within(lower - reach, upper + reach), spacing,
+                                       2.0 * spacing);
+      info() << "Cloud " << plan.name << ": nearest neighbour (metal or mold) min "
+             << s.nearestMin / spacing << " dx, mean " << s.nearestMean / spacing << " dx, max "
+             << s.nearestMax / spacing << " dx\n";
+    }
   }
 
   ParticleCloud cloud(plan.name);

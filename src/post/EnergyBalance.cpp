@@ -52,9 +52,12 @@ void EnergyBalance::sample(double time) {
     const auto& u = cloud->scalarField("u");
     double energy = 0;
     for (std::size_t i = 0; i < u.size(); ++i) energy += double(mass[i]) * double(u[i]);
-    const double delta = energy - cloud->attributes().at("internalEnergyAtStart");
+    // a pouring inlet's metal brings its energy (inflowEnergy, PouringInlet.h)
+    const auto inflow = cloud->attributes().find("inflowEnergy");
+    const double brought = inflow == cloud->attributes().end() ? 0.0 : inflow->second;
+    const double delta = energy - cloud->attributes().at("internalEnergyAtStart") - brought;
     change += delta;
-    content += std::abs(cloud->attributes().at("internalEnergyAtStart"));
+    content += std::abs(cloud->attributes().at("internalEnergyAtStart")) + brought;
     row += formatSample(energy) + ' ';
     for (int p = 0; p < 3; ++p) {
       const auto found = cloud->attributes().find(std::string("heatLost.") + paths[p]);

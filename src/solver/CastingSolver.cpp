@@ -68,6 +68,7 @@ void CastingSolver::evolve(double deltaT) {
   if (flow_) {
     flow_->kickAndDrift(deltaT);
     driftBodies(deltaT);
+    pour();
   }
   if (heatThisStep) addWallTime(heatSeconds_, [&] { energy_->halfKick(heatDeltaT_); });
   // the search at the new positions (nothing moves without a flow), the quantities models share
@@ -79,6 +80,7 @@ void CastingSolver::evolve(double deltaT) {
   if (flow_) {
     flow_->computeRatesAndKick(deltaT);
     kickBodies(deltaT);
+    holdInletBuffers();
   }
   if (heatThisStep) {
     addWallTime(heatSeconds_, [&] {
@@ -146,9 +148,11 @@ void CastingSolver::evolveCooling(double deltaT) {
     }
     flow_->kickAndDrift(flowDeltaT);
     driftBodies(flowDeltaT);
+    pour();
     searchAndKeepClear(flowDeltaT);
     flow_->computeRatesAndKick(flowDeltaT);
     kickBodies(flowDeltaT);
+    holdInletBuffers();
     ++flowSubSteps_;
     lastFlowSubStep_ = flowDeltaT;
   }
@@ -221,7 +225,7 @@ void CastingSolver::writeResults() {
   std::vector<const ParticleCloud*> written;
   for (const ParticleCloud& cloud : clouds_) written.push_back(&cloud);
   writer_.setPurgeWrite(time_.settings().purgeWrite);
-  writer_.write(time_.state(), written, bodyStateFiles(time_.timeName()));
+  writer_.write(time_.state(), written, uniformStateFiles(time_.timeName()));
   info() << "Writing time " << time_.timeName() << std::endl;
 }
 
@@ -253,6 +257,10 @@ void CastingSolver::run() {
     lastGoodBodies_.resize(bodies_.size());
     for (std::size_t b = 0; b < bodies_.size(); ++b) {
       lastGoodBodies_[b] = bodies_[b]->stateDictionary();
+    }
+    lastGoodInlets_.resize(inlets_.size());
+    for (std::size_t n = 0; n < inlets_.size(); ++n) {
+      lastGoodInlets_[n] = inlets_[n]->stateDictionary();
     }
     time_.advance();
     ++stepsTaken_;

@@ -6,18 +6,20 @@
 #include <string>
 #include <vector>
 
+#include "bodies/RigidBody.h"
 #include "core/CaseFolder.h"
 #include "core/Log.h"
 #include "core/TimeControl.h"
+#include "inlets/PouringInlet.h"
+#include "io/TimeFolders.h"
 #include "particles/ParticleCloud.h"
 #include "post/FunctionObject.h"
-#include "bodies/RigidBody.h"
-#include "io/TimeFolders.h"
 #include "solver/BallisticMotion.h"
 #include "solver/BodySetup.h"
 #include "solver/CaseWriter.h"
 #include "solver/FlowSetup.h"
 #include "solver/HeatSetup.h"
+#include "solver/InletSetup.h"
 #include "solver/RunHealth.h"
 #include "solver/SolidificationSetup.h"
 #include "solver/SurfaceTensionSetup.h"
@@ -69,7 +71,14 @@ class CastingSolver {
   void driftBodies(double deltaT);
   void pushBodiesByClearance(double deltaT);
   void kickBodies(double deltaT);
-  std::vector<UniformFile> bodyStateFiles(const std::string& timeName) const;
+  // Each step's new metal from the inlets (after the drift), their buffers held (after the
+  // kick); CastingSolverInlets.cpp.
+  void setUpInlets();
+  void pour();
+  void holdInletBuffers();
+  void logInlets();
+  // <time>/uniform/dynamicBodies and uniform/inlets, as the case has them
+  std::vector<UniformFile> uniformStateFiles(const std::string& timeName) const;
   void writeBodyHistory();
   void logBodies();
   void updateCoolingMode();
@@ -111,6 +120,7 @@ class CastingSolver {
   SurfaceTensionSetup surfaceTensionSetup_;
   SolidificationSetup solidificationSetup_;
   BodySetup bodySetup_;
+  InletSetup inletSetup_;
   std::vector<ParticleCloud> clouds_;        // of the time folders: read, stepped, written
   std::vector<ParticleCloud> staticClouds_;  // of constant/particles: read only
   // The cell grids and pair lists of every model, built once per step (with flow or heat).
@@ -125,6 +135,8 @@ class CastingSolver {
   std::vector<std::unique_ptr<RigidBody>> bodies_;  // moving walls of the flow
   std::vector<std::string> lastGoodBodies_;         // their state before the step
   std::vector<std::unique_ptr<std::ofstream>> bodyHistory_;
+  std::vector<std::unique_ptr<PouringInlet>> inlets_;  // feed the fluid
+  std::vector<std::string> lastGoodInlets_;             // their state before the step
   bool exposedAreaRestored_ = false;              // read with a restart's clouds
   std::vector<const ParticleCloud*> wallClouds_;  // the flow's walls
   Domain domain_;

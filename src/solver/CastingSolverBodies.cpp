@@ -119,13 +119,6 @@ void CastingSolver::kickBodies(double deltaT) {
   }
 }
 
-std::vector<UniformFile> CastingSolver::bodyStateFiles(const std::string& timeName) const {
-  if (bodies_.empty()) return {};
-  std::vector<const RigidBody*> bodies;
-  for (const auto& body : bodies_) bodies.push_back(body.get());
-  return {{"dynamicBodies", bodyStateFile(timeName, bodies)}};
-}
-
 // A row per step of every body: time, displacement of the centre, velocity, the fluid's force,
 // the total force, whether at the end stop (flushed: a killed run keeps its rows).
 void CastingSolver::writeBodyHistory() {

@@ -143,10 +143,14 @@ void CastingSolver::stopWithLastGoodState(const TimeState& good, bool restoreSav
       const Dictionary state = Dictionary::parse(lastGoodBodies_[b], "dynamicBodies");
       bodies_[b]->readState(state.subDict(bodies_[b]->settings().name), good.value);
     }
+    for (std::size_t n = 0; n < inlets_.size() && n < lastGoodInlets_.size(); ++n) {
+      const Dictionary state = Dictionary::parse(lastGoodInlets_[n], "inlets");
+      inlets_[n]->readState(state.subDict(inlets_[n]->settings().name));
+    }
   }
   std::vector<const ParticleCloud*> written;
   for (const ParticleCloud& cloud : clouds_) written.push_back(&cloud);
-  writer_.write(good, written, bodyStateFiles(good.name));
+  writer_.write(good, written, uniformStateFiles(good.name));
   throw Error(failure + "The last good state, time " + good.name +
               ", is written (it passed every check); restart from it with a smaller maxCo or "
               "deltaT, a larger soundSpeed, or look for a gap in the walls there.");

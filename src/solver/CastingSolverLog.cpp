@@ -32,6 +32,7 @@ void CastingSolver::logStep(bool printBlock) {
     info() << line.str();
   }
   logBodies();
+  logInlets();
   if (energy_) logHeat();
   if (solidification_) logSolidification();
   info() << clock_.timesLine() << '\n'

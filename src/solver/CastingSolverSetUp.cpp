@@ -29,6 +29,8 @@ CastingSolver::CastingSolver(const CaseFolder& caseFolder)
       surfaceTensionSetup_(readSurfaceTensionSetup(caseFolder, flowSetup_)),
       solidificationSetup_(readSolidificationSetup(caseFolder, flowSetup_, heatSetup_)),
       bodySetup_(readBodySetup(caseFolder)),
+      inletSetup_(readInletSetup(caseFolder, flowSetup_.fluidCloud,
+                                 flowSetup_.enabled ? flowSetup_.settings.dimension : 3)),
       writer_(caseFolder, time_.settings().purgeWrite) {
   for (const std::string& repaired : repairedWrites_) {
     info() << "Repaired interrupted write: " << repaired << std::endl;
@@ -63,7 +65,7 @@ CastingSolver::CastingSolver(const CaseFolder& caseFolder)
     if (firstTime && fieldInventory(clouds_) != startFields) {
       std::vector<const ParticleCloud*> written;
       for (const ParticleCloud& cloud : clouds_) written.push_back(&cloud);
-      writer_.rewriteStart(time_.state(), written, bodyStateFiles(time_.startTimeName()));
+      writer_.rewriteStart(time_.state(), written, uniformStateFiles(time_.startTimeName()));
       info() << "    (time " << time_.startTimeName()
              << " written again with every cloud and field the run writes)\n";
     }
@@ -395,6 +397,7 @@ void CastingSolver::startModels() {
   if (exposedArea_ && !exposedAreaRestored_) exposedArea_->compute();
   if (flow_) flow_->start();
   if (!restarted) kickBodies(0.0);  // their acceleration under the start state's loads
+  if (flow_) setUpInlets();
   if (energy_) energy_->start();
   info() << "    neighbourhood: " << neighbourhood_->pairCount() << " pairs\n";
 }
