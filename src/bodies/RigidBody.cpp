@@ -234,6 +234,15 @@ void RigidBody::setLoadsAndKick(const Vector& fluidForce, const Vector& fluidTor
   updateParticleVelocities(false);
 }
 
+void RigidBody::pushBack(const Vector& displacement, const Vector& normal) {
+  if (settings_.prescribed()) return;  // the machine drives it
+  centre_ += constrained(displacement);
+  const Real into = velocity_.dot(normal);
+  if (into < 0) velocity_ -= constrained(into * normal);
+  placeParticles();
+  updateParticleVelocities(false);
+}
+
 double RigidBody::stableDeltaT(double spacing) const {
   const double a = acceleration_.norm();
   return a > 0 ? 0.25 * std::sqrt(spacing / a) : std::numeric_limits<double>::infinity();

@@ -101,6 +101,11 @@ class RigidBody {
   void setLoadsAndKick(const Vector& fluidForce, const Vector& fluidTorque, double deltaT,
                        double time);
 
+  // A contact with a mold (BodyWallContact.h): the centre moved by `displacement` (projected on
+  // the translation constraint) and the velocity into the mold (against its outward `normal`)
+  // removed; the particles placed again.
+  void pushBack(const Vector& displacement, const Vector& normal);
+
   // The largest step the body allows: 0.25 sqrt(dx / |a|) (the particles' acceleration limit).
   double stableDeltaT(double spacing) const;
 

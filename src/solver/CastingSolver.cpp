@@ -95,11 +95,12 @@ void CastingSolver::evolve(double deltaT) {
   }
 }
 
-// The search at the new positions, the fluid's first wall contacts, and the wall clearance with
-// its impulse on the bodies.
+// The search at the new positions, the fluid's first wall contacts, the bodies kept out of the
+// other molds, and the wall clearance with its impulse on the bodies.
 void CastingSolver::searchAndKeepClear(double deltaT) {
   addWallTime(searchSeconds_, [&] { neighbourhood_->update(); });
   if (fillTime_) fillTime_->record(*neighbourhood_, time_.value());
+  keepBodiesOutOfMolds();
   flow_->keepClearOfWalls();
   pushBodiesByClearance(deltaT);
 }

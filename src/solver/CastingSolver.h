@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "bodies/BodyWallContact.h"
 #include "bodies/RigidBody.h"
 #include "core/CaseFolder.h"
 #include "core/Log.h"
@@ -70,6 +71,7 @@ class CastingSolver {
   // and the second kick.
   void driftBodies(double deltaT);
   void pushBodiesByClearance(double deltaT);
+  void keepBodiesOutOfMolds();
   void kickBodies(double deltaT);
   // Each step's new metal from the inlets (after the drift), their buffers held (after the
   // kick); CastingSolverInlets.cpp.
@@ -133,6 +135,8 @@ class CastingSolver {
   std::unique_ptr<ExposedArea> exposedArea_;      // A_i, when a model reads it
   std::unique_ptr<FillTime> fillTime_;            // the fluid's first wall contact
   std::vector<std::unique_ptr<RigidBody>> bodies_;  // moving walls of the flow
+  std::vector<std::vector<const ParticleCloud*>> bodyMolds_;  // the other walls, per body
+  std::vector<BodyContact> bodyContacts_;                     // of the last step
   std::vector<std::string> lastGoodBodies_;         // their state before the step
   std::vector<std::unique_ptr<std::ofstream>> bodyHistory_;
   std::vector<std::unique_ptr<PouringInlet>> inlets_;  // feed the fluid

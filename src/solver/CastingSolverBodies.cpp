@@ -60,6 +60,14 @@ void CastingSolver::setUpBodies() {
     }
     neighbourhood_->addCloud(cloud, Neighbourhood::Motion::rigid);
     flow_->measureLoadOn(cloud);
+    std::vector<const ParticleCloud*> molds;  // it may not pass into the other walls
+    for (const ParticleCloud* wall : wallClouds_) {
+      if (wall == &cloud) continue;
+      neighbourhood_->requestPairs(cloud, *wall);
+      molds.push_back(wall);
+    }
+    bodyMolds_.push_back(molds);
+    bodyContacts_.emplace_back();
     if (std::find(evolving_.begin(), evolving_.end(), &cloud) == evolving_.end()) {
       evolving_.push_back(&cloud);
       lastGood_.push_back(cloud);
@@ -103,6 +111,15 @@ void CastingSolver::setUpBodies() {
 
 void CastingSolver::driftBodies(double deltaT) {
   for (auto& body : bodies_) body->kickAndDrift(deltaT, time_.value());
+}
+
+void CastingSolver::keepBodiesOutOfMolds() {
+  const double spacing = fluid_->attributes().at("spacing");
+  for (std::size_t b = 0; b < bodies_.size(); ++b) {
+    const auto molds = wallSurfaceViews(bodies_[b]->cloud(), bodyMolds_[b], *neighbourhood_);
+    bodyContacts_[b] = keepBodyOutOfMolds(*bodies_[b], molds, neighbourhood_->periodicBox(),
+                                          static_cast<Real>(spacing));
+  }
 }
 
 void CastingSolver::pushBodiesByClearance(double deltaT) {
@@ -152,16 +169,21 @@ void CastingSolver::writeBodyHistory() {
 }
 
 void CastingSolver::logBodies() {
-  for (const auto& body : bodies_) {
+  const Eigen::IOFormat plain(Eigen::StreamPrecision, Eigen::DontAlignCols, " ", " ");
+  for (std::size_t b = 0; b < bodies_.size(); ++b) {
+    const RigidBody& body = *bodies_[b];
     std::ostringstream line;
     line.precision(6);
-    const Eigen::IOFormat plain(Eigen::StreamPrecision, Eigen::DontAlignCols, " ", " ");
-    line << "Body " << body->settings().name << ": travel ("
-         << body->displacement().transpose().format(plain) << ") m  velocity ("
-         << body->velocity().transpose().format(plain) << ") m/s  fluid force ("
-         << body->fluidForce().transpose().format(plain) << ") N"
-         << (body->atEndStop() ? "  at the end stop" : "") << '\n';
-    info() << line.str();
+    line << "Body " << body.settings().name << ": travel ("
+         << body.displacement().transpose().format(plain) << ") m  velocity ("
+         << body.velocity().transpose().format(plain) << ") m/s  fluid force ("
+         << body.fluidForce().transpose().format(plain) << ") N"
+         << (body.atEndStop() ? "  at the end stop" : "");
+    if (bodyContacts_[b].depth > 0) {
+      line << "  touched a mold (moved back "
+           << bodyContacts_[b].depth / fluid_->attributes().at("spacing") << " dx)";
+    }
+    info() << line.str() << '\n';
   }
 }
 
