@@ -6,6 +6,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "castAnalysis/BodyMotion.h"
 #include "castAnalysis/CloudSummaryAnalysis.h"
 #include "castAnalysis/HotSpots.h"
 #include "castAnalysis/ShrinkageCavities.h"
@@ -126,7 +127,7 @@ std::string formatPoint(const Vector& x) {
 const std::vector<std::string>& castAnalysisTypes() {
   static const std::vector<std::string> types{
       "cloudSummary",      "timeSeries", "thermocouples", "solidificationMaps",
-      "shrinkageCavities", "slice",      "hotSpots"};
+      "shrinkageCavities", "slice",      "hotSpots",      "bodyMotion"};
   return types;
 }
 
@@ -153,6 +154,8 @@ std::vector<std::unique_ptr<CastAnalysis>> readCastAnalyses(const Dictionary& di
       analyses.push_back(std::make_unique<ShrinkageCavities>(name, entry, context));
     } else if (type == "slice") {
       analyses.push_back(std::make_unique<Slice>(name, entry, context));
+    } else if (type == "bodyMotion") {
+      analyses.push_back(std::make_unique<BodyMotion>(name, entry, context));
     } else {
       analyses.push_back(std::make_unique<HotSpots>(name, entry, context));
     }

@@ -4,7 +4,8 @@
 # 0.02 s, sliding along z; it falls into the water and floats. Its state is in every time
 # folder's uniform/dynamicBodies, its history in postProcessing/dynamicBodies, and a run stopped
 # at 0.1 s and restarted writes the uninterrupted run's 0.15 and 0.2 byte for byte (block.vtp and
-# the body's state too). Errors in constant/dynamicBodies name the file, the line and the key.
+# the body's state too). castPostProcess's bodyMotion reports it. Errors in constant/dynamicBodies
+# name the file, the line and the key.
 . "$SPHCAST_TEST_TOOLS"
 coarseWaterTank "$scratch/whole"  # dx = 10 mm: 500 water particles, the water's surface at 0.05
 cat > constant/geometry/block.geo <<'GEO'
@@ -48,6 +49,18 @@ awk '!/^#/ && ($2 != 0 || $3 != 0) { bad = 1 } END { exit bad }' "$history" ||
 awk '!/^#/ { if ($4 < lowest) lowest = $4; last = $4 }
      END { printf "lowest %.4f, last %.4f\n", lowest, last; exit !(lowest > -0.06 && last < -0.015) }' \
     "$history" > depth.txt || fail "the block did not float: $(cat depth.txt)"
+
+# castPostProcess's bodyMotion: the history as a CSV, plots, a line of the report
+cat > system/castPostProcessDict <<'DICT'
+FoamFile { version 2.0; format ascii; class dictionary; object castPostProcessDict; }
+float { type bodyMotion; body block; }
+DICT
+castPostProcess > log.castPostProcess 2>&1 || fail "castPostProcess: $(tail -5 log.castPostProcess)"
+grep -q "^Body block: travelled .* mm by t = 0.2 s, never at an end stop" postProcessing/castReport.md ||
+    fail "no body line in the report: $(grep -m1 Body postProcessing/castReport.md)"
+rows=$(grep -c . postProcessing/float/block.csv)
+steps=$(grep -vc '^#' postProcessing/dynamicBodies/0/block.dat)
+[ "$rows" -eq $((steps + 1)) ] || fail "block.csv has $rows lines for $steps steps"
 
 cd "$scratch/stopped"
 setEntry system/controlDict endTime 0.1
