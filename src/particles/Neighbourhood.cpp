@@ -13,13 +13,20 @@ void Neighbourhood::addCloud(ParticleCloud& cloud, Motion motion) {
     if (motion == Motion::rigid && !entry.movable) entry.moves = true;
     return;
   }
-  entries_.push_back({&cloud, motion == Motion::moving ? &cloud : nullptr,
-                      motion != Motion::fixed, std::make_unique<CellGrid>(radius_, periodic_)});
+  Entry entry;
+  entry.cloud = &cloud;
+  entry.movable = motion == Motion::moving ? &cloud : nullptr;
+  entry.moves = motion != Motion::fixed;
+  entry.grid = std::make_unique<CellGrid>(radius_, periodic_);
+  entries_.push_back(std::move(entry));
 }
 
 void Neighbourhood::addFixedCloud(const ParticleCloud& cloud) {
   if (has(cloud)) return;
-  entries_.push_back({&cloud, nullptr, false, std::make_unique<CellGrid>(radius_, periodic_)});
+  Entry entry;
+  entry.cloud = &cloud;
+  entry.grid = std::make_unique<CellGrid>(radius_, periodic_);
+  entries_.push_back(std::move(entry));
 }
 
 bool Neighbourhood::has(const ParticleCloud& cloud) const {
@@ -46,7 +53,17 @@ void Neighbourhood::requestPairs(const ParticleCloud& a, const ParticleCloud& b)
 
 void Neighbourhood::update(CloudOrder order) {
   for (Entry& entry : entries_) {
+    entry.movedNow = !entry.binned;
     if (entry.binned && !entry.moves) continue;  // a fixed cloud's grid stays valid
+    if (entry.binned && !entry.movable) {
+      // a rigid cloud: re-binned only when it moved (a body held, resting or at its stop
+      // keeps its grid and lists)
+      if (entry.cloud->positions() == entry.binnedPositions) continue;
+      entry.binnedPositions = entry.cloud->positions();
+    } else if (entry.moves && !entry.movable) {
+      entry.binnedPositions = entry.cloud->positions();
+    }
+    entry.movedNow = true;
     entry.grid->build(entry.cloud->positions());
     // a cloud still in cell order (no particle changed cell) needs no reorder, which would copy
     // every field
@@ -59,7 +76,9 @@ void Neighbourhood::update(CloudOrder order) {
   for (Pairs& pairs : pairs_) {
     const Entry& a = entries_[pairs.a];
     const Entry& b = entries_[pairs.b];
-    if (pairs.built && !a.moves && !b.moves) continue;
+    if (pairs.built && !a.movedNow && !b.movedNow) continue;
+    // a rigid cloud's own pairs keep their partners as it moves (distances are kept)
+    if (pairs.built && pairs.a == pairs.b && !a.movable) continue;
     if (pairs.a == pairs.b) {
       pairs.list.buildWithin(a.cloud->positions(), *a.grid);
     } else {

@@ -23,8 +23,9 @@ enum class CloudOrder {
 // (pairs(a, b)) when it adds its rates. A list is built once for all the models that share it.
 //
 // A moving cloud (the metal) is re-binned at every update() and reordered along its grid; a
-// rigid cloud (a mold that moves as one body, bodies/RigidBody.h) is re-binned at every update
-// but never reordered (its particles keep their places in the body's frame); a fixed cloud (a
+// rigid cloud (a mold that moves as one body, bodies/RigidBody.h) is re-binned at an update
+// when it has moved, but never reordered (its particles keep their places in the body's frame),
+// and its list with itself is built once (a rigid motion keeps every distance); a fixed cloud (a
 // mold at rest) is binned once and never reordered, and a list between two fixed clouds
 // (mold-mold conduction) is built once. Fields live in the clouds, so
 // a reorder needs no hook in any model.
@@ -65,11 +66,13 @@ class Neighbourhood {
 
  private:
   struct Entry {
-    const ParticleCloud* cloud;
-    ParticleCloud* movable;  // the cloud to reorder: null for a fixed or rigid cloud
-    bool moves;              // re-binned at every update (moving and rigid)
+    const ParticleCloud* cloud = nullptr;
+    ParticleCloud* movable = nullptr;  // the cloud to reorder: null for a fixed or rigid cloud
+    bool moves = false;                // re-binned at every update (moving and rigid)
     std::unique_ptr<CellGrid> grid;
     bool binned = false;
+    bool movedNow = false;                 // re-binned in this update
+    std::vector<Vector> binnedPositions;  // a rigid cloud's, when last binned
   };
   struct Pairs {
     std::size_t a, b;  // entries

@@ -112,5 +112,32 @@ TEST(NeighbourhoodTest, AListNobodyAskedForIsAnError) {
   EXPECT_THROW(neighbourhood.requestPairs(metal, stranger), Error);
 }
 
+// A rigid cloud (a body's mold): registered fixed by one model and rigid by another, it keeps
+// its order, and its lists follow it when it moves, as a brute-force search finds them; its own
+// list is that of its first binning (a rigid motion keeps every distance).
+TEST(NeighbourhoodTest, RigidCloudListsFollowItWhenItMoves) {
+  ParticleCloud metal = randomCloud("metal", 300, 3);
+  ParticleCloud punch = randomCloud("punch", 200, 4);
+  ParticleCloud mold = randomCloud("mold", 200, 5);
+  const Real h = Real(0.15);
+  Neighbourhood neighbourhood(h, PeriodicBox{});
+  neighbourhood.addCloud(metal, Neighbourhood::Motion::moving);
+  neighbourhood.addFixedCloud(punch);
+  neighbourhood.addCloud(punch, Neighbourhood::Motion::rigid);  // upgraded
+  neighbourhood.addFixedCloud(mold);
+  neighbourhood.requestPairs(metal, punch);
+  neighbourhood.requestPairs(punch, mold);
+  neighbourhood.requestPairs(punch, punch);
+  const std::vector<Real> labels = punch.scalarField("label");
+  for (int step = 0; step < 3; ++step) {
+    neighbourhood.update();
+    expectBruteForce(neighbourhood, metal, punch);
+    expectBruteForce(neighbourhood, punch, mold);
+    expectBruteForce(neighbourhood, punch, punch);
+    EXPECT_EQ(punch.scalarField("label"), labels);  // never reordered
+    for (Vector& x : punch.positions()) x += Vector(0.07, -0.05, 0.02);  // a rigid move
+  }
+}
+
 }  // namespace
 }  // namespace sphcast
