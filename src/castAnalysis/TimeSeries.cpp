@@ -16,15 +16,12 @@
 namespace sphcast {
 
 namespace {
+
 // The energy a pouring inlet brought into the cloud (J): part of the books' change.
 double inflowEnergy(const ParticleCloud& cloud) {
   const auto inflow = cloud.attributes().find("inflowEnergy");
   return inflow == cloud.attributes().end() ? 0.0 : inflow->second;
 }
-}  // namespace
-
-
-namespace {
 
 constexpr double nan = std::numeric_limits<double>::quiet_NaN();
 

@@ -44,7 +44,11 @@ struct WallSurfaceView {
 // smallest plane distance of the wall particles within dx put a particle flowing past the
 // one-layer obstacle of SPHERIC Test 2 2.9 spacings "behind" a wall, and one above a convex
 // ledge a spacing behind it. On a curved wall of radius R the estimate errs by at most
-// (0.75 dx)^2 / (2 R); inside a concave wall it never underestimates. `found` is false when no
+// (0.75 dx)^2 / (2 R); inside a concave wall it never underestimates. A patch reaches 0.75 dx past
+// a sharp convex edge (faces more than 30 degrees apart), where i can lie over the patch of one
+// face and in front of the other: when i is behind a plane, that plane is set aside if i lies in
+// front of a plane (foot within 2 dx along it) with which it makes a sharp convex edge (its foot
+// behind the other's plane), since the body is behind both. `found` is false when no
 // wall neighbour's patch lies under i (no wall near, or i beyond a convex edge whose particles
 // all face the other way): the clearance then leaves i alone.
 struct WallSurfaceDistance {

@@ -170,8 +170,12 @@ void CastingSolver::updateCoolingMode() {
   for (const Vector& v : fluid_->vectorField("U")) {
     fastest = std::max(fastest, static_cast<double>(v.norm()));
   }
+  // metal still being poured, or none yet, is not a still melt (measured: crossDitchPress
+  // entered the mode at t = 0 with its cloud empty, and its ladle fell 0.012 s behind)
+  bool pouring = fluid_->size() == 0;
+  for (const auto& inlet : inlets_) pouring = pouring || !inlet->finished(time_.value());
   const bool wasCooling = cooling_;
-  if (!cooling_ && fastest < cooling.stillSpeed) cooling_ = true;
+  if (!cooling_ && fastest < cooling.stillSpeed && !pouring) cooling_ = true;
   if (cooling_ && fastest > cooling.movingSpeed) cooling_ = false;
   if (cooling_ == wasCooling) return;
   fluid_->attributes()["coolingMode"] = cooling_ ? 1 : 0;

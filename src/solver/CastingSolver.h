@@ -36,7 +36,8 @@ class Dictionary;
 // The casting time loop of sphCastFoam: builds the models constant/physicsModels names over one
 // shared neighbourhood, and steps them (evolve() spells out the order of the passes). With a
 // flow model the fluid cloud runs weakly compressible SPH among the wall clouds, some of which
-// may move as the rigid bodies of constant/dynamicBodies; with
+// may move as the rigid bodies of constant/dynamicBodies, and the pouring inlets of
+// constant/inlets feed the fluid; with
 // heatTransfer the heat clouds carry the energy equation (17), with or without a flow (without
 // one the particles stay where they are); with neither, the clouds move ballistically under
 // constant/g (BallisticMotion).
