@@ -58,11 +58,15 @@ void RigidBody::computeMassProperties() {
     return;
   }
   const Real density = static_cast<Real>(mass_ / totalVolume);
+  // each particle's own: a cube (2D: a square) of side dx, m dx^2 / 6 about its centre
+  const auto spacing = cloud_.attributes().find("spacing");
   Matrix3 inertia = Matrix3::Zero();
   for (std::size_t k = 0; k < rest.size(); ++k) {
     const Vector d = rest[k] - startCentre_;
     const Real m = density * volume[k];
-    const Real own = m * std::pow(volume[k], Real(2) / 3) / 6;  // a cube's about its centre
+    const Real side = spacing != cloud_.attributes().end() ? static_cast<Real>(spacing->second)
+                                                           : std::cbrt(volume[k]);
+    const Real own = m * side * side / 6;
     inertia +=
         m * (d.squaredNorm() * Matrix3::Identity() - d * d.transpose()) + own * Matrix3::Identity();
   }

@@ -23,8 +23,8 @@ struct RigidBodySettings {
   std::string cloud;  // the mold cloud that moves as the body
 
   // Mass, centre and inertia: the mass given, or density x the particles' volume; the centre
-  // and the inertia given, or from the particles (each a cube of its volume, the mass spread
-  // uniformly over them).
+  // and the inertia given, or from the particles (each a cube, 2D a square, of the cloud's
+  // spacing; the mass spread uniformly over them).
   std::optional<double> mass;
   std::optional<double> density;
   std::optional<Vector> centreOfMass;

@@ -96,8 +96,8 @@ TEST(HeavyBody, DroppedIntoAShallowPoolRestsOnTheFloorAndHoldsTheLiquidOut) {
   EXPECT_LT(deepestLiquid, 0.0);  // no liquid inside anything
   // Not held: the density. The liquid squeezed out from under the block leaves as a sheet one
   // or two particles thick that expands as it thins; a particle that flies off it keeps the
-  // density it had (measured: 54 % low, at 0.66 m/s, 4 dx beside the block), which the solver's
-  // health check (20 %) would stop the run for. doc/validation.md §1.7 says more.
+  // density it had (measured: 31 % low), which the solver's health check (20 %) would stop the
+  // run for. doc/validation.md §1.7 says more.
   EXPECT_GT(smallestStep, 1e-3 * largestStep);  // the step never collapsed
   EXPECT_LT(body.velocity().norm(), 0.05);      // at rest on the floor
 }
