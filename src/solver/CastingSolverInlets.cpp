@@ -11,13 +11,7 @@
 namespace sphcast {
 
 void CastingSolver::setUpInlets() {
-  if (inletSetup_.inlets.empty()) return;
-  if (!flow_) {
-    const auto& first = inletSetup_.inlets.front();
-    throw DictionaryError(inletSetup_.declaredAt.at(first.name),
-                          "inlet '" + first.name +
-                              "' feeds the flow's fluid, but constant/physicsModels has no flow");
-  }
+  if (inletSetup_.inlets.empty()) return;  // the constructor refused inlets without a flow
   const InternalEnergyTable* energy = nullptr;
   if (fluid_->hasScalarField("u")) {
     energy = &heatSetup_.materialOf(fluid_->name()).requireInternalEnergy("a pouring inlet");

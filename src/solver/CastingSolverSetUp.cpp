@@ -49,6 +49,12 @@ CastingSolver::CastingSolver(const CaseFolder& caseFolder)
   // Clouds join clouds_ before any model holds a pointer into it.
   if (heatSetup_.enabled) loadHeatClouds();
   loadBodyClouds();
+  if (!inletSetup_.inlets.empty() && !flowSetup_.enabled) {
+    const std::string& name = inletSetup_.inlets.front().name;
+    throw DictionaryError(inletSetup_.declaredAt.at(name),
+                          "inlet '" + name +
+                              "' feeds the flow's fluid, but constant/physicsModels has no flow");
+  }
   if (flowSetup_.enabled || heatSetup_.enabled) {
     setUpNeighbourhood();
     if (flowSetup_.enabled) setUpFlow();
@@ -397,7 +403,7 @@ void CastingSolver::startModels() {
   if (exposedArea_ && !exposedAreaRestored_) exposedArea_->compute();
   if (flow_) flow_->start();
   if (!restarted) kickBodies(0.0);  // their acceleration under the start state's loads
-  if (flow_) setUpInlets();
+  setUpInlets();
   if (energy_) energy_->start();
   info() << "    neighbourhood: " << neighbourhood_->pairCount() << " pairs\n";
 }

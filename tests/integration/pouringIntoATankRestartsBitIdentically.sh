@@ -52,4 +52,9 @@ sed -i 's/speed       0.5;/speed 0.5; massRate 0.1;/' constant/inlets
 sphCastFoam > log.bad 2>&1 && fail "an inlet with speed and massRate ran"
 grep -q "inlets:2:.*inlet 'tap' needs either 'speed' (m/s) or 'massRate'" log.bad ||
     fail "the error does not name the inlet: $(grep -m1 -A1 -i error log.bad)"
-pass "pouring: $perLayer particles a layer, 8 layers, the water stays in the tank, restart mid-pour bit for bit, bad inlet refused"
+sed -i 's/speed 0.5; massRate 0.1;/speed 0.5;/' constant/inlets
+sed -i 's/model *weaklyCompressible;/model none;/' constant/physicsModels
+sphCastFoam > log.bad 2>&1 && fail "an inlet without a flow ran"
+grep -q "inlets:2:.*inlet 'tap' feeds the flow's fluid, but constant/physicsModels has no flow" log.bad ||
+    fail "an inlet without a flow: $(grep -m1 -A1 -i error log.bad)"
+pass "pouring: $perLayer particles a layer, 8 layers, the water stays in the tank, restart mid-pour bit for bit, bad inlets refused"
