@@ -152,6 +152,17 @@ void RigidBody::updateParticleVelocities(bool heldNow) {
   }
 }
 
+void RigidBody::holdStill() {
+  velocity_.setZero();
+  angularMomentum_.setZero();
+  updateParticleVelocities(true);
+}
+
+void RigidBody::halfKick(Real dt) {
+  velocity_ += Real(0.5) * dt * acceleration_;
+  if (!settings_.rotationLocked) angularMomentum_ += Real(0.5) * dt * torque_;
+}
+
 void RigidBody::kickAndDrift(double deltaT, double timeAfter) {
   const Real dt = static_cast<Real>(deltaT);
   if (settings_.prescribed()) {
@@ -164,18 +175,14 @@ void RigidBody::kickAndDrift(double deltaT, double timeAfter) {
     return;
   }
   if (held(timeAfter - deltaT)) {
-    velocity_.setZero();
-    angularMomentum_.setZero();
-    updateParticleVelocities(true);
+    holdStill();
     return;
   }
-  velocity_ += Real(0.5) * dt * acceleration_;
-  if (!settings_.rotationLocked) angularMomentum_ += Real(0.5) * dt * torque_;
+  halfKick(dt);
   centre_ += dt * velocity_;
   if (settings_.endStop) {
-    const Real travel = settings_.endStop->norm();
-    const Vector direction = *settings_.endStop / travel;
-    const Real beyond = (centre_ - startCentre_).dot(direction) - travel;
+    const Vector direction = stopDirection();
+    const Real beyond = (centre_ - startCentre_).dot(direction) - settings_.endStop->norm();
     if (beyond >= 0) {  // a hard stop: at the stop, with no speed into it
       centre_ -= beyond * direction;
       velocity_ -= std::max(velocity_.dot(direction), Real(0)) * direction;
@@ -199,7 +206,7 @@ void RigidBody::takeImpulse(const Vector& impulse, const Vector& angularImpulse,
   if (settings_.prescribed() || held(time - deltaT)) return;  // the machine, or the holder
   velocity_ += constrained(impulse / static_cast<Real>(mass_));
   if (atStop_) {  // the stop takes what pushes into it
-    const Vector direction = settings_.endStop->normalized();
+    const Vector direction = stopDirection();
     velocity_ -= std::max(velocity_.dot(direction), Real(0)) * direction;
   }
   if (!settings_.rotationLocked) angularMomentum_ += angularImpulse - centre_.cross(impulse);
@@ -218,7 +225,7 @@ void RigidBody::setLoadsAndKick(const Vector& fluidForce, const Vector& fluidTor
   }
   Vector acceleration = constrained(force_ / static_cast<Real>(mass_));
   if (atStop_) {
-    const Vector direction = settings_.endStop->normalized();
+    const Vector direction = stopDirection();
     const Real into = acceleration.dot(direction);
     if (into >= 0) {
       acceleration -= into * direction;  // the stop holds it
@@ -228,13 +235,10 @@ void RigidBody::setLoadsAndKick(const Vector& fluidForce, const Vector& fluidTor
   }
   acceleration_ = acceleration;
   if (held(time - deltaT)) {
-    velocity_.setZero();
-    angularMomentum_.setZero();
-    updateParticleVelocities(true);
+    holdStill();
     return;
   }
-  velocity_ += Real(0.5) * dt * acceleration_;
-  if (!settings_.rotationLocked) angularMomentum_ += Real(0.5) * dt * torque_;
+  halfKick(dt);
   updateParticleVelocities(false);
 }
 

@@ -118,6 +118,9 @@ class RigidBody {
   void computeMassProperties();
   // Held where it is during every step that starts before releaseTime.
   bool held(double stepStart) const;
+  void holdStill();  // no speed, no spin: the particles' U and acceleration zero
+  void halfKick(Real dt);  // v and L by dt/2 of the last acceleration and torque
+  Vector stopDirection() const { return settings_.endStop->normalized(); }
   Vector constrained(const Vector& linear) const;
   void placeParticles();
   // U and acceleration of the particles (zero while the body is held)

@@ -288,14 +288,11 @@ bool TimeControl::finalWriteWanted() const {
 }
 
 std::string uniformTimeDictionary(const TimeState& state) {
-  char text[512];
-  std::snprintf(text, sizeof text,
-                "FoamFile\n{\n    version     2.0;\n    format      ascii;\n"
-                "    class       dictionary;\n    location    \"%s/uniform\";\n"
-                "    object      time;\n}\n\n"
+  char values[256];
+  std::snprintf(values, sizeof values,
                 "value       %.17g;\nname        \"%s\";\nindex       %ld;\ndeltaT      %.17g;\n",
-                state.name.c_str(), state.value, state.name.c_str(), state.index, state.deltaT);
-  return text;
+                state.value, state.name.c_str(), state.index, state.deltaT);
+  return foamFileHeader(state.name + "/uniform", "time") + "\n" + values;
 }
 
 double TimeControl::progress() const {

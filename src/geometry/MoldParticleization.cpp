@@ -324,9 +324,7 @@ ParticleizedMold particleizeMold(const CaseFolder& caseFolder) {
 
 std::string patchesDictionaryText(const ParticleizedMold& mold) {
   std::ostringstream text;
-  text << "FoamFile\n{\n    version     2.0;\n    format      ascii;\n    class       dictionary;\n"
-       << "    location    \"constant/particles\";\n    object      patches;\n}\n"
-       << "// Written by particleizeMold: spacing " << mold.spacing << " m, " << mold.wallLayers
+  text << foamFileHeader("constant/particles", "patches") << "// Written by particleizeMold: spacing " << mold.spacing << " m, " << mold.wallLayers
        << " wall layers. 'id' is the value of the particles' 'patch' field.\n\n";
   for (const auto& patch : mold.patches) {
     text << patch.name << "\n{\n    id          " << patch.id << ";\n    cloud       " << patch.cloud

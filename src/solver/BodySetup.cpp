@@ -174,10 +174,7 @@ BodySetup readBodySetup(const CaseFolder& caseFolder) {
 
 std::string bodyStateFile(const std::string& timeName,
                           const std::vector<const RigidBody*>& bodies) {
-  std::string text =
-      "FoamFile\n{\n    version     2.0;\n    format      ascii;\n    class       dictionary;\n"
-      "    location    \"" +
-      timeName + "/uniform\";\n    object      dynamicBodies;\n}\n\n";
+  std::string text = foamFileHeader(timeName + "/uniform", "dynamicBodies") + "\n";
   for (const RigidBody* body : bodies) text += body->stateDictionary() + '\n';
   return text;
 }

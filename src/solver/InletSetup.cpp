@@ -88,10 +88,7 @@ InletSetup readInletSetup(const CaseFolder& caseFolder, const std::string& fluid
 
 std::string inletStateFile(const std::string& timeName,
                            const std::vector<const PouringInlet*>& inlets) {
-  std::string text =
-      "FoamFile\n{\n    version     2.0;\n    format      ascii;\n    class       dictionary;\n"
-      "    location    \"" +
-      timeName + "/uniform\";\n    object      inlets;\n}\n\n";
+  std::string text = foamFileHeader(timeName + "/uniform", "inlets") + "\n";
   for (const PouringInlet* inlet : inlets) text += inlet->stateDictionary() + '\n';
   return text;
 }

@@ -52,6 +52,12 @@ std::string suggestion(std::string_view misspelt, const std::vector<std::string>
 
 }  // namespace
 
+std::string foamFileHeader(std::string_view location, std::string_view object) {
+  return "FoamFile\n{\n    version     2.0;\n    format      ascii;\n    class       dictionary;\n"
+         "    location    \"" +
+         std::string(location) + "\";\n    object      " + std::string(object) + ";\n}\n";
+}
+
 std::string nearestWord(std::string_view misspelt, const std::vector<std::string>& validWords) {
   std::string nearest;
   std::size_t nearestDistance = 0;

@@ -130,6 +130,9 @@ T Dictionary::getOrDefault(std::string_view key, const T& fallback) const {
   return found(key) ? get<T>(key) : fallback;
 }
 
+// The FoamFile header of a dictionary sphCast writes (class dictionary), ending "}\n".
+std::string foamFileHeader(std::string_view location, std::string_view object);
+
 // The word of validWords that `misspelt` most likely meant, for "did you mean" in messages:
 // within a third of its length (at least one edit; a swap of two neighbouring letters is one),
 // the first of equally near ones; empty if none is that near.
