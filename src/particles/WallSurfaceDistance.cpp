@@ -43,31 +43,45 @@ bool sharpConvexEdge(const Vector& footK, const Vector& normalK, const Vector& f
   return normalK.dot(normalM) < sharp && (footK - footM).dot(normalM) < -tolerance;
 }
 
-// Whether x_i, behind the plane of foot footK, lies in front of a plane (foot within 2 dx of it
-// along the plane) with which that one makes a sharp convex edge: then it is outside the body.
-bool beyondConvexEdge(const Vector& x, std::size_t i, const Vector& footK, const Vector& normalK,
-                      const std::vector<WallSurfaceView>& walls, const PeriodicBox& periodic,
-                      Real spacing) {
+// The planes that make a sharp convex edge with the plane of foot footK, which reads x_i behind
+// it (their feet within 2 dx of x_i along them; not the far face of a thin body): the largest
+// distance in front of one of them, and that plane. The body near a convex edge or corner is the
+// intersection of the faces' half-spaces, so x_i is outside it when it is in front of any one of
+// them, and otherwise as deep as the largest of their distances says (the nearest face).
+struct ConvexPartner {
+  bool found = false;
+  Real distance = 0;
+  std::size_t wall = 0;
+  std::uint32_t particle = 0;
+};
+
+ConvexPartner convexPartner(const Vector& x, std::size_t i, const Vector& footK,
+                            const Vector& normalK, const std::vector<WallSurfaceView>& walls,
+                            const PeriodicBox& periodic, Real spacing) {
   const Real reachSquared = Real(4) * spacing * spacing;
-  for (const WallSurfaceView& other : walls) {
+  ConvexPartner partner;
+  for (std::size_t w = 0; w < walls.size(); ++w) {
+    const WallSurfaceView& other = walls[w];
     for (const std::uint32_t m : other.neighboursOfFluid->of(i)) {
       const FootPlane plane = footPlane(x, other, m, periodic);
-      if (plane.distance < 0 || plane.alongSquared > reachSquared) continue;
+      if (plane.distance < -spacing || plane.alongSquared > reachSquared) continue;
+      if (partner.found && plane.distance <= partner.distance) continue;
       if (sharpConvexEdge(footK, normalK, x - plane.fromFoot, other.normal[m], spacing)) {
-        return true;
+        partner = {true, plane.distance, w, m};
       }
     }
   }
-  return false;
+  return partner;
 }
 
 // The smallest plane distance over the wall neighbours whose patch lies under x_i, leaving out
-// the far face of a thin body and, with setAsideBeyondEdges, the planes x_i is read behind at a
-// sharp convex edge; anyBehind: whether a plane counted read x_i behind it.
+// the far face of a thin body and, with atConvexEdges, taking the planes x_i is read behind at a
+// sharp convex edge with their partners (convexPartner); anyBehind: whether a plane counted read
+// x_i behind it.
 WallSurfaceDistance nearestPlane(const Vector& x, std::size_t i,
                                  const std::vector<WallSurfaceView>& walls,
                                  const PeriodicBox& periodic, Real spacing,
-                                 bool setAsideBeyondEdges, bool& anyBehind) {
+                                 bool atConvexEdges, bool& anyBehind) {
   const Real patchRadius = Real(0.75) * spacing;
   const Real patchRadiusSquared = patchRadius * patchRadius;
   WallSurfaceDistance surface;
@@ -78,15 +92,19 @@ WallSurfaceDistance nearestPlane(const Vector& x, std::size_t i,
       const FootPlane plane = footPlane(x, wall, k, periodic);
       if (plane.alongSquared > patchRadiusSquared) continue;  // off k's patch
       if (plane.distance < -spacing) continue;  // the far face of a thin body (see the header)
-      const Vector& n = wall.normal[k];
-      if (setAsideBeyondEdges && plane.distance < 0 &&
-          beyondConvexEdge(x, i, x - plane.fromFoot, n, walls, periodic, spacing)) {
-        continue;
+      WallSurfaceDistance reading{true, plane.distance, wall.normal[k], w, k};
+      if (atConvexEdges && plane.distance < 0) {
+        const ConvexPartner partner =
+            convexPartner(x, i, x - plane.fromFoot, reading.normal, walls, periodic, spacing);
+        if (partner.found && partner.distance >= 0) continue;  // beyond the edge: outside
+        if (partner.found && partner.distance > reading.distance) {
+          // inside a convex edge or corner: as deep as the nearest face, and out through it
+          reading = {true, partner.distance, walls[partner.wall].normal[partner.particle],
+                     partner.wall, partner.particle};
+        }
       }
-      anyBehind = anyBehind || plane.distance < 0;
-      if (!surface.found || plane.distance < surface.distance) {
-        surface = {true, plane.distance, n, w, k};
-      }
+      anyBehind = anyBehind || reading.distance < 0;
+      if (!surface.found || reading.distance < surface.distance) surface = reading;
     }
   }
   return surface;
@@ -101,12 +119,15 @@ WallSurfaceDistance wallSurfaceDistance(const Vector& x, std::size_t i,
   const WallSurfaceDistance surface =
       nearestPlane(x, i, walls, periodic, spacing, false, anyBehind);
   if (!anyBehind) return surface;
-  // i is read behind a plane: unless it is inside the body, that plane is the other face's at a
-  // sharp convex edge whose patch reaches past the edge (a patch is 1.5 dx across). Such planes
-  // are set aside (beyondConvexEdge) and the smallest of the others is taken: checked only here,
+  // i is read behind a plane: either that plane is the other face's at a sharp convex edge whose
+  // patch reaches past the edge (a patch is 1.5 dx across), or i is inside the body there. The
+  // plane is set aside when i is in front of a face it makes a sharp convex edge with, and
+  // otherwise reads the largest of those faces' distances (convexPartner); checked only here,
   // so it costs nothing elsewhere. Measured on a cross-shaped ditch (tutorials/crossDitchPress):
-  // without this, metal beside the crossing's vertical convex edges was put 0.8 dx "behind" the
-  // other arm's wall and the run stopped.
+  // without the first, metal beside the crossing's vertical convex edges was put 0.8 dx "behind"
+  // the other arm's wall and the run stopped; without the second, metal 0.0001 dx past the side
+  // of a ditch's arm, at the corner where it meets the pocket floor, was read 0.6 dx behind the
+  // floor's plane and the run stopped (dx = 3 mm).
   return nearestPlane(x, i, walls, periodic, spacing, true, anyBehind);
 }
 

@@ -48,7 +48,10 @@ struct WallSurfaceView {
 // a sharp convex edge (faces more than 30 degrees apart), where i can lie over the patch of one
 // face and in front of the other: when i is behind a plane, that plane is set aside if i lies in
 // front of a plane (foot within 2 dx along it) with which it makes a sharp convex edge (its foot
-// behind the other's plane), since the body is behind both. `found` is false when no
+// behind the other's plane), since the body is behind both; if i is behind all such planes, it
+// is inside the body's convex edge or corner (the intersection of the faces' half-spaces) and
+// the plane reads the largest of their distances: the depth behind the nearest face, exact
+// there. `found` is false when no
 // wall neighbour's patch lies under i (no wall near, or i beyond a convex edge whose particles
 // all face the other way): the clearance then leaves i alone.
 struct WallSurfaceDistance {

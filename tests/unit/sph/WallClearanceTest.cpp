@@ -177,6 +177,53 @@ TEST(WallSurfaceDistance, ConvexEdgesAndThinFilledBodiesGiveTheDistanceToTheNear
   }
 }
 
+// Just inside a filled block's convex edge and corner (the block is the intersection of its
+// faces' half-spaces, so a point inside lies as deep as the nearest face): a particle of a
+// stream poured past the corner where a ditch's arm meets the pocket floor, 0.0001 dx through
+// the arm's side, was read 0.6 dx behind the floor's plane and stopped the run
+// (tutorials/crossDitchPress at dx = 3 mm). The depth must be the nearest face's, and the normal
+// that face's, so that the clearance moves the particle out through it.
+TEST(WallSurfaceDistance, InsideAConvexEdgeOrCornerTheNearestFaceGivesTheDepth) {
+  TestWall wall;
+  const Vector lower(0, 0, 0), upper(8 * dx, 8 * dx, 8 * dx);
+  for (int i = 0; i < 8; ++i) {
+    for (int j = 0; j < 8; ++j) {
+      for (int k = 0; k < 8; ++k) {
+        const Vector p((i + Real(0.5)) * dx, (j + Real(0.5)) * dx, (k + Real(0.5)) * dx);
+        const Vector toLower = p - lower, toUpper = upper - p;
+        Real depth = toLower.x();
+        Vector normal(-1, 0, 0);
+        for (int a = 0; a < 3; ++a) {
+          if (toLower[a] < depth) depth = toLower[a], normal = -Vector::Unit(a);
+          if (toUpper[a] < depth) depth = toUpper[a], normal = Vector::Unit(a);
+        }
+        wall.position.push_back(p);
+        wall.normal.push_back(normal);
+        wall.depth.push_back(depth);
+      }
+    }
+  }
+  struct Probe {
+    Vector x;
+    Real depth;  // behind the nearest face
+    int axis;    // that face's normal: +axis
+  };
+  const std::vector<Probe> probes{
+      {{7.9999 * dx, 4.2 * dx, 7.4 * dx}, 0.0001 * dx, 0},  // edge x-z: 0.6 dx under the top
+      {{7.7 * dx, 4.0 * dx, 7.95 * dx}, 0.05 * dx, 2},      // edge x-z: 0.3 dx behind the side
+      {{7.9 * dx, 7.6 * dx, 7.8 * dx}, 0.1 * dx, 0},        // the corner, three faces
+      {{7.85 * dx, 7.97 * dx, 7.5 * dx}, 0.03 * dx, 1}};    // the corner, the y face nearest
+  std::vector<Vector> fluid;
+  for (const Probe& probe : probes) fluid.push_back(probe.x);
+  const auto views = wall.views(fluid);
+  for (std::size_t i = 0; i < probes.size(); ++i) {
+    const WallSurfaceDistance d = wallSurfaceDistance(fluid[i], i, views, PeriodicBox{}, dx);
+    ASSERT_TRUE(d.found) << "probe " << i;
+    EXPECT_NEAR(d.distance, -probes[i].depth, 1e-12) << "probe " << i;
+    EXPECT_NEAR(d.normal[probes[i].axis], 1.0, 1e-12) << "probe " << i;
+  }
+}
+
 // A shell one particle thick (the obstacle of SPHERIC Test 2 at dx = 0.05 m is one: its
 // particles at depth dx/2 behind each face, each face on its own lattice), fluid beside one face
 // just past the end of its rows, where only the far face's patches lie under it, 3.2 dx behind
