@@ -16,7 +16,7 @@ namespace {
 
 const std::vector<std::string> controlDictKeys = {
     "application",    "startFrom",     "startTime",    "stopAt",        "endTime",
-    "deltaT",         "maxDeltaT",     "adjustTimeStep", "maxCo",       "writeControl",
+    "deltaT",         "maxDeltaT",     "adjustTimeStep", "maxCo",       "maxDi",        "writeControl",
     "writeInterval",  "purgeWrite",    "timeFormat",   "timePrecision", "runTimeModifiable",
     "logInterval",    "writeFormat",   "writePrecision", "writeCompression", "functions",
     "healthChecks"};
@@ -58,6 +58,8 @@ ControlSettings ControlSettings::read(const Dictionary& dict) {
   require(s.maxDeltaT > 0.0, dict, "maxDeltaT", "must be positive");
   s.maxCo = dict.getOrDefault<double>("maxCo", s.maxCo);
   require(s.maxCo > 0.0 && s.maxCo <= 1.0, dict, "maxCo", "must be in (0, 1]");
+  s.maxDi = dict.getOrDefault<double>("maxDi", s.maxDi);
+  require(s.maxDi > 0.0 && s.maxDi <= 0.5, dict, "maxDi", "must be in (0, 0.5]");
   s.writeControl = choose(dict, "writeControl", {"timeStep", "runTime", "adjustableRunTime"},
                           WriteControl::timeStep, "timeStep");
   s.writeInterval = dict.get<double>("writeInterval");

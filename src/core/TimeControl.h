@@ -26,6 +26,9 @@ struct ControlSettings {
   double maxDeltaT = std::numeric_limits<double>::max();
   bool adjustTimeStep = false;
   double maxCo = 0.25;
+  // The heat conduction's step, maxDi dx^2 / alpha_max (OpenFOAM's chtMultiRegionFoam name):
+  // forward Euler on the SPH Laplacian is stable to about 0.65 on a lattice (doc/physics.md §10.2).
+  double maxDi = 0.1;
   WriteControl writeControl = WriteControl::timeStep;
   double writeInterval = 1.0;  // steps for timeStep, seconds otherwise
   int purgeWrite = 0;          // keep only this many written times (0: keep all)

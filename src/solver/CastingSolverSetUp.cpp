@@ -297,6 +297,7 @@ void CastingSolver::setUpHeat() {
     context.clouds.push_back(heat);
   }
   context.spacing = static_cast<Real>(spacing);
+  context.maxDi = time_.settings().maxDi;
   energy_ = std::make_unique<EnergyEquation>(context, heatSetup_.heatTransfer);
   if (energy_->needsExposedArea()) {
     std::vector<ParticleCloud*> exposed;

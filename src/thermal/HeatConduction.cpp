@@ -44,7 +44,7 @@ HeatConduction::HeatConduction(const HeatTransferContext& context,
     }
   }
   const double dx = context_.spacing;
-  stableDeltaT_ = 0.1 * dx * dx / alpha;
+  stableDeltaT_ = context_.maxDi * dx * dx / alpha;
 }
 
 // Pairs (a, b) that exchange heat by conduction: not a contact pair, and not two clouds both

@@ -24,8 +24,10 @@ namespace sphcast {
 // Between two clouds whose materials have a contact coefficient (moldContact), this model
 // leaves the exchange to MoldContactTransfer: the coefficient is the interface's conductance.
 //
-// Step limit: the diffusion number, dt <= 0.1 dx^2 / alpha_max, alpha = kappa / (rho c) with
-// c = du/dT, the largest over each material's tables.
+// Step limit: the diffusion number, dt <= maxDi dx^2 / alpha_max (controlDict, default 0.1),
+// alpha = kappa / (rho c) with c = du/dT, the largest over each material's tables. Forward Euler
+// on this Laplacian is stable below 0.65 dx^2 / alpha on a lattice with h = 3 dx (its largest
+// eigenvalue, 3.06 alpha / dx^2, is that of the mode alternating along the diagonal).
 class HeatConduction : public HeatTransferModel {
  public:
   // contactPairs: material pairs (both orders) whose exchange is MoldContactTransfer's.

@@ -40,6 +40,7 @@ struct HeatTransferContext {
   int dimension = 3;
   Real supportRadius = 0;  // h
   Real spacing = 0;        // dx, of the regularisation eta^2 = 0.01 dx^2 and the step limits
+  double maxDi = 0.1;      // the conduction step, maxDi dx^2 / alpha_max (controlDict)
   std::vector<HeatCloud> clouds;
   Neighbourhood* neighbourhood = nullptr;
 };

@@ -55,11 +55,12 @@ const char* const water =
     "body { density 1000; conductivity 1; specificHeat 1000; }";  // alpha 1e-6
 
 // T = T_s + (T_0 - T_s) erf(x / (2 sqrt(alpha t))), surface x = 0 held at T_s from t = 0.
-double semiInfiniteError(int particlesAcrossHeatedLength) {
+double semiInfiniteError(int particlesAcrossHeatedLength, double maxDi = 0.1) {
   const double alpha = 1e-6;
   // heated length 4 sqrt(alpha t) (erf reaches 0.995 there) = n dx
   const double t = std::pow(particlesAcrossHeatedLength * dx / 4, 2) / alpha;
   ThermalRun run = strip(water);
+  run.maxDi = maxDi;
   const int length = 2 * particlesAcrossHeatedLength;  // the far end stays at T_0
   run.add(latticeBlock("body", Vector(dx / 2, 0, 0), length, across, 1, dx, 2, 400), "body");
   run.add(heldWall("surface", 0, true, 4, 300), "body", true, 300);
@@ -83,6 +84,52 @@ TEST(ConductionValidationTest, SemiInfiniteBodyFollowsTheErfProfile) {
   EXPECT_LT(fine, 0.01);
   EXPECT_LT(fine, medium);
   EXPECT_LT(medium, coarse);
+}
+
+// Longer conduction steps (controlDict maxDi, default 0.1): forward Euler on the SPH Laplacian
+// at h = 3 dx is stable below 0.65 dx^2 / alpha on a lattice (its largest eigenvalue, 3.06
+// alpha / dx^2, doc/physics.md §10.2.5). The erf profile's error at 0.25 and 0.35 against 0.1,
+// and a 10^3 block of iron with each particle's T scattered by +-20 K (every mode excited):
+// bounded over 100 steps at 0.6, blown up at 0.7, where the analysis puts the limit.
+TEST(ConductionValidationTest, LongerStepsUpToMaxDiStayAccurateAndBounded) {
+  for (const int particles : {25, 50}) {
+    const double base = semiInfiniteError(particles, 0.1);
+    for (const double maxDi : {0.25, 0.35}) {
+      const double error = semiInfiniteError(particles, maxDi);
+      RecordProperty("L2_" + std::to_string(particles) + "_maxDi" + std::to_string(maxDi),
+                     std::to_string(error));
+      EXPECT_LT(error, 1.5 * base) << particles << " across, maxDi " << maxDi;
+      if (particles == 50) {
+        EXPECT_LT(error, 0.01) << "maxDi " << maxDi;
+      }
+    }
+  }
+  // iron of constant properties, so that every particle's alpha is alpha_max
+  auto spread = [&](double maxDi) {
+    ThermalRun run(3, 3 * dx, dx,
+                   materials("iron { density 7874; conductivity 80; specificHeat 450; }"));
+    run.maxDi = maxDi;
+    run.add(latticeBlock("block", Vector(0, 0, 0), 10, 10, 10, dx, 3, 600), "iron");
+    std::uint32_t seed = 12345;  // a fixed scatter of +-20 K on each particle
+    for (Real& T : run.clouds.front().scalarField("T")) {
+      seed = seed * 1664525u + 1013904223u;
+      T += Real(40) * (Real(seed >> 8) / Real(1 << 24) - Real(0.5));
+    }
+    run.start("clouds (block); conduction on;");
+    run.advanceTo(100 * run.stableDeltaT());
+    Real lowest = 1e9, highest = 0;
+    for (const Real T : run.clouds.front().scalarField("T")) {
+      lowest = std::min(lowest, T);
+      highest = std::max(highest, T);
+    }
+    return std::pair{lowest, highest};
+  };
+  const auto [lowest, highest] = spread(0.6);
+  EXPECT_GE(lowest, 580);
+  EXPECT_LE(highest, 620);
+  const auto [unstableLowest, unstableHighest] = spread(0.7);
+  EXPECT_TRUE(unstableLowest < 580 || unstableHighest > 620 || !std::isfinite(unstableHighest))
+      << "maxDi 0.7 must break the bounds: " << unstableLowest << " .. " << unstableHighest;
 }
 
 // Slab 0 < x < L, both faces held at T_s, uniform T_0 at t = 0:

@@ -72,6 +72,7 @@ struct ThermalRun {
   std::unique_ptr<ExposedArea> exposedArea;
   double time = 0;
   long steps = 0;
+  double maxDi = 0.1;  // controlDict's, the conduction step maxDi dx^2 / alpha_max
 
   ThermalRun(int dimension_, Real supportRadius_, Real spacing_, MaterialLibrary library_)
       : dimension(dimension_),
@@ -99,6 +100,7 @@ struct ThermalRun {
     context.dimension = dimension;
     context.supportRadius = supportRadius;
     context.spacing = spacing;
+    context.maxDi = maxDi;
     context.clouds = heat;
     context.neighbourhood = neighbourhood.get();
     const Dictionary dict =
