@@ -1,5 +1,6 @@
 #include "castAnalysis/BodyMotion.h"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <sstream>
@@ -12,9 +13,28 @@ namespace sphcast {
 
 BodyMotion::BodyMotion(const std::string& name, const Dictionary& dict,
                        const AnalysisContext& context)
-    : CastAnalysis(name, dict, context, {"body"}),
+    : CastAnalysis(name, dict, context, {"body", "gap"}),
       body_(dict.get<std::string>("body")),
       bodyAt_(dict.location("body")) {
+  if (dict.found("gap")) {
+    const Dictionary& gap = dict.subDict("gap");
+    gap.checkKeys({"cloud", "faceStart", "floorPoint", "area", "volumeBelow"});
+    gap_ = Gap{gap.get<std::string>("cloud"), gap.get<Vector>("faceStart"),
+               gap.get<Vector>("floorPoint"), gap.get<double>("area"),
+               gap.getOrDefault<double>("volumeBelow", 0)};
+    if (std::find(context.clouds.begin(), context.clouds.end(), gap_->cloud) ==
+        context.clouds.end()) {
+      throw DictionaryError(gap.location("cloud"),
+                            "'" + gap_->cloud + "' is not a cloud of the case's first time");
+    }
+    if (!(gap_->area > 0)) {
+      throw DictionaryError(gap.location("area"), "'area' must be positive in " + gap.name());
+    }
+    if (!(gap_->volumeBelow >= 0)) {
+      throw DictionaryError(gap.location("volumeBelow"),
+                            "'volumeBelow' must not be negative in " + gap.name());
+    }
+  }
   const auto folder = context.caseRoot / "postProcessing" / "dynamicBodies";
   bool found = false;
   if (std::filesystem::exists(folder)) {
@@ -28,6 +48,49 @@ BodyMotion::BodyMotion(const std::string& name, const Dictionary& dict,
                                        ".dat: is it a body of constant/dynamicBodies, and has "
                                        "sphCastFoam run?");
   }
+}
+
+void BodyMotion::add(const WrittenTime& time) {
+  if (!gap_) return;
+  const ParticleCloud* cloud = time.find(gap_->cloud);
+  if (!cloud) return;
+  const auto& mass = cloud->scalarField("mass");
+  const auto& rho = cloud->scalarField("rho");
+  positions_.assign(cloud->positions().begin(), cloud->positions().end());
+  volumes_.resize(cloud->size());
+  for (std::size_t i = 0; i < cloud->size(); ++i) volumes_[i] = double(mass[i]) / double(rho[i]);
+  lastTime_ = time.folder.name;
+  lastTimeValue_ = time.folder.value;
+}
+
+std::string BodyMotion::gapReport(const std::vector<std::vector<double>>& rows,
+                                  const Vector& direction) const {
+  if (lastTime_.empty()) return "No time selected has the cloud " + gap_->cloud + ".\n";
+  Vector travel = Vector::Zero();
+  for (const auto& row : rows) {
+    if (row.size() < 4 || row[0] > lastTimeValue_ * (1 + 1e-9) + 1e-12) break;
+    travel = Vector(row[1], row[2], row[3]);
+  }
+  const Vector up = -direction;  // from the floor towards the punch's face
+  const double gap = (gap_->faceStart + travel - gap_->floorPoint).dot(up);
+  double above = 0, below = 0;
+  for (std::size_t i = 0; i < positions_.size(); ++i) {
+    ((positions_[i] - gap_->floorPoint).dot(up) < 0 ? below : above) += volumes_[i];
+  }
+  const double spread = (above + below - gap_->volumeBelow) / gap_->area;
+  std::ostringstream text;
+  text.precision(4);
+  text << "The gap at t = " << lastTime_ << " s: the punch's face " << gap * 1000
+       << " mm above the floor. The " << gap_->cloud << " (" << (above + below) * 1e6
+       << " cm^3) holds " << below * 1e6 << " cm^3 below the floor";
+  if (gap_->volumeBelow > 0) {
+    text << " (" << 100 * below / gap_->volumeBelow << " % of the " << gap_->volumeBelow * 1e6
+         << " cm^3 there)";
+  }
+  text << " and " << above * 1e6 << " cm^3 above: " << above / gap_->area * 1000
+       << " mm over the area under the punch; with the space below full, the volume balance "
+       << "gives " << spread * 1000 << " mm.\n";
+  return text.str();
 }
 
 ReportSection BodyMotion::finish() {
@@ -86,6 +149,7 @@ ReportSection BodyMotion::finish() {
   }
   text << "; the largest force of the metal " << largestForce << " N at t = " << largestForceTime
        << " s (" << name_ << "/" << body_ << ".csv).\n";
+  if (gap_) text << '\n' << gapReport(rows, direction);
   section.markdown = text.str();
   if (drawPlot(travel, context_.caseRoot / "postProcessing" / travelPng)) {
     section.images.push_back(travelPng);

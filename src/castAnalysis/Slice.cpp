@@ -39,7 +39,8 @@ std::array<unsigned char, 3> colourOf(double f) {
 
 Slice::Slice(const std::string& name, const Dictionary& dict, const AnalysisContext& context)
     : CastAnalysis(name, dict, context,
-                   {"point", "normal", "thickness", "field", "range", "clouds", "times", "pixel"}) {
+                   {"point", "normal", "thickness", "field", "range", "clouds", "times", "show",
+                    "pixel"}) {
   point_ = dict.get<Vector>("point");
   normal_ = dict.get<Vector>("normal");
   if (!(normal_.norm() > 0)) {
@@ -64,6 +65,12 @@ Slice::Slice(const std::string& name, const Dictionary& dict, const AnalysisCont
   }
   clouds_ = dict.getOrDefault<std::vector<std::string>>("clouds", {});  // empty: every cloud
   allTimes_ = dict.getChoiceOrDefault("times", {"latest", "all"}, "latest") == "all";
+  show_ = dict.getOrDefault<std::vector<double>>("show", {});
+  if (!show_.empty() && !allTimes_) {
+    throw DictionaryError(dict.location("show"),
+                          "'show' needs 'times all' (the pictures of every time) in " +
+                              dict.name());
+  }
   pixel_ = dict.getOrDefault<Real>("pixel", 0);
   // up: +z projected into the plane (+y when the plane is normal to z)
   Vector up = Vector::UnitZ() - normal_.dot(Vector::UnitZ()) * normal_;
@@ -209,6 +216,7 @@ void Slice::draw(const WrittenTime& time) {
   writer->Write();
   if (writer->GetErrorCode() != 0) throw Error("could not write " + png.string());
   drawn_.push_back(name_ + "/" + time.folder.name + "/" + field_ + ".png");
+  drawnTimes_.push_back(time.folder.value);
   captions_.push_back("time " + time.folder.name + ": " + field_ + " from " + formatNumber(low, 4) +
                       " (blue) to " + formatNumber(high, 4) + " (red), grey: clouds without it; " +
                       std::to_string(width) + " x " + std::to_string(height) + " pixels of " +
@@ -224,14 +232,28 @@ ReportSection Slice::finish() {
                      formatNumber(point_.z(), 4) + ") normal to (" + formatNumber(normal_.x(), 4) +
                      " " + formatNumber(normal_.y(), 4) + " " + formatNumber(normal_.z(), 4) +
                      "):\n";
-  // one picture in the one-page report: the latest; the others are listed by folder
-  if (!captions_.empty()) section.markdown += "- " + captions_.back() + "\n";
-  if (drawn_.size() > 1) {
-    section.markdown += "- and " + std::to_string(drawn_.size() - 1) + " earlier time" +
-                        (drawn_.size() > 2 ? "s" : "") + " in " + name_ + "/<time>/" + field_ +
-                        ".png\n";
+  if (drawn_.empty()) return section;
+  // in the one-page report: the drawn times nearest those of `show`, then the latest; the others
+  // are listed by folder
+  std::vector<std::size_t> shown;
+  for (const double wanted : show_) {
+    std::size_t nearest = 0;
+    for (std::size_t k = 1; k < drawnTimes_.size(); ++k) {
+      if (std::abs(drawnTimes_[k] - wanted) < std::abs(drawnTimes_[nearest] - wanted)) nearest = k;
+    }
+    if (std::find(shown.begin(), shown.end(), nearest) == shown.end()) shown.push_back(nearest);
   }
-  if (!drawn_.empty()) section.images = {drawn_.back()};
+  std::erase(shown, drawn_.size() - 1);
+  shown.push_back(drawn_.size() - 1);
+  for (const std::size_t k : shown) {
+    section.markdown += "- " + captions_[k] + "\n";
+    section.images.push_back(drawn_[k]);
+  }
+  if (drawn_.size() > shown.size()) {
+    section.markdown += "- and " + std::to_string(drawn_.size() - shown.size()) + " other time" +
+                        (drawn_.size() - shown.size() > 1 ? "s" : "") + " in " + name_ +
+                        "/<time>/" + field_ + ".png\n";
+  }
   return section;
 }
 

@@ -20,6 +20,8 @@ namespace sphcast {
 //       clouds      (metal mold);                // optional: every cloud of the time and of
 //                                                // constant/particles
 //       times       latest;                      // optional: latest | all (the selected times)
+//       show        (0.25 0.3 0.4);              // optional, with times all: the written times
+//                                                // nearest these in the report, besides the last
 //       pixel       0.0003;                      // optional, m: a tenth of the finest spacing
 //   }
 //
@@ -28,7 +30,8 @@ namespace sphcast {
 // seen along -normal with "up" the plane's direction closest to +z (+y for a plane normal to z),
 // coloured blue (low) - cyan - green - yellow - red (high), with a colour bar along the bottom.
 // Drawn pixel by pixel into a VTK image and written with VTK's PNG writer: no rendering, no
-// display, no gnuplot needed. The report shows the latest time's picture.
+// display, no gnuplot needed. The report shows the latest time's picture, after those of `show`
+// (a press's or a filling's stages, as the paper's Fig. 17).
 class Slice : public CastAnalysis {
  public:
   Slice(const std::string& name, const Dictionary& dict, const AnalysisContext& context);
@@ -48,6 +51,8 @@ class Slice : public CastAnalysis {
   bool allTimes_ = false;
   std::vector<std::string> drawn_;  // PNGs, relative to postProcessing/
   std::vector<std::string> captions_;
+  std::vector<double> drawnTimes_;
+  std::vector<double> show_;
   const WrittenTime* pending_ = nullptr;
   WrittenTime latest_;
 };

@@ -50,14 +50,30 @@ awk '!/^#/ { if ($4 < lowest) lowest = $4; last = $4 }
      END { printf "lowest %.4f, last %.4f\n", lowest, last; exit !(lowest > -0.06 && last < -0.015) }' \
     "$history" > depth.txt || fail "the block did not float: $(cat depth.txt)"
 
-# castPostProcess's bodyMotion: the history as a CSV, plots, a line of the report
+# castPostProcess's bodyMotion: the history as a CSV, plots, a line of the report; with `gap`,
+# the block's bottom (z = 0.07 at the start) above the tank's floor, which must be 70 mm plus the
+# final travel, and the water's volume (500 particles of 1 cm^3 at rho_s within 0.1 %) over the
+# tank's 0.01 m^2, which must be 50 mm
 cat > system/castPostProcessDict <<'DICT'
 FoamFile { version 2.0; format ascii; class dictionary; object castPostProcessDict; }
-float { type bodyMotion; body block; }
+float { type bodyMotion; body block;
+        gap { cloud water; faceStart (0 0 0.07); floorPoint (0 0 0); area 0.01; } }
 DICT
 castPostProcess > log.castPostProcess 2>&1 || fail "castPostProcess: $(tail -5 log.castPostProcess)"
 grep -q "^Body block: travelled .* mm by t = 0.2 s, never at an end stop" postProcessing/castReport.md ||
     fail "no body line in the report: $(grep -m1 Body postProcessing/castReport.md)"
+gapLine=$(grep -m1 "^The gap at t = 0.2 s" postProcessing/castReport.md) ||
+    fail "no gap line in the report: $(grep -m1 gap postProcessing/castReport.md)"
+lastTravel=$(awk '!/^#/ { z = $4 } END { printf "%.6f", z }' "$history")
+echo "$gapLine" | awk -v travel="$lastTravel" '{
+    for (i = 1; i <= NF; ++i) {
+        if ($i == "face") face = $(i + 1)
+        if ($(i + 1) == "mm" && $(i + 2) == "over") spread = $i
+    }
+    expected = 70 + 1000 * travel
+    exit !(face > expected - 0.01 && face < expected + 0.01 && spread > 49.95 && spread < 50.05) }' ||
+    fail "gap or volume balance off (travel $lastTravel m): $gapLine"
+pass "bodyMotion's gap: $gapLine"
 rows=$(grep -c . postProcessing/float/block.csv)
 steps=$(grep -vc '^#' postProcessing/dynamicBodies/0/block.dat)
 [ "$rows" -eq $((steps + 1)) ] || fail "block.csv has $rows lines for $steps steps"
