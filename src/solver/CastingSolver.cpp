@@ -83,16 +83,32 @@ void CastingSolver::evolve(double deltaT) {
     holdInletBuffers();
   }
   if (heatThisStep) {
-    addWallTime(heatSeconds_, [&] {
-      energy_->computeRates();
-      energy_->halfKick(heatDeltaT_);
-      if (solidification_) {
-        solidification_->update(time_.value(), heatDeltaT_);
-        recordCriticalGradients();
-      }
-    });
+    addWallTime(heatSeconds_, [&] { finishHeatStep(); });
     ++heatSteps_;
   }
+}
+
+// The second half of a heat step: the rates at the new state, the second kick, and the
+// solidification that follows the new u.
+void CastingSolver::finishHeatStep() {
+  energy_->computeRates();
+  energy_->halfKick(heatDeltaT_);
+  if (solidification_) {
+    solidification_->update(time_.value(), heatDeltaT_);
+    recordCriticalGradients();
+  }
+}
+
+// A whole heat step of deltaT with the particles where they are: the first kick, the exposed
+// area, and finishHeatStep.
+void CastingSolver::heatStepInPlace(double deltaT) {
+  heatDeltaT_ = deltaT;
+  addWallTime(heatSeconds_, [&] {
+    energy_->halfKick(deltaT);
+    if (exposedArea_) exposedArea_->compute();
+    finishHeatStep();
+  });
+  ++heatSteps_;
 }
 
 // The search at the new positions, the fluid's first wall contacts, the bodies kept out of the
@@ -108,19 +124,9 @@ void CastingSolver::searchAndKeepClear(double deltaT) {
 // A stop between heat steps (stopAt writeNow) writes the heat brought up to the time written.
 void CastingSolver::flushPendingHeat() {
   if (!energy_ || pendingHeatTime_ == 0) return;
-  heatDeltaT_ = pendingHeatTime_;
+  const double deltaT = pendingHeatTime_;
   pendingHeatTime_ = 0;
-  addWallTime(heatSeconds_, [&] {
-    energy_->halfKick(heatDeltaT_);
-    if (exposedArea_) exposedArea_->compute();
-    energy_->computeRates();
-    energy_->halfKick(heatDeltaT_);
-    if (solidification_) {
-      solidification_->update(time_.value(), heatDeltaT_);
-      recordCriticalGradients();
-    }
-  });
-  ++heatSteps_;
+  heatStepInPlace(deltaT);
 }
 
 // Once the melt is still, the heat sets the pace (doc/physics.md §10.5): a step of the
@@ -129,16 +135,7 @@ void CastingSolver::flushPendingHeat() {
 // feeding). The flow's time thus runs heat step / (n acoustic steps) times slower than the heat's:
 // right for a melt that creeps, wrong for one that moves (updateCoolingMode leaves the mode then).
 void CastingSolver::evolveCooling(double deltaT) {
-  heatDeltaT_ = deltaT;
-  addWallTime(heatSeconds_, [&] {
-    energy_->halfKick(deltaT);
-    if (exposedArea_) exposedArea_->compute();
-    energy_->computeRates();
-    energy_->halfKick(deltaT);
-    solidification_->update(time_.value(), deltaT);
-    recordCriticalGradients();
-  });
-  ++heatSteps_;
+  heatStepInPlace(deltaT);
   for (int k = 0; k < solidificationSetup_.cooling->flowStepsPerHeatStep; ++k) {
     std::string limiter;
     const double flowDeltaT = flow_->stepLimits(time_.settings().maxCo).smallest(limiter);

@@ -88,6 +88,8 @@ class CastingSolver {
   void evolveCooling(double deltaT);
   bool heatStepsWithFlow(double deltaT);
   void flushPendingHeat();
+  void heatStepInPlace(double deltaT);
+  void finishHeatStep();
   void writeResults();
   void logStep(bool printBlock);
   void logRereadMessage();
