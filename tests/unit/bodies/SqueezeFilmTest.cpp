@@ -1,9 +1,12 @@
-// Reynolds' squeeze film (doc/validation.md §1.7): a 2D plate of width 2a driven towards the
-// floor at V through a viscous liquid (rho V h / mu = 0.04 at h = 4 dx) feels, per unit depth,
+// Reynolds' squeeze film (doc/validation.md §1.7): a 2D plate of width 2a approaching the floor
+// through a viscous liquid (rho V h / mu = 0.04 at h = 4 dx) feels, per unit depth,
 //   F = 8 mu V a^3 / h^3
-// (lubrication: q(x) = V x = -(h^3 / 12 mu) dp/dx, p = 6 mu V (a^2 - x^2) / h^3). The plate is a
-// prescribed rigid body; its load is what the flow measures on its particles. No gravity, so
-// that the load is the squeeze alone.
+// (lubrication: q(x) = V x = -(h^3 / 12 mu) dp/dx, p = 6 mu V (a^2 - x^2) / h^3). Driven at V (a
+// prescribed rigid body), its load is what the flow measures on its particles; pressed by a
+// constant force F instead (a dynamic body on an axis), its gap closes as
+//   h(t) = h0 [1 + F h0^2 t / (4 mu a^3)]^(-1/2),
+// the 2D form of the disk's h0 [1 + 4 F h0^2 t / (3 pi mu R^4)]^(-1/2). No gravity, so that the
+// load is the squeeze alone.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -30,38 +33,50 @@ struct GapForce {
   double ratio;  // mean SPH force over Reynolds' at that gap
 };
 
-std::vector<GapForce> squeezePlate(const std::vector<double>& gaps) {
-  const int first = (columns - plateColumns) / 2;
-  ParticleCloud fluid =
-      testing::fluidBlock2D(columns, liquidRows, dx, Vector::Zero(), density, viscosity);
-  {  // the plate's cells hold no liquid (the fields are uniform: the first particle's serve)
+// The liquid in its tank and the plate above it, its face startGap spacings above the floor.
+struct SqueezeCase {
+  ParticleCloud fluid, tank, plate;
+  FlowSettings flowSettings;
+
+  SqueezeCase()
+      : fluid(testing::fluidBlock2D(columns, liquidRows, dx, Vector::Zero(), density, viscosity)),
+        tank(testing::tankWalls2D(columns, liquidRows + 8, dx)),
+        plate(testing::boxBody(plateColumns, plateLayers, 1, dx,
+                               Vector(first() * dx, startGap * dx, 0), true, "plate")) {
+    // the plate's cells hold no liquid (the fields are uniform: the first particle's serve)
     std::size_t count = 0;
     for (std::size_t i = 0; i < fluid.size(); ++i) {
       const Vector x = fluid.positions()[i];
       const int column = static_cast<int>(std::floor(x.x() / dx));
       const int row = static_cast<int>(std::floor(x.y() / dx));
-      if (!(column >= first && column < first + plateColumns && row >= startGap)) {
+      if (!(column >= first() && column < first() + plateColumns && row >= startGap)) {
         fluid.positions()[count++] = x;
       }
     }
     fluid.resize(count);
+    flowSettings.dimension = 2;
+    flowSettings.supportRadius = 3 * dx;
+    // p_max = 6 mu V a^2 / h^3 = 3,375 Pa at 4 dx when driven at V: 0.8 % of rho c^2 (at the
+    // 5 m/s of the first version, 13.5 %: the liquid compressed in the gap instead of flowing
+    // out, and the force read 21 % short at 4 dx)
+    flowSettings.soundSpeed = 20;
   }
-  auto tank = testing::tankWalls2D(columns, liquidRows + 8, dx);
-  auto plate = testing::boxBody(plateColumns, plateLayers, 1, dx,
-                                Vector(first * dx, startGap * dx, 0), true, "plate");
+  static int first() { return (columns - plateColumns) / 2; }
+};
+
+std::vector<GapForce> squeezePlate(const std::vector<double>& gaps) {
+  SqueezeCase squeeze;
+  ParticleCloud& plate = squeeze.plate;
   const double travel = (startGap - 2.5) * dx;
   RigidBodySettings settings;
   settings.name = settings.cloud = "plate";
   settings.density = 7850;
   settings.displacement = {{0.0, Vector::Zero()},
                            {travel / speed, Vector(0, -static_cast<Real>(travel), 0)}};
-  FlowSettings flowSettings;
-  flowSettings.dimension = 2;
-  flowSettings.supportRadius = 3 * dx;
-  flowSettings.soundSpeed = 5;  // p_max = 6 mu V a^2 / h^3 = 940 Pa at 3 dx: 0.4 % of rho c^2
+  FlowSettings& flowSettings = squeeze.flowSettings;
   Neighbourhood neighbourhood(flowSettings.supportRadius, flowSettings.periodic);
   RigidBody body(settings, plate, Vector::Zero());
-  WeaklyCompressibleFlow flow(flowSettings, fluid, {&tank, &plate}, neighbourhood);
+  WeaklyCompressibleFlow flow(flowSettings, squeeze.fluid, {&squeeze.tank, &plate}, neighbourhood);
   neighbourhood.addCloud(plate, Neighbourhood::Motion::rigid);
   flow.measureLoadOn(plate);
   neighbourhood.update();
@@ -99,19 +114,85 @@ std::vector<GapForce> squeezePlate(const std::vector<double>& gaps) {
   return result;
 }
 
-// a = 60 dx: the lubrication limit (h/a = 0.1 at 6 dx). Measured (doc/validation.md §1.7): the
-// force over Reynolds' is 1.004 / 0.895 / 0.790 / 0.620 at h = 6 / 5 / 4 / 3 dx: the gap's
-// flow is too easy when it is a few spacings across. The test holds the resolved gap to 10 % and
-// the thinner ones to an error that grows as the gap loses spacings (a resolution error).
+// a = 60 dx: the lubrication limit (h/a = 0.1 at 6 dx). Measured (doc/validation.md §1.7), at
+// c = 20 m/s: the force over Reynolds' is 1.116 / 1.041 / 0.987 / 0.872 at h = 6 / 5 / 4 / 3 dx:
+// above it where h/a is largest (the flow round the plate's edges, which lubrication leaves out:
+// at a = 20 dx it adds 10-40 %), short where the gap has few spacings. The test holds 5 and 4 dx
+// to 10 %, 6 dx to 15 % (its edge term), and the order.
 TEST(SqueezeFilm, ForceOnAnApproachingPlateIsReynoldsWhereTheGapIsResolved) {
   const std::vector<GapForce> forces = squeezePlate({6, 5, 4, 3});
   for (const GapForce& force : forces) {
     std::printf("gap %.3f dx: F / (8 mu V a^3 / h^3) = %.4f\n", force.gap, force.ratio);
   }
   ASSERT_EQ(forces.size(), 4u);
-  EXPECT_NEAR(forces[0].ratio, 1.0, 0.1) << "at a gap of 6 dx";
+  EXPECT_NEAR(forces[0].ratio, 1.0, 0.15) << "at a gap of 6 dx";
+  EXPECT_NEAR(forces[1].ratio, 1.0, 0.1) << "at a gap of 5 dx";
+  EXPECT_NEAR(forces[2].ratio, 1.0, 0.1) << "at a gap of 4 dx";
+  EXPECT_GT(forces[0].ratio, forces[1].ratio);
   EXPECT_GT(forces[1].ratio, forces[2].ratio);
   EXPECT_GT(forces[2].ratio, forces[3].ratio);
+}
+
+// The plate pressed by a constant force per unit depth (80 N/m: V = 0.01 m/s at h = 6 dx by
+// Reynolds), a dynamic body on the y axis, from 8 dx: the time its gap takes to close from 6 dx
+// to 5 and to 4 dx against h(t) above. Measured (doc/validation.md §1.7): 6 -> 5 dx in 1.048 and
+// 6 -> 4 dx in 1.023 of Reynolds' time (the force's edge excess of the prescribed test slows the
+// plate, its thin-gap deficit speeds it). The test holds both within 10 %.
+TEST(SqueezeFilm, GapUnderAConstantLoadClosesAsReynolds) {
+  SqueezeCase squeeze;
+  ParticleCloud& plate = squeeze.plate;
+  const double a = plateColumns * dx / 2, load = 80;
+  RigidBodySettings settings;
+  settings.name = settings.cloud = "plate";
+  settings.density = 7850;
+  settings.translation = RigidBodySettings::Translation::axis;
+  settings.axis = Vector::UnitY();
+  settings.rotationLocked = true;
+  settings.appliedForce = Vector(0, -load, 0);
+  FlowSettings& flowSettings = squeeze.flowSettings;
+  Neighbourhood neighbourhood(flowSettings.supportRadius, flowSettings.periodic);
+  RigidBody body(settings, plate, Vector::Zero());
+  WeaklyCompressibleFlow flow(flowSettings, squeeze.fluid, {&squeeze.tank, &plate}, neighbourhood);
+  neighbourhood.addCloud(plate, Neighbourhood::Motion::rigid);
+  flow.measureLoadOn(plate);
+  neighbourhood.update();
+  flow.start();
+  // the times the gap passes 6, 5 and 4 dx (interpolated within the step)
+  const std::vector<double> marks{6, 5, 4};
+  std::vector<double> passed(marks.size(), -1);
+  double time = 0, gap = startGap;
+  std::string limiter;
+  while (passed.back() < 0 && time < 5) {
+    const double dt = flow.stepLimits(0.25).smallest(limiter);
+    flow.kickAndDrift(dt);
+    body.kickAndDrift(dt, time + dt);
+    neighbourhood.update();
+    flow.keepClearOfWalls();
+    const WallLoad& wallLoad = flow.wallLoad(plate);
+    body.takeImpulse(wallLoad.clearanceImpulse, wallLoad.clearanceAngularImpulse, dt, time + dt);
+    flow.computeRatesAndKick(dt);
+    body.setLoadsAndKick(wallLoad.force, wallLoad.torque, dt, time + dt);
+    const double newGap = startGap + body.displacement().y() / dx;
+    for (std::size_t m = 0; m < marks.size(); ++m) {
+      if (passed[m] < 0 && newGap <= marks[m]) {
+        passed[m] = time + dt * (gap - marks[m]) / (gap - newGap);
+      }
+    }
+    gap = newGap;
+    time += dt;
+  }
+  ASSERT_GT(passed.back(), 0) << "the gap did not close to 4 dx in 5 s: " << gap << " dx";
+  const double h0 = marks[0] * dx;
+  for (std::size_t m = 1; m < marks.size(); ++m) {
+    const double h = marks[m] * dx;
+    const double reynolds = 4 * viscosity * a * a * a / (load * h0 * h0) * (h0 * h0 / (h * h) - 1);
+    const double ratio = (passed[m] - passed[0]) / reynolds;
+    std::printf("gap 6 -> %g dx in %.4f s, Reynolds %.4f s: %.4f\n", marks[m],
+                passed[m] - passed[0], reynolds, ratio);
+    RecordProperty("timeRatio6to" + std::to_string(static_cast<int>(marks[m])),
+                   std::to_string(ratio));
+    EXPECT_NEAR(ratio, 1.0, 0.1) << "6 -> " << marks[m] << " dx";
+  }
 }
 
 }  // namespace
