@@ -89,6 +89,11 @@ Vector RigidBody::angularVelocity() const {
   return inverseInertiaTimes(angularMomentum_);
 }
 
+bool RigidBody::motionAhead(double time) const {
+  if (settings_.prescribed()) return time < std::get<0>(settings_.displacement.back());
+  return time < settings_.releaseTime;
+}
+
 bool RigidBody::held(double stepStart) const {
   return !settings_.prescribed() && stepStart < settings_.releaseTime;
 }

@@ -89,6 +89,9 @@ class RigidBody {
   const Vector& force() const { return force_; }
   const Vector& fluidForce() const { return fluidForce_; }
   bool atEndStop() const { return atStop_; }
+  // Whether the body has motion still to come at `time` whatever the forces: held until a later
+  // release, or driven by a table that still changes (the cooling mode waits for it).
+  bool motionAhead(double time) const;
 
   // The first kick and the drift to time `timeAfter` = t + dt; moves the particles.
   void kickAndDrift(double deltaT, double timeAfter);

@@ -168,11 +168,23 @@ void CastingSolver::updateCoolingMode() {
     fastest = std::max(fastest, static_cast<double>(v.norm()));
   }
   // metal still being poured, or none yet, is not a still melt (measured: crossDitchPress
-  // entered the mode at t = 0 with its cloud empty, and its ladle fell 0.012 s behind)
-  bool pouring = fluid_->size() == 0;
-  for (const auto& inlet : inlets_) pouring = pouring || !inlet->finished(time_.value());
+  // entered the mode at t = 0 with its cloud empty, and its ladle fell 0.012 s behind); nor is
+  // a melt with a body moving on it or still to be let go or driven (the mode's slowed flow
+  // time would slow the body's fall or its table hundreds of times), nor one whose body was let
+  // go so lately that it cannot have passed stillSpeed yet (twice the time a free fall takes to
+  // reach it: one resting on something stays below it, one falling is then faster)
+  bool waiting = fluid_->size() == 0;
+  for (const auto& inlet : inlets_) waiting = waiting || !inlet->finished(time_.value());
+  const double g = gravity_.norm();
+  const double settle = g > 0 ? 2 * cooling.stillSpeed / g : 0;
+  for (const auto& body : bodies_) {
+    waiting = waiting || body->motionAhead(time_.value() - settle);
+    for (const Vector& v : body->cloud().vectorField("U")) {
+      fastest = std::max(fastest, static_cast<double>(v.norm()));
+    }
+  }
   const bool wasCooling = cooling_;
-  if (!cooling_ && fastest < cooling.stillSpeed && !pouring) cooling_ = true;
+  if (!cooling_ && fastest < cooling.stillSpeed && !waiting) cooling_ = true;
   if (cooling_ && fastest > cooling.movingSpeed) cooling_ = false;
   if (cooling_ == wasCooling) return;
   fluid_->attributes()["coolingMode"] = cooling_ ? 1 : 0;
