@@ -89,9 +89,13 @@ Vector RigidBody::angularVelocity() const {
   return inverseInertiaTimes(angularMomentum_);
 }
 
-bool RigidBody::motionAhead(double time) const {
-  if (settings_.prescribed()) return time < std::get<0>(settings_.displacement.back());
-  return time < settings_.releaseTime;
+bool RigidBody::driven(double time) const {
+  return settings_.prescribed() && time < std::get<0>(settings_.displacement.back());
+}
+
+bool RigidBody::letGoWithin(double time, double window) const {
+  return !settings_.prescribed() && settings_.releaseTime <= time &&
+         time < settings_.releaseTime + window;
 }
 
 bool RigidBody::held(double stepStart) const {

@@ -89,9 +89,11 @@ class RigidBody {
   const Vector& force() const { return force_; }
   const Vector& fluidForce() const { return fluidForce_; }
   bool atEndStop() const { return atStop_; }
-  // Whether the body has motion still to come at `time` whatever the forces: held until a later
-  // release, or driven by a table that still changes (the cooling mode waits for it).
-  bool motionAhead(double time) const;
+  // Whether a table drives the body at `time` (it still changes after it).
+  bool driven(double time) const;
+  // Whether the body was let go within `window` before `time` (releaseTime in (time - window,
+  // time]); a body never held was let go at 0.
+  bool letGoWithin(double time, double window) const;
 
   // The first kick and the drift to time `timeAfter` = t + dt; moves the particles.
   void kickAndDrift(double deltaT, double timeAfter);

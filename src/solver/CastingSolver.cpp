@@ -168,24 +168,30 @@ void CastingSolver::updateCoolingMode() {
     fastest = std::max(fastest, static_cast<double>(v.norm()));
   }
   // metal still being poured, or none yet, is not a still melt (measured: crossDitchPress
-  // entered the mode at t = 0 with its cloud empty, and its ladle fell 0.012 s behind); nor is
-  // a melt with a body moving on it or still to be let go or driven (the mode's slowed flow
-  // time would slow the body's fall or its table hundreds of times), nor one whose body was let
-  // go so lately that it cannot have passed stillSpeed yet (twice the time a free fall takes to
-  // reach it: one resting on something stays below it, one falling is then faster)
-  bool waiting = fluid_->size() == 0;
-  for (const auto& inlet : inlets_) waiting = waiting || !inlet->finished(time_.value());
+  // entered the mode at t = 0 with its cloud empty, and its ladle fell 0.012 s behind)
+  bool pouring = fluid_->size() == 0;
+  for (const auto& inlet : inlets_) pouring = pouring || !inlet->finished(time_.value());
+  // The bodies: the mode's slowed flow time would slow a body's motion hundreds of times, so a
+  // body driven by its table keeps the mode off, and one let go (it is held through the step in
+  // which its release time falls, and free from the next) ends it: within the last step, or
+  // twice the time a free fall takes to reach stillSpeed (one resting on something stays below
+  // it; one falling is faster by then, and its speed counts with the melt's).
   const double g = gravity_.norm();
   const double settle = g > 0 ? 2 * cooling.stillSpeed / g : 0;
+  const double window = std::max(settle, time_.state().deltaT * (1 + 1e-9));
+  std::string bodyMoves;
   for (const auto& body : bodies_) {
-    waiting = waiting || body->motionAhead(time_.value() - settle);
     for (const Vector& v : body->cloud().vectorField("U")) {
       fastest = std::max(fastest, static_cast<double>(v.norm()));
     }
+    if (body->driven(time_.value())) bodyMoves = "body " + body->settings().name + " is driven";
+    if (body->letGoWithin(time_.value(), window)) {
+      bodyMoves = "body " + body->settings().name + " was let go";
+    }
   }
   const bool wasCooling = cooling_;
-  if (!cooling_ && fastest < cooling.stillSpeed && !waiting) cooling_ = true;
-  if (cooling_ && fastest > cooling.movingSpeed) cooling_ = false;
+  if (!cooling_ && fastest < cooling.stillSpeed && !pouring && bodyMoves.empty()) cooling_ = true;
+  if (cooling_ && (fastest > cooling.movingSpeed || !bodyMoves.empty())) cooling_ = false;
   if (cooling_ == wasCooling) return;
   fluid_->attributes()["coolingMode"] = cooling_ ? 1 : 0;
   meanStableDeltaT_ = 0;  // the steps change length by design
@@ -195,9 +201,13 @@ void CastingSolver::updateCoolingMode() {
            << fastest << " m/s < " << cooling.stillSpeed << "): steps of the heat's length, each "
            << "followed by " << cooling.flowStepsPerHeatStep << " acoustic flow steps\n\n";
   } else {
-    info() << "Cooling paused at time " << time_.timeName() << ": the melt moves (max|U| "
-           << fastest << " m/s > " << cooling.movingSpeed
-           << "): every step acoustic again\n\n";
+    info() << "Cooling paused at time " << time_.timeName() << ": ";
+    if (!bodyMoves.empty()) {
+      info() << bodyMoves;
+    } else {
+      info() << "the melt moves (max|U| " << fastest << " m/s > " << cooling.movingSpeed << ")";
+    }
+    info() << ": every step acoustic again\n\n";
   }
 }
 

@@ -192,7 +192,8 @@ TEST(Archimedes, FloatsInPlaceForTenSecondsOffCentre) {
 }
 
 // The 3D box (8 x 8 x 4 particles at dx = 4 mm in a tank of 30 x 30 x 12 liquid particles):
-// minutes, so run on request (SPHCAST_ARCHIMEDES_3D=seconds). Measured: ARCH3D.
+// more than 20 minutes of CPU for 1.5 s, so run on request (SPHCAST_ARCHIMEDES_3D=seconds); not
+// measured yet.
 TEST(Archimedes, Study3D) {
   const char* seconds = std::getenv("SPHCAST_ARCHIMEDES_3D");
   if (!seconds) GTEST_SKIP() << "set SPHCAST_ARCHIMEDES_3D to the seconds to float";
