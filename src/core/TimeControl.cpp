@@ -15,11 +15,12 @@ namespace sphcast {
 namespace {
 
 const std::vector<std::string> controlDictKeys = {
-    "application",    "startFrom",     "startTime",    "stopAt",        "endTime",
-    "deltaT",         "maxDeltaT",     "adjustTimeStep", "maxCo",       "maxDi",        "writeControl",
-    "writeInterval",  "purgeWrite",    "timeFormat",   "timePrecision", "runTimeModifiable",
-    "logInterval",    "writeFormat",   "writePrecision", "writeCompression", "functions",
-    "healthChecks"};
+    "application",     "startFrom",         "startTime",     "stopAt",
+    "endTime",         "deltaT",            "maxDeltaT",     "adjustTimeStep",
+    "maxCo",           "maxDi",             "writeControl",  "writeInterval",
+    "purgeWrite",      "timeFormat",        "timePrecision", "runTimeModifiable",
+    "logInterval",     "writeFormat",       "writePrecision", "writeCompression",
+    "functions",       "healthChecks"};
 
 // Relative tolerance for "this step lands on that time": far below any step, far above rounding.
 constexpr double landingTolerance = 1e-9;

@@ -206,6 +206,7 @@ TEST_F(TimeControlTest, BadValuesNameTheKeyAndTheRule) {
       {"endTime 1; deltaT 0.01; writeInterval 2.5;",
        "'writeInterval' must be a whole number of steps with writeControl timeStep in controlDict"},
       {"endTime 1; deltaT 0.01; writeInterval 1; maxCo 2;", "'maxCo' must be in (0, 1] in controlDict"},
+      {"endTime 1; deltaT 0.01; writeInterval 1; maxDi 0.7;", "'maxDi' must be in (0, 0.5] in controlDict"},
       {"endTime 1; deltaT 0.01; writeInterval 1; stopAt sometime;", "unknown stopAt 'sometime'"},
   };
   for (const auto& [entries, expected] : cases) {
