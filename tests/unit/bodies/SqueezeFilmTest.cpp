@@ -83,7 +83,10 @@ std::vector<GapForce> squeezePlate(const std::vector<double>& gaps) {
   flow.start();
   const double a = plateColumns * dx / 2;
   std::vector<GapForce> result;
-  std::vector<double> sumForce(gaps.size(), 0), sumGap(gaps.size(), 0), weight(gaps.size(), 0);
+  struct Window {
+    double force = 0, gap = 0, weight = 0;  // time integrals while the gap is in the window
+  };
+  std::vector<Window> windows(gaps.size());
   double time = 0;
   std::string limiter;
   while (time < travel / speed) {
@@ -100,16 +103,16 @@ std::vector<GapForce> squeezePlate(const std::vector<double>& gaps) {
     const double gap = startGap + body.displacement().y() / dx;  // in dx
     for (std::size_t g = 0; g < gaps.size(); ++g) {
       if (std::abs(gap - gaps[g]) > 0.25) continue;
-      sumForce[g] += dt * (load.force.y() + clearance);
-      sumGap[g] += dt * gap;
-      weight[g] += dt;
+      windows[g].force += dt * (load.force.y() + clearance);
+      windows[g].gap += dt * gap;
+      windows[g].weight += dt;
     }
   }
   for (std::size_t g = 0; g < gaps.size(); ++g) {
-    const double gap = sumGap[g] / weight[g];
+    const double gap = windows[g].gap / windows[g].weight;
     const double h = gap * dx;
     const double reynolds = 8 * viscosity * speed * a * a * a / (h * h * h);
-    result.push_back({gap, sumForce[g] / weight[g] / reynolds});
+    result.push_back({gap, windows[g].force / windows[g].weight / reynolds});
   }
   return result;
 }
