@@ -192,8 +192,9 @@ TEST(Archimedes, FloatsInPlaceForTenSecondsOffCentre) {
 }
 
 // The 3D box (8 x 8 x 4 particles at dx = 4 mm in a tank of 30 x 30 x 12 liquid particles):
-// more than 20 minutes of CPU for 1.5 s, so run on request (SPHCAST_ARCHIMEDES_3D=seconds); not
-// measured yet.
+// 19 minutes on 2 threads for both boxes over 1.5 s, so run on request
+// (SPHCAST_ARCHIMEDES_3D=seconds). Measured: the draft 0.22 dx (0.5) and 0.18 dx (0.7) high, no
+// drift, no tilt.
 TEST(Archimedes, Study3D) {
   const char* seconds = std::getenv("SPHCAST_ARCHIMEDES_3D");
   if (!seconds) GTEST_SKIP() << "set SPHCAST_ARCHIMEDES_3D to the seconds to float";
