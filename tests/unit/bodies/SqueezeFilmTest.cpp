@@ -11,6 +11,8 @@
 
 #include <cmath>
 #include <cstdio>
+#include <optional>
+#include <string>
 #include <vector>
 
 #include "BodyTestCases.h"
@@ -33,12 +35,25 @@ struct GapForce {
   double ratio;  // mean SPH force over Reynolds' at that gap
 };
 
-// The liquid in its tank and the plate above it, its face startGap spacings above the floor.
+// The plate as a body (density of steel), with the motion's settings still to set.
+RigidBodySettings plateSettings() {
+  RigidBodySettings settings;
+  settings.name = settings.cloud = "plate";
+  settings.density = 7850;
+  return settings;
+}
+
+// The liquid in its tank and the plate above it, its face startGap spacings above the floor, a
+// body moving as `body` says, and the flow that loads it.
 struct SqueezeCase {
   ParticleCloud fluid, tank, plate;
   FlowSettings flowSettings;
+  std::optional<Neighbourhood> neighbourhood;
+  std::optional<RigidBody> body;
+  std::optional<WeaklyCompressibleFlow> flow;
+  double clearanceForce = 0;  // the wall clearance's impulse on the plate over the last step
 
-  SqueezeCase()
+  explicit SqueezeCase(const RigidBodySettings& bodySettings)
       : fluid(testing::fluidBlock2D(columns, liquidRows, dx, Vector::Zero(), density, viscosity)),
         tank(testing::tankWalls2D(columns, liquidRows + 8, dx)),
         plate(testing::boxBody(plateColumns, plateLayers, 1, dx,
@@ -60,27 +75,41 @@ struct SqueezeCase {
     // 5 m/s of the first version, 13.5 %: the liquid compressed in the gap instead of flowing
     // out, and the force read 21 % short at 4 dx)
     flowSettings.soundSpeed = 20;
+    neighbourhood.emplace(flowSettings.supportRadius, flowSettings.periodic);
+    body.emplace(bodySettings, plate, Vector::Zero());
+    flow.emplace(flowSettings, fluid, std::vector<const ParticleCloud*>{&tank, &plate},
+                 *neighbourhood);
+    neighbourhood->addCloud(plate, Neighbourhood::Motion::rigid);
+    flow->measureLoadOn(plate);
+    neighbourhood->update();
+    flow->start();
   }
   static int first() { return (columns - plateColumns) / 2; }
+
+  // One step of the flow's stable length, as the solver takes it with a body; returns its length.
+  double step(double time) {
+    std::string limiter;
+    const double dt = flow->stepLimits(0.25).smallest(limiter);
+    flow->kickAndDrift(dt);
+    body->kickAndDrift(dt, time + dt);
+    neighbourhood->update();
+    flow->keepClearOfWalls();
+    const WallLoad& load = flow->wallLoad(plate);
+    body->takeImpulse(load.clearanceImpulse, load.clearanceAngularImpulse, dt, time + dt);
+    clearanceForce = load.clearanceImpulse.y() / dt;
+    flow->computeRatesAndKick(dt);
+    body->setLoadsAndKick(load.force, load.torque, dt, time + dt);
+    return dt;
+  }
+  double gap() const { return startGap + body->displacement().y() / dx; }  // in dx
 };
 
 std::vector<GapForce> squeezePlate(const std::vector<double>& gaps) {
-  SqueezeCase squeeze;
-  ParticleCloud& plate = squeeze.plate;
   const double travel = (startGap - 2.5) * dx;
-  RigidBodySettings settings;
-  settings.name = settings.cloud = "plate";
-  settings.density = 7850;
+  RigidBodySettings settings = plateSettings();
   settings.displacement = {{0.0, Vector::Zero()},
                            {travel / speed, Vector(0, -static_cast<Real>(travel), 0)}};
-  FlowSettings& flowSettings = squeeze.flowSettings;
-  Neighbourhood neighbourhood(flowSettings.supportRadius, flowSettings.periodic);
-  RigidBody body(settings, plate, Vector::Zero());
-  WeaklyCompressibleFlow flow(flowSettings, squeeze.fluid, {&squeeze.tank, &plate}, neighbourhood);
-  neighbourhood.addCloud(plate, Neighbourhood::Motion::rigid);
-  flow.measureLoadOn(plate);
-  neighbourhood.update();
-  flow.start();
+  SqueezeCase squeeze(settings);
   const double a = plateColumns * dx / 2;
   std::vector<GapForce> result;
   struct Window {
@@ -88,22 +117,14 @@ std::vector<GapForce> squeezePlate(const std::vector<double>& gaps) {
   };
   std::vector<Window> windows(gaps.size());
   double time = 0;
-  std::string limiter;
   while (time < travel / speed) {
-    const double dt = flow.stepLimits(0.25).smallest(limiter);
+    const double dt = squeeze.step(time);
     time += dt;
-    flow.kickAndDrift(dt);
-    body.kickAndDrift(dt, time);
-    neighbourhood.update();
-    flow.keepClearOfWalls();
-    const WallLoad& load = flow.wallLoad(plate);
-    const double clearance = load.clearanceImpulse.y() / dt;
-    flow.computeRatesAndKick(dt);
-    body.setLoadsAndKick(load.force, load.torque, dt, time);
-    const double gap = startGap + body.displacement().y() / dx;  // in dx
+    const double gap = squeeze.gap();
+    const double force = squeeze.flow->wallLoad(squeeze.plate).force.y() + squeeze.clearanceForce;
     for (std::size_t g = 0; g < gaps.size(); ++g) {
       if (std::abs(gap - gaps[g]) > 0.25) continue;
-      windows[g].force += dt * (load.force.y() + clearance);
+      windows[g].force += dt * force;
       windows[g].gap += dt * gap;
       windows[g].weight += dt;
     }
@@ -142,40 +163,20 @@ TEST(SqueezeFilm, ForceOnAnApproachingPlateIsReynoldsWhereTheGapIsResolved) {
 // 6 -> 4 dx in 1.023 of Reynolds' time (the force's edge excess of the prescribed test slows the
 // plate, its thin-gap deficit speeds it). The test holds both within 10 %.
 TEST(SqueezeFilm, GapUnderAConstantLoadClosesAsReynolds) {
-  SqueezeCase squeeze;
-  ParticleCloud& plate = squeeze.plate;
   const double a = plateColumns * dx / 2, load = 80;
-  RigidBodySettings settings;
-  settings.name = settings.cloud = "plate";
-  settings.density = 7850;
+  RigidBodySettings settings = plateSettings();
   settings.translation = RigidBodySettings::Translation::axis;
   settings.axis = Vector::UnitY();
   settings.rotationLocked = true;
   settings.appliedForce = Vector(0, -load, 0);
-  FlowSettings& flowSettings = squeeze.flowSettings;
-  Neighbourhood neighbourhood(flowSettings.supportRadius, flowSettings.periodic);
-  RigidBody body(settings, plate, Vector::Zero());
-  WeaklyCompressibleFlow flow(flowSettings, squeeze.fluid, {&squeeze.tank, &plate}, neighbourhood);
-  neighbourhood.addCloud(plate, Neighbourhood::Motion::rigid);
-  flow.measureLoadOn(plate);
-  neighbourhood.update();
-  flow.start();
+  SqueezeCase squeeze(settings);
   // the times the gap passes 6, 5 and 4 dx (interpolated within the step)
   const std::vector<double> marks{6, 5, 4};
   std::vector<double> passed(marks.size(), -1);
   double time = 0, gap = startGap;
-  std::string limiter;
   while (passed.back() < 0 && time < 5) {
-    const double dt = flow.stepLimits(0.25).smallest(limiter);
-    flow.kickAndDrift(dt);
-    body.kickAndDrift(dt, time + dt);
-    neighbourhood.update();
-    flow.keepClearOfWalls();
-    const WallLoad& wallLoad = flow.wallLoad(plate);
-    body.takeImpulse(wallLoad.clearanceImpulse, wallLoad.clearanceAngularImpulse, dt, time + dt);
-    flow.computeRatesAndKick(dt);
-    body.setLoadsAndKick(wallLoad.force, wallLoad.torque, dt, time + dt);
-    const double newGap = startGap + body.displacement().y() / dx;
+    const double dt = squeeze.step(time);
+    const double newGap = squeeze.gap();
     for (std::size_t m = 0; m < marks.size(); ++m) {
       if (passed[m] < 0 && newGap <= marks[m]) {
         passed[m] = time + dt * (gap - marks[m]) / (gap - newGap);

@@ -64,6 +64,32 @@ TestWall circle(Real radius) {
   return wall;
 }
 
+// A block of nx x ny x nz lattice cells from the origin, filled with particles as
+// particleizeMold fills a volume: each particle's normal out through its nearest face (the first
+// in x, y, z order on ties) and its depth behind that face.
+TestWall filledBox(int nx, int ny, int nz) {
+  TestWall wall;
+  const Vector upper(nx * dx, ny * dx, nz * dx);
+  for (int i = 0; i < nx; ++i) {
+    for (int j = 0; j < ny; ++j) {
+      for (int k = 0; k < nz; ++k) {
+        const Vector p((i + Real(0.5)) * dx, (j + Real(0.5)) * dx, (k + Real(0.5)) * dx);
+        const Vector toLower = p, toUpper = upper - p;
+        Real depth = toLower.x();
+        Vector normal(-1, 0, 0);
+        for (int a = 0; a < 3; ++a) {
+          if (toLower[a] < depth) depth = toLower[a], normal = -Vector::Unit(a);
+          if (toUpper[a] < depth) depth = toUpper[a], normal = Vector::Unit(a);
+        }
+        wall.position.push_back(p);
+        wall.normal.push_back(normal);
+        wall.depth.push_back(depth);
+      }
+    }
+  }
+  return wall;
+}
+
 TEST(WallSurfaceDistance, FlatWallGivesTheExactHeightAboveTheSurface) {
   TestWall wall = flatFloor();
   const std::vector<Vector> fluid{
@@ -137,26 +163,8 @@ TEST(WallSurfaceDistance, ConcaveCornerGivesTheNearerWall) {
 // (measured before: the smallest plane distance over the wall particles within dx put a
 // particle above the obstacle of SPHERIC Test 2 4 dx behind a wall); never one behind a wall.
 TEST(WallSurfaceDistance, ConvexEdgesAndThinFilledBodiesGiveTheDistanceToTheNearestFace) {
-  TestWall wall;
   const Vector lower(0, 0, 0), upper(3 * dx, 8 * dx, 8 * dx);  // a plate 3 dx thick
-  for (int i = 0; i < 3; ++i) {
-    for (int j = 0; j < 8; ++j) {
-      for (int k = 0; k < 8; ++k) {
-        const Vector p((i + Real(0.5)) * dx, (j + Real(0.5)) * dx, (k + Real(0.5)) * dx);
-        // the nearest face (first in x, y, z order on ties) and the depth behind it
-        const Vector toLower = p - lower, toUpper = upper - p;
-        Real depth = toLower.x();
-        Vector normal(-1, 0, 0);
-        for (int a = 0; a < 3; ++a) {
-          if (toLower[a] < depth) depth = toLower[a], normal = -Vector::Unit(a);
-          if (toUpper[a] < depth) depth = toUpper[a], normal = Vector::Unit(a);
-        }
-        wall.position.push_back(p);
-        wall.normal.push_back(normal);
-        wall.depth.push_back(depth);
-      }
-    }
-  }
+  TestWall wall = filledBox(3, 8, 8);
   // exact distances outside the box: the Euclidean distance to it
   auto outside = [&](const Vector& x) { return (x.cwiseMax(lower).cwiseMin(upper) - x).norm(); };
   const std::vector<Vector> fluid{
@@ -184,25 +192,7 @@ TEST(WallSurfaceDistance, ConvexEdgesAndThinFilledBodiesGiveTheDistanceToTheNear
 // (tutorials/crossDitchPress at dx = 3 mm). The depth must be the nearest face's, and the normal
 // that face's, so that the clearance moves the particle out through it.
 TEST(WallSurfaceDistance, InsideAConvexEdgeOrCornerTheNearestFaceGivesTheDepth) {
-  TestWall wall;
-  const Vector lower(0, 0, 0), upper(8 * dx, 8 * dx, 8 * dx);
-  for (int i = 0; i < 8; ++i) {
-    for (int j = 0; j < 8; ++j) {
-      for (int k = 0; k < 8; ++k) {
-        const Vector p((i + Real(0.5)) * dx, (j + Real(0.5)) * dx, (k + Real(0.5)) * dx);
-        const Vector toLower = p - lower, toUpper = upper - p;
-        Real depth = toLower.x();
-        Vector normal(-1, 0, 0);
-        for (int a = 0; a < 3; ++a) {
-          if (toLower[a] < depth) depth = toLower[a], normal = -Vector::Unit(a);
-          if (toUpper[a] < depth) depth = toUpper[a], normal = Vector::Unit(a);
-        }
-        wall.position.push_back(p);
-        wall.normal.push_back(normal);
-        wall.depth.push_back(depth);
-      }
-    }
-  }
+  TestWall wall = filledBox(8, 8, 8);
   struct Probe {
     Vector x;
     Real depth;  // behind the nearest face
