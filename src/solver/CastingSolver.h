@@ -131,7 +131,7 @@ class CastingSolver {
   // The cell grids and pair lists of every model, built once per step (with flow or heat).
   std::unique_ptr<Neighbourhood> neighbourhood_;
   std::unique_ptr<WeaklyCompressibleFlow> flow_;
-  std::unique_ptr<SurfaceEnergyTension> surfaceTension_;  // a force model of the flow
+  std::unique_ptr<SurfaceTensionModel> surfaceTension_;  // a force model of the flow
   ParticleCloud* fluid_ = nullptr;
   std::unique_ptr<EnergyEquation> energy_;
   std::unique_ptr<Solidification> solidification_;  // follows the fluid's T after heat steps

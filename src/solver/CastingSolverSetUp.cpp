@@ -230,41 +230,12 @@ void CastingSolver::setUpFlow() {
   if (surfaceTensionSetup_.enabled) {
     SurfaceTensionSettings tension = surfaceTensionSetup_.settings;
     tension.spacing = static_cast<Real>(fluid.attributes().at("spacing"));
-    surfaceTension_ =
-        std::make_unique<SurfaceEnergyTension>(tension, fluid, walls, *neighbourhood_);
+    surfaceTension_ = makeSurfaceTensionModel(surfaceTensionSetup_.model, tension, fluid, walls,
+                                              *neighbourhood_);
     flow_->addForceModel(*surfaceTension_);
-    const TemperatureTable& gamma = *tension.gasTension;
-    info() << "Surface tension: surface energy (paper eqs. (7)-(12)), R_d = "
-           << surfaceTension_->energyFactor()
-           << (tension.energyFactor > 0 ? "" : " (calibrated on a relaxed surface)") << ", Gamma_g "
-           << gamma.description()
-           << (gamma.isConstant() ? " = " + std::to_string(gamma(0)) + " N/m" : " (a table in T)")
-           << '\n';
-    const double compression = surfaceTension_->surfaceCompression(settings.soundSpeed);
-    info() << "    surface layer's compression R_d Gamma_g / (rho c^2 dx) = " << 100 * compression
-           << " % (at the particles' T now)\n";
-    if (compression > 0.03) {
-      warning("the surface tension compresses the surface layer by " +
-              std::to_string(100 * compression) +
-              " % of its density (R_d Gamma_g / (rho c^2 dx)): raise soundSpeed in system/sphSchemes "
-              "towards " +
-              std::to_string(settings.soundSpeed * std::sqrt(compression / 0.01)) +
-              " m/s for 1 %; the calibration of R_d was measured at 0.3 to 3 %");
-    }
-    if (!walls.empty()) {
-      info() << "    at the walls: "
-             << (tension.solidTension
-                     ? "Gamma_s = " + std::to_string(*tension.solidTension) + " N/m"
-                     : "contact angle " +
-                           std::to_string(
-                               std::acos(static_cast<double>(
-                                   tension.cosContactAngle ? *tension.cosContactAngle : Real(-1))) *
-                               180 / std::numbers::pi) +
-                           " degrees")
-             << ", chi over "
-             << (tension.wallSmoothing > 0 ? tension.wallSmoothing : tension.supportRadius)
-             << " m\n";
-    }
+    info() << "Surface tension: " << surfaceTension_->summary(settings.soundSpeed) << '\n';
+    const std::string warned = surfaceTension_->settingsWarning(settings.soundSpeed);
+    if (!warned.empty()) warning(warned);
   }
 }
 

@@ -33,11 +33,20 @@ SurfaceTensionSetup readSurfaceTensionSetup(const CaseFolder& caseFolder, const 
   const Dictionary models = Dictionary::read(modelsFile);
   if (!models.found("surfaceTension")) return setup;
   const Dictionary& dict = models.subDict("surfaceTension");
-  dict.checkKeys({"model", "energyFactor", "contactAngle", "solidTension", "wallSmoothing",
-                  "coreRadius", "densityCoupling"});
-  if (dict.getChoice("model", {"none", "surfaceEnergy"}) == "none") return setup;
+  std::vector<std::string> choices{"none"};
+  for (const std::string& name : surfaceTensionModelNames()) choices.push_back(name);
+  setup.model = dict.getChoiceOrDefault("model", choices, surfaceTensionModelNames().front());
+  if (setup.model == "none") return setup;
+  const bool energy = setup.model == "surfaceEnergy";
+  // each model's keys: a key of the other model is a mistake, not something to ignore
+  if (energy) {
+    dict.checkKeys({"model", "energyFactor", "contactAngle", "solidTension", "wallSmoothing",
+                    "coreRadius", "densityCoupling"});
+  } else {
+    dict.checkKeys({"model", "contactAngle"});
+  }
   if (!flow.enabled) {
-    throw DictionaryError(dict.location("model"),
+    throw DictionaryError(dict.found("model") ? dict.location("model") : models.location("surfaceTension"),
                           "surface tension acts on the flow's fluid, but " + models.name() +
                               " has no flow (flow { model weaklyCompressible; ... })");
   }
@@ -73,7 +82,7 @@ SurfaceTensionSetup readSurfaceTensionSetup(const CaseFolder& caseFolder, const 
       throw DictionaryError(dict.location("contactAngle"),
                             "'contactAngle' must lie in [0, 180] degrees in " + dict.name());
     }
-    if (degrees < 90) {
+    if (energy && degrees < 90) {
       throw DictionaryError(dict.location("contactAngle"), wettingUnsupported(dict.name()));
     }
     settings.cosContactAngle = static_cast<Real>(std::cos(degrees * std::numbers::pi / 180));

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <sstream>
 #include <type_traits>
 
 #include "core/Error.h"
@@ -136,6 +137,39 @@ double SurfaceEnergyTension::stableDeltaT() const {
   if (!(largest > 0)) return std::numeric_limits<double>::max();
   const double dx = static_cast<double>(settings_.spacing);
   return 0.25 * std::sqrt(lightestDensity() * dx * dx * dx / (2 * std::numbers::pi * largest));
+}
+
+std::string SurfaceEnergyTension::summary(double soundSpeed) const {
+  const TemperatureTable& gamma = *settings_.gasTension;
+  std::ostringstream text;
+  text << "surface energy (paper eqs. (7)-(12)), R_d = " << energyFactor_
+       << (settings_.energyFactor > 0 ? "" : " (calibrated on a relaxed surface)") << ", Gamma_g "
+       << gamma.description()
+       << (gamma.isConstant() ? " = " + std::to_string(gamma(0)) + " N/m" : " (a table in T)")
+       << "\n    surface layer's compression R_d Gamma_g / (rho c^2 dx) = "
+       << 100 * surfaceCompression(soundSpeed) << " % (at the particles' T now)";
+  if (!walls_.empty()) {
+    text << "\n    at the walls: ";
+    if (settings_.solidTension) {
+      text << "Gamma_s = " << *settings_.solidTension << " N/m";
+    } else {
+      const double cosine = settings_.cosContactAngle ? *settings_.cosContactAngle : -1.0;
+      text << "contact angle " << std::acos(cosine) * 180 / std::numbers::pi << " degrees";
+    }
+    text << ", chi over " << wallSmoothing_ << " m";
+  }
+  return text.str();
+}
+
+std::string SurfaceEnergyTension::settingsWarning(double soundSpeed) const {
+  const double compression = surfaceCompression(soundSpeed);
+  if (!(compression > 0.03)) return {};
+  return "the surface tension compresses the surface layer by " +
+         std::to_string(100 * compression) +
+         " % of its density (R_d Gamma_g / (rho c^2 dx)): raise soundSpeed in system/sphSchemes "
+         "towards " +
+         std::to_string(soundSpeed * std::sqrt(compression / 0.01)) +
+         " m/s for 1 %; the calibration of R_d was measured at 0.3 to 3 %";
 }
 
 double SurfaceEnergyTension::surfaceCompression(double soundSpeed) const {

@@ -9,38 +9,9 @@
 #include "particles/Neighbourhood.h"
 #include "particles/ParticleCloud.h"
 #include "particles/WendlandKernel.h"
-#include "sph/FluidForceModel.h"
+#include "surface/SurfaceTensionModel.h"
 
 namespace sphcast {
-
-// The constants of the surface-energy surface tension.
-struct SurfaceTensionSettings {
-  int dimension = 3;
-  Real supportRadius = 0;  // h
-  Real spacing = 0;        // dx, for the capillary step limit and the calibrated R_d
-  // R_d of eq. (10); 0: calibrated for the dimension and h/dx (calibratedEnergyFactor)
-  Real energyFactor = 0;
-  // Gamma_g(T), N/m: the fluid's material table, or a constant; at T where it is 0 (the solid
-  // rows of AC4CH) a particle carries no surface energy.
-  std::optional<TemperatureTable> gasTension;
-  // The wall: cos(theta) of the contact angle (Gamma_s = -cos(theta) Gamma_g(T)), or Gamma_s
-  // itself (N/m), one of them; 180 degrees by default (Gamma_s = Gamma_g: the wall is like air).
-  std::optional<Real> cosContactAngle;
-  std::optional<Real> solidTension;
-  // eps of eq. (9), m; 0: h
-  Real wallSmoothing = 0;
-  // r0 of the granularity kernel (GranularityKernel), in spacings
-  Real coreRadius = 1;
-  // The energy depends on the densities too (V_j = m_j / rho_j in s_i, q_i, V_i^(1-1/d)); the
-  // continuity equation changes them as the particles move, and that part of -dE/dt acts as a
-  // pressure p_j = rho_j^2 Psi_j / m_j, Psi_j = dE/drho_j. Without it (off only to compare) the
-  // force is -dE/dx at fixed densities alone, and the surface layer's crowding is resisted by
-  // nothing in the energy: the static drop's pressure came out 10 times Laplace's.
-  bool densityCoupling = true;
-  // Skip the pairs that carry no force (both ends inside the fluid, where g = 0); off only to
-  // measure what it saves.
-  bool surfaceParticlesOnly = true;
-};
 
 // Surface tension from the surface energy (paper §3, eqs. (6)-(12); doc/physics.md §10.1):
 //
@@ -81,13 +52,16 @@ struct SurfaceTensionSettings {
 // Reads the fluid's positions, mass, rho, T (when Gamma_g is a table); the walls' normal and
 // wallDistance (as the flow does). Adds to `acceleration`; writes the field `surfaceEnergy`
 // (R_d g Gamma V^(1-1/d) per particle, J in 3D, J/m in 2D: where the surface is, for ParaView).
-class SurfaceEnergyTension : public FluidForceModel {
+class SurfaceEnergyTension : public SurfaceTensionModel {
  public:
   // Registers the fluid-fluid and fluid-wall pairs in the neighbourhood the flow searches.
   SurfaceEnergyTension(SurfaceTensionSettings settings, ParticleCloud& fluid,
                        std::vector<const ParticleCloud*> walls, Neighbourhood& neighbourhood);
 
   std::string limitName() const override { return "capillary"; }
+  std::string summary(double soundSpeed) const override;
+  // When the surface layer's compression R_d Gamma / (rho c^2 dx) passes 3 %.
+  std::string settingsWarning(double soundSpeed) const override;
   void addAcceleration() override;
   // The capillary limit 0.25 sqrt(rho_min dx^3 / (2 pi Gamma_max)) (Brackbill, Kothe & Zemach
   // 1992): the step must resolve the fastest capillary wave the particles carry.

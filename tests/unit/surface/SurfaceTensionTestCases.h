@@ -6,6 +6,7 @@
 #include <cmath>
 #include <functional>
 #include <memory>
+#include <numbers>
 #include <random>
 #include <string>
 #include <vector>
@@ -14,6 +15,7 @@
 #include "materials/MaterialLibrary.h"
 #include "particles/Neighbourhood.h"
 #include "sph/WeaklyCompressibleFlow.h"
+#include "surface/ContinuumSurfaceForce.h"
 #include "surface/SurfaceEnergyTension.h"
 
 namespace sphcast::testing {
@@ -99,9 +101,58 @@ inline ParticleCloud latticeFluid(int dimension, Real dx, const Vector& lower, c
   return fluid;
 }
 
-// A flow with surface tension over one shared neighbourhood, stepped as the solver's evolve()
-// steps it: kick and drift, search, wall clearance, rates (the flow's, then the surface
-// tension's) and kick.
+// A drop of radius R = layers dx centred on the origin, built of rings (2D) or shells (3D) of
+// radius (k + 1/2) dx, k < layers, each with as many evenly spread particles as it has spacings
+// of circumference (2D) or squared spacings of area (3D, on a Fibonacci spiral): a round drop
+// without a lattice's staircase, every particle carrying about dx^d, at rest at density rho.
+inline ParticleCloud ringFluid(int dimension, Real dx, int layers, Real rho, Real mu) {
+  std::vector<Vector> positions;
+  const double pi = std::numbers::pi;
+  const double golden = pi * (3 - std::sqrt(5.0));
+  for (int k = 0; k < layers; ++k) {
+    const double r = (k + 0.5) * dx;
+    if (dimension == 2) {
+      const int count = std::max(1, static_cast<int>(std::lround(2 * pi * r / dx)));
+      const double offset = 0.5 * (k % 2);  // alternate rings half a step apart
+      for (int m = 0; m < count; ++m) {
+        const double angle = 2 * pi * (m + offset) / count;
+        positions.emplace_back(r * std::cos(angle), r * std::sin(angle), 0);
+      }
+    } else {
+      const int count = std::max(1, static_cast<int>(std::lround(4 * pi * r * r / (dx * dx))));
+      for (int m = 0; m < count; ++m) {
+        const double z = count == 1 ? 0 : 1 - 2 * (m + 0.5) / count;
+        const double ring = std::sqrt(std::max(0.0, 1 - z * z));
+        const double angle = golden * m + k;  // each shell turned
+        positions.emplace_back(r * ring * std::cos(angle), r * ring * std::sin(angle), r * z);
+      }
+    }
+  }
+  ParticleCloud fluid("fluid");
+  fluid.resize(positions.size());
+  auto& U = fluid.addVectorField("U");
+  auto& density = fluid.addScalarField("rho");
+  auto& mass = fluid.addScalarField("mass");
+  auto& viscosity = fluid.addScalarField("viscosity");
+  auto& rest = fluid.addScalarField("restDensity");
+  fluid.addVectorField("acceleration");
+  fluid.addScalarField("densityRate");
+  for (std::size_t i = 0; i < positions.size(); ++i) {
+    fluid.positions()[i] = positions[i];
+    U[i] = Vector::Zero();
+    density[i] = rest[i] = rho;
+    mass[i] = rho * std::pow(dx, dimension);
+    viscosity[i] = mu;
+  }
+  fluid.attributes()["spacing"] = dx;
+  return fluid;
+}
+
+// A flow with surface tension (the model Tension: SurfaceEnergyTension or
+// ContinuumSurfaceForce) over one shared neighbourhood, stepped as the solver's evolve() steps
+// it: kick and drift, search, wall clearance, rates (the flow's, then the surface tension's) and
+// kick.
+template <class Tension = SurfaceEnergyTension>
 struct CapillaryRun {
   CapillaryRun(const FlowSettings& flowSettings, const SurfaceTensionSettings& tensionSettings,
                ParticleCloud& fluid, std::vector<const ParticleCloud*> walls)
@@ -128,7 +179,7 @@ struct CapillaryRun {
 
   Neighbourhood neighbourhood;
   WeaklyCompressibleFlow flow;
-  SurfaceEnergyTension tension;
+  Tension tension;
   double time = 0;
 
  private:

@@ -1,0 +1,59 @@
+// The registration of the surface-tension models: the one place that maps the names of
+// constant/physicsModels to constructors.
+
+#include "surface/SurfaceTensionModel.h"
+
+#include <functional>
+#include <utility>
+
+#include "core/Error.h"
+#include "surface/ContinuumSurfaceForce.h"
+#include "surface/SurfaceEnergyTension.h"
+
+namespace sphcast {
+
+namespace {
+
+using Constructor = std::function<std::unique_ptr<SurfaceTensionModel>(
+    const SurfaceTensionSettings&, ParticleCloud&, std::vector<const ParticleCloud*>,
+    Neighbourhood&)>;
+
+template <class Model>
+Constructor constructorOf() {
+  return [](const SurfaceTensionSettings& settings, ParticleCloud& fluid,
+            std::vector<const ParticleCloud*> walls, Neighbourhood& neighbourhood) {
+    return std::make_unique<Model>(settings, fluid, std::move(walls), neighbourhood);
+  };
+}
+
+const std::vector<std::pair<std::string, Constructor>>& registry() {
+  static const std::vector<std::pair<std::string, Constructor>> models{
+      {"continuumSurfaceForce", constructorOf<ContinuumSurfaceForce>()},
+      {"surfaceEnergy", constructorOf<SurfaceEnergyTension>()},
+  };
+  return models;
+}
+
+}  // namespace
+
+const std::vector<std::string>& surfaceTensionModelNames() {
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> list;
+    for (const auto& [name, constructor] : registry()) list.push_back(name);
+    return list;
+  }();
+  return names;
+}
+
+std::unique_ptr<SurfaceTensionModel> makeSurfaceTensionModel(
+    const std::string& name, const SurfaceTensionSettings& settings, ParticleCloud& fluid,
+    std::vector<const ParticleCloud*> walls, Neighbourhood& neighbourhood) {
+  for (const auto& [known, constructor] : registry()) {
+    if (known == name) return constructor(settings, fluid, std::move(walls), neighbourhood);
+  }
+  std::string valid;
+  for (const std::string& known : surfaceTensionModelNames()) valid += " " + known;
+  throw Error("unknown surface-tension model '" + name + "'; valid:" + valid);
+}
+
+}  // namespace sphcast
