@@ -21,7 +21,9 @@ const Dimensions tension{{1, 0, -2, 0, 0, 0, 0}};
 // 60-degree wall threw particles off, then went non-finite (doc/validation.md §2).
 std::string wettingUnsupported(const std::string& dictName) {
   return "a wetting wall (contactAngle below 90 degrees, solidTension below 0) is not "
-         "supported in " + dictName + ": with Gamma_s < 0 the surface energy falls as the "
+         "supported in " +
+         dictName +
+         ": with Gamma_s < 0 the surface energy falls as the "
          "particles at the wall move apart, and they do (doc/physics.md section 10.1)";
 }
 }  // namespace
@@ -36,19 +38,21 @@ SurfaceTensionSetup readSurfaceTensionSetup(const CaseFolder& caseFolder, const 
   std::vector<std::string> choices{"none"};
   for (const std::string& name : surfaceTensionModelNames()) choices.push_back(name);
   setup.model = dict.getChoiceOrDefault("model", choices, surfaceTensionModelNames().front());
-  if (setup.model == "none") return setup;
   const bool energy = setup.model == "surfaceEnergy";
-  // each model's keys: a key of the other model is a mistake, not something to ignore
-  if (energy) {
+  // each model's keys: a key of the other model is a mistake, not something to ignore (with
+  // none, any model's key may wait there)
+  if (energy || setup.model == "none") {
     dict.checkKeys({"model", "energyFactor", "contactAngle", "solidTension", "wallSmoothing",
                     "coreRadius", "densityCoupling"});
   } else {
     dict.checkKeys({"model", "contactAngle"});
   }
+  if (setup.model == "none") return setup;
   if (!flow.enabled) {
-    throw DictionaryError(dict.found("model") ? dict.location("model") : models.location("surfaceTension"),
-                          "surface tension acts on the flow's fluid, but " + models.name() +
-                              " has no flow (flow { model weaklyCompressible; ... })");
+    throw DictionaryError(
+        dict.found("model") ? dict.location("model") : models.location("surfaceTension"),
+        "surface tension acts on the flow's fluid, but " + models.name() +
+            " has no flow (flow { model weaklyCompressible; ... })");
   }
   setup.enabled = true;
   SurfaceTensionSettings& settings = setup.settings;

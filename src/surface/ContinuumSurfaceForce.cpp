@@ -1,6 +1,8 @@
 #include "surface/ContinuumSurfaceForce.h"
 
 #include <algorithm>
+#include <atomic>
+#include <cstdint>
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -111,8 +113,8 @@ Real SurfaceDepthProfile::colour(Real depth) const {
   if (!(depth > 0)) return colour_.front();
   if (!(depth < h_)) return colour_.back();
   const Real position = depth / h_ * Real(profileIntervals);
-  const std::size_t k = std::min(static_cast<std::size_t>(position),
-                                 static_cast<std::size_t>(profileIntervals - 1));
+  const std::size_t k =
+      std::min(static_cast<std::size_t>(position), static_cast<std::size_t>(profileIntervals - 1));
   const Real fraction = position - Real(k);
   return colour_[k] + fraction * (colour_[k + 1] - colour_[k]);
 }
@@ -135,8 +137,9 @@ ContinuumSurfaceForce::ContinuumSurfaceForce(SurfaceTensionSettings settings, Pa
       neighbourhood_(neighbourhood) {
   if (!settings_.gasTension) throw Error("surface tension: no sigma given");
   if (settings_.solidTension) {
-    throw Error("surface tension: the continuum surface force takes the contact angle, not "
-                "Gamma_s");
+    throw Error(
+        "surface tension: the continuum surface force takes the contact angle, not "
+        "Gamma_s");
   }
   if (!settings_.gasTension->isConstant() && !fluid_.hasScalarField("T")) {
     throw DictionaryError(settings_.gasTension->location(),
@@ -218,7 +221,8 @@ void ContinuumSurfaceForce::computeColourAndNormal() {
   const auto& x = fluid_.positions();
   const NeighbourList& pairs = neighbourhood_.pairs(fluid_, fluid_);
   std::vector<const NeighbourList*> wallPairs;
-  for (const ParticleCloud* wall : walls_) wallPairs.push_back(&neighbourhood_.pairs(fluid_, *wall));
+  for (const ParticleCloud* wall : walls_)
+    wallPairs.push_back(&neighbourhood_.pairs(fluid_, *wall));
   const PeriodicBox periodic = neighbourhood_.periodicBox();
   const Real bulk = bulkColour_;
   const Real threshold = Real(0.1) * surfaceGradient_;
@@ -297,11 +301,15 @@ void ContinuumSurfaceForce::turnNormalsAtWalls() {
     const Vector& normal = unitNormal_[i];
     Vector along = normal - normal.dot(wallNormal) * wallNormal;
     const Real alongLength = along.norm();
-    // a surface parallel to the wall (a film): no contact line here
-    if (!(alongLength > Real(1e-3))) continue;
+    // A surface parallel to the wall (a film, the underside of a drop) meets it nowhere: its
+    // direction along the wall is noise, and turned by it the normals scattered (a 150-degree
+    // drop threw particles out). The turn fades as the surface comes within 15 degrees of
+    // parallel to the wall, in full from 30.
+    const Real meets = smoothstep(Real(4) * alongLength - Real(1));
+    if (!(meets > 0)) continue;
     along /= alongLength;
     const Vector contact = cosTheta_ * wallNormal + sinTheta_ * along;
-    const Real turned = Real(1) - smoothstep(wall.distance / h);
+    const Real turned = meets * (Real(1) - smoothstep(wall.distance / h));
     const Vector blended = (Real(1) - turned) * normal + turned * contact;
     const Real length = blended.norm();
     if (length > 0) unitNormal_[i] = blended / length;
@@ -326,15 +334,20 @@ void ContinuumSurfaceForce::computeCurvature() {
   // a twentieth of the kernel's sum over a full neighbourhood (1)
   constexpr Real fewestWeight = Real(0.05);
   std::vector<Real> levelKappa(n, 0);
+  // the surface particles and their neighbours (marked by the first pass; a flag set to 1 by
+  // any thread, so the set does not depend on the order)
+  std::vector<std::uint8_t> nearSurface(n, 0);
   std::vector<Real> kappaWeight(n, 0);  // the surface weight, times a ramp for few neighbours
   const Real* weightOf = surfaceWeight_.data();
   auto pass = [&](auto separation) {
 #pragma omp parallel for schedule(static)
     for (std::size_t i = 0; i < n; ++i) {
       if (!onSurface_[i]) continue;
+      std::atomic_ref<std::uint8_t>(nearSurface[i]).store(1, std::memory_order_relaxed);
       const Vector& ni = unitNormal_[i];
       Real numerator = 0, denominator = 0;
       for (const std::uint32_t j : pairs.of(i)) {
+        std::atomic_ref<std::uint8_t>(nearSurface[j]).store(1, std::memory_order_relaxed);
         if (!onSurface_[j]) continue;
         const Vector xij = separation(x[i], x[j]);
         const Real r = xij.norm();
@@ -359,10 +372,16 @@ void ContinuumSurfaceForce::computeCurvature() {
   // (only where the force will act: a colour gradient from 0.2 % of a face's on, in full from
   // 0.4 %; a lattice's bulk has 0. At 1 % the 2D drop's period at 30 across was 0.7 % longer)
   const Real smallest = Real(0.002) * surfaceGradient_;
+  // A surface curved more tightly than a sphere of radius h (a drop of fewer than 6 particles
+  // across, a hole of a spacing in the liquid) is not resolved: its curvature is read as that
+  // sphere's. Unbounded, the holes a ring-built drop's cut base left read 4 / dx and threw
+  // particles out.
+  const Real largest = tangential / settings_.supportRadius;
   auto smoothing = [&](auto separation) {
 #pragma omp parallel for schedule(dynamic, 256)
     for (std::size_t i = 0; i < n; ++i) {
-      if (!(gradient_[i].squaredNorm() > smallest * smallest)) continue;
+      // no surface particle within h: no curvature to take (most of the bulk)
+      if (!nearSurface[i] || !(gradient_[i].squaredNorm() > smallest * smallest)) continue;
       Real weight = kappaWeight[i] * volume_[i] * self;
       Real sum = weight * levelKappa[i];
       for (const std::uint32_t j : pairs.of(i)) {
@@ -373,8 +392,8 @@ void ContinuumSurfaceForce::computeCurvature() {
       }
       // a particle with few surface particles near it takes a share of their curvature: the
       // force fades to 0 as it moves away from the surface instead of switching off
-      kappa_[i] = sum / std::max(weight, fewestWeight) *
-                  smoothstep(gradient_[i].norm() / smallest - Real(1));
+      const Real kappa = std::clamp(sum / std::max(weight, fewestWeight), -largest, largest);
+      kappa_[i] = kappa * smoothstep(gradient_[i].norm() / smallest - Real(1));
     }
   };
   withSeparation(periodic, smoothing);

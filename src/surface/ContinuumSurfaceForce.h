@@ -104,8 +104,8 @@ class ContinuumSurfaceForce : public SurfaceTensionModel {
   SurfaceTensionSettings settings_;
   Real cosTheta_, sinTheta_;
   SurfaceDepthProfile profile_;
-  Real bulkColour_;        // the kernel's sum over a lattice of spacing dx
-  Real surfaceGradient_;   // the largest |grad C| of a flat lattice face's particles
+  Real bulkColour_;       // the kernel's sum over a lattice of spacing dx
+  Real surfaceGradient_;  // P(0): the largest colour gradient of a half space (its surface's)
   ParticleCloud& fluid_;
   std::vector<const ParticleCloud*> walls_;
   std::vector<std::vector<Real>> wallVolume_;

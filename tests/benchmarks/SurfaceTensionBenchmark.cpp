@@ -1,20 +1,26 @@
-// The surface-energy surface tension (surface/SurfaceEnergyTension.h) on a 3D ball of liquid
-// metal at rest (AC4CH's rho and Gamma_g, h = 3 dx), at 1e4 and 1e5 particles:
-//   SurfaceTensionPass: the model's two passes alone (s_i and the energy, then the pair forces),
-//     skipping the pairs inside the liquid (surfaceOnly) or not (allPairs);
-//   FlowStep: a whole flow step over one shared neighbourhood, with and without the surface
-//     tension.
+// The surface-tension models on a 3D ball of liquid metal at rest (AC4CH's rho and Gamma_g,
+// h = 3 dx), at 1e4 and 1e5 particles:
+//   SurfaceTensionPass: the surface-energy model's passes alone (surface/SurfaceEnergyTension.h:
+//     s_i and the energy, then the pair forces), skipping the pairs inside the liquid
+//     (surfaceOnly) or not (allPairs);
+//   ContinuumSurfaceForcePass: the continuum surface force's passes alone
+//     (surface/ContinuumSurfaceForce.h: colour and gradient, normals, curvature, force);
+//   FlowStep: a whole flow step over one shared neighbourhood, alone, with the surface energy,
+//     with the continuum surface force.
 // Reports particle-steps/s (items).
 #include <benchmark/benchmark.h>
 
 #include <cmath>
+#include <memory>
 #include <numbers>
 #include <string>
+#include <vector>
 
 #include "core/dictionary/Dictionary.h"
 #include "materials/MaterialLibrary.h"
 #include "particles/Neighbourhood.h"
 #include "sph/WeaklyCompressibleFlow.h"
+#include "surface/ContinuumSurfaceForce.h"
 #include "surface/SurfaceEnergyTension.h"
 
 namespace {
@@ -64,7 +70,8 @@ sphcast::SurfaceTensionSettings tensionSettings(bool surfaceOnly) {
   settings.dimension = 3;
   settings.supportRadius = 3 * dx;
   settings.spacing = dx;
-  settings.gasTension = *library.get("AC4CH", sphcast::SourceLocation{}, "benchmark").surfaceTension;
+  settings.gasTension =
+      *library.get("AC4CH", sphcast::SourceLocation{}, "benchmark").surfaceTension;
   settings.surfaceParticlesOnly = surfaceOnly;
   return settings;
 }
@@ -80,11 +87,35 @@ void SurfaceTensionPass(benchmark::State& state, bool surfaceOnly) {
   state.counters["particles"] = double(fluid.size());
 }
 BENCHMARK_CAPTURE(SurfaceTensionPass, surfaceOnly, true)
-    ->Arg(10'000)->Arg(100'000)->Unit(benchmark::kMillisecond)->UseRealTime();
+    ->Arg(10'000)
+    ->Arg(100'000)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 BENCHMARK_CAPTURE(SurfaceTensionPass, allPairs, false)
-    ->Arg(10'000)->Arg(100'000)->Unit(benchmark::kMillisecond)->UseRealTime();
+    ->Arg(10'000)
+    ->Arg(100'000)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 
-void FlowStep(benchmark::State& state, bool withTension) {
+void ContinuumSurfaceForcePass(benchmark::State& state) {
+  auto fluid = ball(state.range(0));
+  sphcast::Neighbourhood neighbourhood(3 * dx, sphcast::PeriodicBox());
+  neighbourhood.addCloud(fluid, sphcast::Neighbourhood::Motion::moving);
+  sphcast::ContinuumSurfaceForce tension(tensionSettings(true), fluid, {}, neighbourhood);
+  neighbourhood.update();
+  for (auto _ : state) tension.addAcceleration();
+  state.SetItemsProcessed(state.iterations() * static_cast<long>(fluid.size()));
+  state.counters["particles"] = double(fluid.size());
+}
+BENCHMARK(ContinuumSurfaceForcePass)
+    ->Arg(10'000)
+    ->Arg(100'000)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+
+enum class Tension { none, surfaceEnergy, continuumSurfaceForce };
+
+void FlowStep(benchmark::State& state, Tension model) {
   auto fluid = ball(state.range(0));
   sphcast::FlowSettings settings;
   settings.dimension = 3;
@@ -93,8 +124,15 @@ void FlowStep(benchmark::State& state, bool withTension) {
   sphcast::Neighbourhood neighbourhood(3 * dx, sphcast::PeriodicBox());
   neighbourhood.addCloud(fluid, sphcast::Neighbourhood::Motion::moving);
   sphcast::WeaklyCompressibleFlow flow(settings, fluid, {}, neighbourhood);
-  sphcast::SurfaceEnergyTension tension(tensionSettings(true), fluid, {}, neighbourhood);
-  if (withTension) flow.addForceModel(tension);
+  std::unique_ptr<sphcast::SurfaceTensionModel> tension;
+  if (model == Tension::surfaceEnergy) {
+    tension = std::make_unique<sphcast::SurfaceEnergyTension>(
+        tensionSettings(true), fluid, std::vector<const sphcast::ParticleCloud*>{}, neighbourhood);
+  } else if (model == Tension::continuumSurfaceForce) {
+    tension = std::make_unique<sphcast::ContinuumSurfaceForce>(
+        tensionSettings(true), fluid, std::vector<const sphcast::ParticleCloud*>{}, neighbourhood);
+  }
+  if (tension) flow.addForceModel(*tension);
   neighbourhood.update();
   flow.start();
   std::string limiter;
@@ -107,9 +145,20 @@ void FlowStep(benchmark::State& state, bool withTension) {
   state.SetItemsProcessed(state.iterations() * static_cast<long>(fluid.size()));
   state.counters["particles"] = double(fluid.size());
 }
-BENCHMARK_CAPTURE(FlowStep, flowAlone, false)
-    ->Arg(10'000)->Arg(100'000)->Unit(benchmark::kMillisecond)->UseRealTime();
-BENCHMARK_CAPTURE(FlowStep, withSurfaceTension, true)
-    ->Arg(10'000)->Arg(100'000)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_CAPTURE(FlowStep, flowAlone, Tension::none)
+    ->Arg(10'000)
+    ->Arg(100'000)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+BENCHMARK_CAPTURE(FlowStep, withSurfaceTension, Tension::surfaceEnergy)
+    ->Arg(10'000)
+    ->Arg(100'000)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+BENCHMARK_CAPTURE(FlowStep, withContinuumSurfaceForce, Tension::continuumSurfaceForce)
+    ->Arg(10'000)
+    ->Arg(100'000)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 
 }  // namespace

@@ -2,7 +2,8 @@
 # The squareDroplet tutorial (surface tension, 2D, no gravity) through the tools at 21 x 21
 # particles: the square rounds (its n = 4 moment m4 goes from -0.60 through 0 within Lamb's
 # quarter period and a half), a restart reproduces the uninterrupted run bit for bit, and
-# mistakes in the surfaceTension dictionary stop the solver with file, line and key.
+# mistakes in the surfaceTension dictionary stop the solver with file, line and key. The same
+# with the continuum surface force: the square rounds, a key of the other model is an error.
 . "$SPHCAST_TEST_TOOLS"
 tutorial=$(cd "$(dirname "$0")/../../tutorials/validation/squareDroplet" && pwd)
 mkdir -p "$scratch/case"
@@ -53,6 +54,26 @@ expectError 's/    surfaceTension .*//' constant/physicalProperties \
     "physicalProperties:[0-9]*:.*material 'liquid'.*has no 'surfaceTension'"
 expectError 's/model       weaklyCompressible;/model none;/' constant/physicsModels \
     "physicsModels:[0-9]*:.*surface tension acts on the flow's fluid"
+# The continuum surface force (the default model) on the same square: it rounds as well, its
+# keys are its own, and it takes a wetting wall.
+cp -r "$scratch/case" "$scratch/csf" && cd "$scratch/csf" || exit 1
+rm -rf 0.02 0.04 0.06
+sed -i 's/^    model           surfaceEnergy;.*/    model           continuumSurfaceForce;/; /energyFactor/d' constant/physicsModels
+sphCastFoam > log.sphCastFoam 2>&1 || fail "sphCastFoam (continuumSurfaceForce): $(tail -5 log.sphCastFoam)"
+grep -q "^Surface tension: continuum surface force" log.sphCastFoam ||
+    fail "no continuum-surface-force line in the log"
+/usr/bin/python3 compareWithLamb > log.compare 2>&1 || fail "compareWithLamb: $(tail -3 log.compare)"
+awk 'NR == 2 { if ($2 > -0.55) exit 1 } { t = $1; m = $2 } END { if (t != 0.06 || m <= 0) exit 1 }' m4.dat ||
+    fail "the square did not round with the continuum surface force: $(cat m4.dat)"
+rm -rf 0.02 0.04 0.06
+expectError 's/^    model           continuumSurfaceForce;/&\n    energyFactor 41.4;/' constant/physicsModels \
+    "physicsModels:[0-9]*:.*unknown key 'energyFactor'"
+expectError 's/^    model           continuumSurfaceForce;/    model continuumSurfaceFarce;/' constant/physicsModels \
+    "physicsModels:[0-9]*:.*continuumSurfaceFarce.*continuumSurfaceForce"
+sed -i 's/^    model           continuumSurfaceForce;/&\n    contactAngle 60;/' constant/physicsModels
+setEntry system/controlDict endTime 0.001
+sphCastFoam > log.wetting 2>&1 || fail "a wetting wall with the continuum surface force: $(tail -3 log.wetting)"
+
 # A speed of sound too low for the surface tension: a warning that names the speed to use.
 cp -r "$scratch/case" "$scratch/slow" && cd "$scratch/slow" || exit 1
 sed -i 's/^soundSpeed .*/soundSpeed      [0 1 -1 0 0 0 0] 5;/' system/sphSchemes
@@ -60,4 +81,4 @@ setEntry system/controlDict endTime 0.001
 sphCastFoam > log.slow 2>&1 || fail "the slow case: $(tail -3 log.slow)"
 grep -q "compresses the surface layer by .* raise soundSpeed in system/sphSchemes" log.slow ||
     fail "no warning for a speed of sound too low for the surface tension"
-pass "squareDroplet: the square rounds, restart bit for bit, clear errors for bad surfaceTension input"
+pass "squareDroplet: the square rounds (surfaceEnergy and continuumSurfaceForce), restart bit for bit, clear errors for bad surfaceTension input"

@@ -6,19 +6,22 @@
 
 #include <gtest/gtest.h>
 
+#include <omp.h>
+
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
+#include <iostream>
+#include <numbers>
 #include <sstream>
 
 #include <Eigen/Dense>
-#include <iostream>
-#include <numbers>
 
 #include "SurfaceTensionTestCases.h"
-#include "sph/FlowTestCases.h"
 #include "particles/Neighbourhood.h"
 #include "particles/WendlandKernel.h"
+#include "sph/FlowTestCases.h"
 #include "surface/ContinuumSurfaceForce.h"
 
 namespace sphcast {
@@ -45,8 +48,8 @@ TEST(SurfaceDepthProfile, ColourRunsFromHalfToOneAndTheDepthInvertsIt) {
       for (int m = 0; m <= 60; ++m) {
         for (int i = -reach; i <= reach; ++i) {
           const double vertical = (m + 0.5) * dx - z;
-          const double r = std::sqrt(std::pow(i * dx, 2) + vertical * vertical +
-                                     std::pow(k * dx, 2));
+          const double r =
+              std::sqrt(std::pow(i * dx, 2) + vertical * vertical + std::pow(k * dx, 2));
           const double w = dimension == 2 ? WendlandC2Kernel<2>(h).value(static_cast<Real>(r))
                                           : WendlandC2Kernel<3>(h).value(static_cast<Real>(r));
           colour += std::pow(dx, dimension) * w;
@@ -61,10 +64,11 @@ struct SurfaceCase {
   explicit SurfaceCase(int dimension, Real dx, const Vector& lower, const Vector& upper,
                        const std::function<bool(const Vector&)>& inside,
                        std::array<bool, 3> periodicAxes = {false, false, false})
-      : SurfaceCase(dimension, dx, testing::latticeFluid(dimension, dx, lower, upper, inside, 1000, 0),
-                    lower, upper, periodicAxes) {}
-  SurfaceCase(int dimension, Real dx, ParticleCloud cloud, const Vector& lower,
-              const Vector& upper, std::array<bool, 3> periodicAxes = {false, false, false})
+      : SurfaceCase(dimension, dx,
+                    testing::latticeFluid(dimension, dx, lower, upper, inside, 1000, 0), lower,
+                    upper, periodicAxes) {}
+  SurfaceCase(int dimension, Real dx, ParticleCloud cloud, const Vector& lower, const Vector& upper,
+              std::array<bool, 3> periodicAxes = {false, false, false})
       : fluid(std::move(cloud)) {
     PeriodicBox box;
     for (int axis = 0; axis < 3; ++axis) {
@@ -108,6 +112,86 @@ TEST(ContinuumSurfaceForce, AFlatSurfaceHasNoCurvatureNoForceAndItsFacesNormals)
     const int perRow = dimension == 2 ? 12 : 144;
     EXPECT_EQ(surface, 4 * perRow) << dimension << "D";
   }
+}
+
+// A block on a wall (2D): the face on the wall is no surface (the wall counts as liquid in the
+// colour), the face on the air is.
+TEST(ContinuumSurfaceForce, AFaceOnAWallIsNoSurface) {
+  const Real dx = 0.001;
+  ParticleCloud fluid = testing::latticeFluid(
+      2, dx, Vector(0, 0, 0), Vector(12 * dx, 8 * dx, 0), [](const Vector&) { return true; }, 1000,
+      1e-3);
+  ParticleCloud wall = testing::emptyWall();
+  testing::addWallCells(
+      wall, -4, 16, -3, 0, dx, Vector::Zero(), [](int, int) { return Vector(0, 1, 0); },
+      [dx](int, int row) { return (-row - Real(0.5)) * dx; });
+  PeriodicBox box;
+  box.setPeriodic(0, 0, 12 * dx);
+  Neighbourhood neighbourhood(3 * dx, box);
+  neighbourhood.addCloud(fluid, Neighbourhood::Motion::moving);
+  neighbourhood.addFixedCloud(wall);
+  ContinuumSurfaceForce tension(testing::tensionSettings(2, 3 * dx, dx, 0.07), fluid, {&wall},
+                                neighbourhood);
+  neighbourhood.update();
+  tension.computeSurface();
+  const auto& x = fluid.positions();
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    if (x[i][1] < 4 * dx) {
+      EXPECT_FALSE(tension.onSurface()[i])
+          << "at y = " << x[i][1] / dx << " dx, colour " << tension.colour()[i];
+    } else if (x[i][1] > 7 * dx) {
+      EXPECT_TRUE(tension.onSurface()[i]);
+    }
+  }
+}
+
+// Every pass (colour, normals, the turn at the wall, curvature, its smoothing, the force) gives
+// the same bits on one and two threads: each particle gathers over its own neighbours in a
+// fixed order. A jittered 3D half ball on a wetting floor (60 degrees), so the turn runs.
+TEST(ContinuumSurfaceForce, SameBitsOnOneAndTwoThreads) {
+  const Real dx = 1e-3, h = 3 * dx;
+  const int previous = omp_get_max_threads();
+  std::size_t turned = 0;
+  auto forcesOn = [&](int threads) {
+    omp_set_num_threads(threads);
+    ParticleCloud fluid = testing::latticeFluid(
+        3, dx, Vector(-8 * dx, -8 * dx, 0), Vector(8 * dx, 8 * dx, 8 * dx),
+        [&](const Vector& x) { return x.norm() < 7 * dx; }, 1000, 1e-3, 0.1);
+    ParticleCloud wall = testing::emptyWall();
+    for (int k = -10; k < 10; ++k) {  // a floor of three layers under the half ball
+      testing::addWallCells(
+          wall, -10, 10, -3, 0, dx, Vector(0, 0, (k + Real(0.5)) * dx),
+          [](int, int) { return Vector(0, 1, 0); },
+          [dx](int, int row) { return (-row - Real(0.5)) * dx; });
+    }
+    for (Vector& x : wall.positions()) x = Vector(x[0], x[2], x[1]);  // the floor in z = 0
+    for (Vector& n : wall.vectorField("normal")) n = Vector(0, 0, 1);
+    Neighbourhood neighbourhood(h, PeriodicBox());
+    neighbourhood.addCloud(fluid, Neighbourhood::Motion::moving);
+    neighbourhood.addFixedCloud(wall);
+    SurfaceTensionSettings settings = testing::tensionSettings(3, h, dx, 0.07);
+    settings.cosContactAngle = Real(0.5);
+    ContinuumSurfaceForce tension(settings, fluid, {&wall}, neighbourhood);
+    neighbourhood.update(CloudOrder::keep);
+    auto& a = fluid.vectorField("acceleration");
+    std::fill(a.begin(), a.end(), Vector::Zero());
+    tension.addAcceleration();
+    turned = 0;
+    for (std::size_t i = 0; i < fluid.size(); ++i) {
+      if (tension.onSurface()[i] && fluid.positions()[i][2] < h) ++turned;
+    }
+    return std::vector<Vector>(a.begin(), a.end());
+  };
+  const std::vector<Vector> one = forcesOn(1);
+  const std::vector<Vector> two = forcesOn(2);
+  omp_set_num_threads(previous);
+  double largest = 0;
+  for (std::size_t k = 0; k < one.size(); ++k) {
+    ASSERT_EQ(one[k], two[k]) << "particle " << k;
+    largest = std::max(largest, static_cast<double>(one[k].norm()));
+  }
+  EXPECT_GT(largest, 0);
+  EXPECT_GT(turned, 0u);  // surface particles within h of the floor: the turn ran
 }
 
 // A drop of rings or shells (testing::ringFluid) at Laplace's pressure sigma (d - 1) / R
@@ -191,6 +275,7 @@ TEST(ContinuumSurfaceForce, ADropAtLaplacesPressureIsInEquilibrium) {
 // capillary speed sqrt(sigma / (rho R)), after `capillaryTimes` of sqrt(rho R^3 / sigma).
 struct StaticDropResult {
   double pressureRatio = 0, largestSpeed = 0, meanSpeed = 0, seconds = 0;
+  double closest = 0;  // the nearest pair, in spacings
   std::size_t particles = 0;
 };
 
@@ -198,12 +283,11 @@ StaticDropResult staticDrop(int dimension, int across, double capillaryTimes, do
   const Real radius = 0.01, sigma = 0.07, rho = 1000;
   const Real dx = 2 * radius / across, h = 3 * dx;
   const Vector reach = Vector::Constant(radius + dx);
-  ParticleCloud fluid =
-      std::getenv("SPHCAST_CSF_LATTICE")
-          ? testing::latticeFluid(
-                dimension, dx, -reach, reach, [&](const Vector& x) { return x.norm() < radius; },
-                rho, rho * nu)
-          : testing::ringFluid(dimension, dx, across / 2, rho, rho * nu);
+  ParticleCloud fluid = std::getenv("SPHCAST_CSF_LATTICE")
+                            ? testing::latticeFluid(
+                                  dimension, dx, -reach, reach,
+                                  [&](const Vector& x) { return x.norm() < radius; }, rho, rho * nu)
+                            : testing::ringFluid(dimension, dx, across / 2, rho, rho * nu);
   FlowSettings flow;
   flow.dimension = dimension;
   flow.supportRadius = h;
@@ -230,8 +314,7 @@ StaticDropResult staticDrop(int dimension, int across, double capillaryTimes, do
     }
   }
   StaticDropResult result;
-  result.seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const auto& x = fluid.positions();
   const auto& U = fluid.vectorField("U");
   const auto& density = fluid.scalarField("rho");
@@ -268,10 +351,17 @@ StaticDropResult staticDrop(int dimension, int across, double capillaryTimes, do
       ps += flow.soundSpeed * flow.soundSpeed * (density[i] - rest[i]);
     }
     (void)pw;
-    std::cout << "  surface particles " << w << ": mean kappa R/(d-1) " << kw / w * volumeRadius / (dimension - 1)
-              << ", mean pressure / Laplace's " << ps / w / (sigma * (dimension - 1) / volumeRadius) << std::endl;
+    std::cout << "  surface particles " << w << ": mean kappa R/(d-1) "
+              << kw / w * volumeRadius / (dimension - 1) << ", mean pressure / Laplace's "
+              << ps / w / (sigma * (dimension - 1) / volumeRadius) << std::endl;
   }
   result.pressureRatio = pressure / inner / (sigma * (dimension - 1) / volumeRadius);
+  result.closest = 1e9;
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    for (const std::uint32_t j : run.neighbourhood.pairs(fluid, fluid).of(i)) {
+      result.closest = std::min(result.closest, static_cast<double>((x[i] - x[j]).norm() / dx));
+    }
+  }
   result.particles = x.size();
   return result;
 }
@@ -287,7 +377,8 @@ TEST(ContinuumSurfaceForce, StaticDropStudy) {
             << " particles), " << times << " capillary times, nu " << nu
             << ": pressure / Laplace's " << result.pressureRatio
             << ", largest speed / sqrt(sigma/(rho R)) " << result.largestSpeed << ", mean "
-            << result.meanSpeed << ", " << result.seconds << " s" << std::endl;
+            << result.meanSpeed << ", nearest pair " << result.closest << " dx, " << result.seconds
+            << " s" << std::endl;
 }
 
 // The n = 2 oscillation of a free drop of rings (no gravity), water-like (rho 1000 kg/m^3,
@@ -320,9 +411,10 @@ OscillationResult oscillatingDrop(int dimension, int across, double periods) {
   flow.dimension = dimension;
   flow.supportRadius = 3 * dx;
   // ten times the largest speed, and the jump compresses the drop by 0.1 % at most
-  flow.soundSpeed = static_cast<Real>(std::max(
-      10 * a0 * omega * R * (dimension == 2 ? 1 : 2),
-      std::sqrt(1000.0 * (dimension - 1) * sigma / (rho * R))) * (std::getenv("SPHCAST_CSF_C") ? std::atof(std::getenv("SPHCAST_CSF_C")) : 1.0));
+  flow.soundSpeed = static_cast<Real>(
+      std::max(10 * a0 * omega * R * (dimension == 2 ? 1 : 2),
+               std::sqrt(1000.0 * (dimension - 1) * sigma / (rho * R))) *
+      (std::getenv("SPHCAST_CSF_C") ? std::atof(std::getenv("SPHCAST_CSF_C")) : 1.0));
   const double c = flow.soundSpeed;
   auto& U = fluid.vectorField("U");
   for (std::size_t i = 0; i < fluid.size(); ++i) {
@@ -371,11 +463,12 @@ OscillationResult oscillatingDrop(int dimension, int across, double periods) {
   }
   if (std::getenv("SPHCAST_CSF_TRACE")) {
     for (const double e : extremes) std::cout << "  extreme " << e / (R * R) << std::endl;
-    for (const double t : crossings) std::cout << "  crossing " << t / result.lambPeriod << std::endl;
+    for (const double t : crossings)
+      std::cout << "  crossing " << t / result.lambPeriod << std::endl;
   }
   if (crossings.size() >= 3) {
-    result.period = (crossings.back() - crossings.front()) /
-                    (0.5 * static_cast<double>(crossings.size() - 1));
+    result.period =
+        (crossings.back() - crossings.front()) / (0.5 * static_cast<double>(crossings.size() - 1));
   }
   if (extremes.size() >= 2 && result.period > 0) {
     result.decay = std::log(extremes.front() / extremes.back()) /
@@ -402,13 +495,13 @@ TEST(ContinuumSurfaceForce, OscillatingDropStudy) {
   int dimension = 2, across = 30;
   double periods = 3;
   std::istringstream(study) >> dimension >> across >> periods;
-  std::cout << dimension << "D drop, " << across << " across: "
-            << oscillatingDrop(dimension, across, periods) << std::endl;
+  std::cout << dimension << "D drop, " << across
+            << " across: " << oscillatingDrop(dimension, across, periods) << std::endl;
 }
 
 // A 2D drop on a flat wall (its surface y = 0, three layers below) held by a little gravity
 // (Bond number rho g A / sigma = 0.2, A the drop's area: the cap stays nearly circular),
-// started as the upper half of a drop of rings of radius `layers` dx (a 90-degree cap) and
+// started as the lattice particles of a half disk of radius `layers` dx (a 90-degree cap) and
 // settled over `capillaryTimes` of sqrt(rho A^(3/2) / sigma) by viscosity (nu 1e-4: the
 // equilibrium does not depend on it). The angle from a circle fitted (least squares) to the
 // surface, each outer particle (depth under 0.8 dx) moved out along its normal by its depth,
@@ -420,21 +513,10 @@ struct SessileResult {
 
 SessileResult sessileDrop(double degrees, int layers, double capillaryTimes, double bond) {
   const Real sigma = 0.07, rho = 1000, nu = 1e-4, dx = 5e-4, h = 3 * dx;
-  ParticleCloud rings = testing::ringFluid(2, dx, layers, rho, rho * nu);
-  std::vector<std::size_t> upper;
-  for (std::size_t i = 0; i < rings.size(); ++i) {
-    if (rings.positions()[i][1] > Real(0.25) * dx) upper.push_back(i);
-  }
-  ParticleCloud fluid = testing::ringFluid(2, dx, 0, rho, rho * nu);
-  fluid.resize(upper.size());
-  for (std::size_t k = 0; k < upper.size(); ++k) {
-    for (const char* name : {"rho", "mass", "viscosity", "restDensity"}) {
-      fluid.scalarField(name)[k] = rings.scalarField(name)[upper[k]];
-    }
-    fluid.positions()[k] = rings.positions()[upper[k]] + Vector(0, Real(0.25) * dx, 0);
-    fluid.vectorField("U")[k] = Vector::Zero();
-  }
-  fluid.attributes()["spacing"] = dx;
+  const Real capRadius = layers * dx;
+  ParticleCloud fluid = testing::latticeFluid(
+      2, dx, Vector(-capRadius - dx, 0, 0), Vector(capRadius + dx, capRadius + dx, 0),
+      [&](const Vector& x) { return x.norm() < capRadius; }, rho, rho * nu);
   ParticleCloud wall = testing::emptyWall();
   const int reach = 4 * layers;
   testing::addWallCells(
@@ -450,9 +532,22 @@ SessileResult sessileDrop(double degrees, int layers, double capillaryTimes, dou
   SurfaceTensionSettings tension = testing::tensionSettings(2, h, dx, sigma);
   tension.cosContactAngle = static_cast<Real>(std::cos(degrees * std::numbers::pi / 180));
   testing::CapillaryRun<ContinuumSurfaceForce> run(flow, tension, fluid, {&wall});
-  const double end = capillaryTimes * std::sqrt(rho * std::pow(area, 0.75) / sigma);
+  const double end = capillaryTimes * std::sqrt(rho * std::pow(area, 1.5) / sigma);
   const auto start = std::chrono::steady_clock::now();
-  while (run.time < end) run.step(run.stableDeltaT());
+  long steps = 0;
+  while (run.time < end) {
+    run.step(run.stableDeltaT());
+    if (std::getenv("SPHCAST_CSF_TRACE") && ++steps % 200 == 0) {
+      double fastest = 0, lowest = 1e9, kmax = 0;
+      for (std::size_t i = 0; i < fluid.size(); ++i) {
+        fastest = std::max(fastest, static_cast<double>(fluid.vectorField("U")[i].norm()));
+        lowest = std::min(lowest, static_cast<double>(fluid.positions()[i][1] / dx));
+        kmax = std::max(kmax, std::abs(static_cast<double>(fluid.scalarField("curvature")[i])));
+      }
+      std::cout << "  t " << run.time << " fastest " << fastest << " lowest " << lowest
+                << " dx, largest |kappa| dx " << kmax * dx << std::endl;
+    }
+  }
   SessileResult result;
   result.particles = fluid.size();
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
