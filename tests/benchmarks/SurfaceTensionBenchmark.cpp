@@ -144,6 +144,8 @@ void FlowStep(benchmark::State& state, Tension model) {
   }
   state.SetItemsProcessed(state.iterations() * static_cast<long>(fluid.size()));
   state.counters["particles"] = double(fluid.size());
+  // the model's own share of a step (its addAcceleration's wall time)
+  if (tension) state.counters["tension_ms"] = 1e3 * tension->seconds() / double(state.iterations());
 }
 BENCHMARK_CAPTURE(FlowStep, flowAlone, Tension::none)
     ->Arg(10'000)
