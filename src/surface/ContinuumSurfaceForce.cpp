@@ -216,7 +216,7 @@ void ContinuumSurfaceForce::computeColourAndNormal() {
   depth_.resize(n);
   gradient_.resize(n);
   unitNormal_.resize(n);
-  onSurface_.assign(n, false);
+  onSurface_.assign(n, 0);
   surfaceWeight_.assign(n, 0);
   const auto& x = fluid_.positions();
   const NeighbourList& pairs = neighbourhood_.pairs(fluid_, fluid_);
@@ -255,7 +255,7 @@ void ContinuumSurfaceForce::computeColourAndNormal() {
       // a particle that crossed a sharp threshold would be kicked
       surfaceWeight_[i] =
           depth_[i] < h ? smoothstep(gradient_[i].norm() / threshold - Real(1)) : Real(0);
-      onSurface_[i] = surfaceWeight_[i] > 0;
+      onSurface_[i] = surfaceWeight_[i] > 0 ? 1 : 0;
     }
   };
   withSeparation(periodic, colourPass);
@@ -276,7 +276,7 @@ void ContinuumSurfaceForce::computeColourAndNormal() {
       const Real length = sum.norm();
       unitNormal_[i] = length > 0 ? Vector(sum / length) : Vector::Zero();
       if (!(length > 0)) {
-        onSurface_[i] = false;
+        onSurface_[i] = 0;
         surfaceWeight_[i] = 0;
       }
     }

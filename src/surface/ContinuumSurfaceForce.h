@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -87,7 +88,8 @@ class ContinuumSurfaceForce : public SurfaceTensionModel {
   const std::vector<Real>& colour() const { return colour_; }
   const std::vector<Real>& depth() const { return depth_; }
   const std::vector<Vector>& unitNormal() const { return unitNormal_; }
-  const std::vector<bool>& onSurface() const { return onSurface_; }
+  // 1 for the surface particles (a byte each: the passes write them from several threads)
+  const std::vector<std::uint8_t>& onSurface() const { return onSurface_; }
   // Computes the colour, normals, curvature and delta of the current positions, no force.
   void computeSurface();
 
@@ -113,7 +115,7 @@ class ContinuumSurfaceForce : public SurfaceTensionModel {
   // per particle, from the last pass
   std::vector<Real> volume_, tension_, colour_, depth_, kappa_;
   std::vector<Vector> gradient_, unitNormal_;
-  std::vector<bool> onSurface_;
+  std::vector<std::uint8_t> onSurface_;
   std::vector<Real> surfaceWeight_;  // 0 off the surface to 1 on it
   double seconds_ = 0;
 };
