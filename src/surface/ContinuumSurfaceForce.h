@@ -63,8 +63,9 @@ class SurfaceDepthProfile {
 //   near: the force acts wherever g is not 0 near the surface, as the pressure's does.
 // Read on a drop of rings at Laplace's pressure (ContinuumSurfaceForceTest): curvature within
 // 0.3 % of (d - 1) / R, 1 to 1.5 % from particle to particle; what is left of the force after
-// the pressure's, 1 % RMS. A lattice's staircase reads 4 % (3D) to 16 % (2D, R = 60 dx) more
-// curvature, until the surface rounds its steps off.
+// the pressure's, 1 % RMS. A lattice's staircase reads more curvature, on the mean over its surface
+// particles 4 to 6 % (3D, R = 15 and 30 dx) and 14 to 40 % (2D, R = 15 to 60 dx), until the
+// surface rounds its steps off.
 //
 // sigma(T) is the fluid material's surfaceTension: a constant or a table; a particle where it
 // is 0 (the solid rows of AC4CH) carries no force. Reads the fluid's positions, mass, rho, T
