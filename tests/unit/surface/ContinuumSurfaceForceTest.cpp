@@ -2,7 +2,12 @@
 // any dynamics (the depth profile against a direct sum; a flat surface without curvature or
 // force; a drop at Laplace's pressure in equilibrium with it, at R/dx = 15, 30, 60 in 2D and
 // 15, 30 in 3D), then drops stepped as the solver steps them (StaticDropStudy and the tests
-// after it).
+// after it). The studies (doc/validation.md §2.2), run by hand with switches in the
+// environment: SPHCAST_CSF_STATIC="dimension across capillaryTimes nu",
+// SPHCAST_CSF_OSCILLATION="dimension across periods", SPHCAST_CSF_SESSILE="layers
+// capillaryTimes bond angles..."; with them SPHCAST_CSF_LATTICE (a static drop of lattice
+// particles instead of rings), SPHCAST_CSF_C (a factor on the speed of sound) and
+// SPHCAST_CSF_TRACE (print as it runs).
 
 #include <gtest/gtest.h>
 
