@@ -2,9 +2,9 @@
 
 #include <algorithm>
 #include <atomic>
-#include <cstdint>
 #include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <numbers>
 #include <sstream>
@@ -141,11 +141,7 @@ ContinuumSurfaceForce::ContinuumSurfaceForce(SurfaceTensionSettings settings, Pa
         "surface tension: the continuum surface force takes the contact angle, not "
         "Gamma_s");
   }
-  if (!settings_.gasTension->isConstant() && !fluid_.hasScalarField("T")) {
-    throw DictionaryError(settings_.gasTension->location(),
-                          settings_.gasTension->description() + " is a table in T, but cloud '" +
-                              fluid_.name() + "' has no T (set it with setCastFields)");
-  }
+  requireTemperatureFor(*settings_.gasTension, fluid_);
   if (!fluid_.hasScalarField("curvature")) fluid_.addScalarField("curvature");
   neighbourhood_.requestPairs(fluid_, fluid_);
   for (const ParticleCloud* wall : walls_) neighbourhood_.requestPairs(fluid_, *wall);
@@ -164,21 +160,6 @@ std::string ContinuumSurfaceForce::summary(double soundSpeed) const {
          << settings_.supportRadius << " m";
   }
   return text.str();
-}
-
-void ContinuumSurfaceForce::updateTension() {
-  const std::size_t n = fluid_.size();
-  tension_.resize(n);
-  const TemperatureTable& table = *settings_.gasTension;
-  if (table.isConstant()) {
-    std::fill(tension_.begin(), tension_.end(), static_cast<Real>(table(0)));
-    return;
-  }
-  const auto& temperature = fluid_.scalarField("T");
-#pragma omp parallel for schedule(static)
-  for (std::size_t i = 0; i < n; ++i) {
-    tension_[i] = static_cast<Real>(table(static_cast<double>(temperature[i])));
-  }
 }
 
 double ContinuumSurfaceForce::largestTension() const {
@@ -413,7 +394,7 @@ void ContinuumSurfaceForce::computeSurface() {
 
 void ContinuumSurfaceForce::addAcceleration() {
   const auto start = std::chrono::steady_clock::now();
-  updateTension();
+  tensionAtParticles(*settings_.gasTension, fluid_, tension_);
   computeSurface();
   const std::size_t n = fluid_.size();
   const auto& rho = fluid_.scalarField("rho");

@@ -101,7 +101,6 @@ class ContinuumSurfaceForce : public SurfaceTensionModel {
   void computeCurvature();
 
   void turnNormalsAtWalls();
-  void updateTension();
   double largestTension() const;
 
   SurfaceTensionSettings settings_;

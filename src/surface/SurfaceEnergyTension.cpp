@@ -73,11 +73,7 @@ SurfaceEnergyTension::SurfaceEnergyTension(SurfaceTensionSettings settings, Part
   if (settings_.cosContactAngle && settings_.solidTension) {
     throw Error("surface tension: give the contact angle or Gamma_s, not both");
   }
-  if (!settings_.gasTension->isConstant() && !fluid_.hasScalarField("T")) {
-    throw DictionaryError(settings_.gasTension->location(),
-                          settings_.gasTension->description() + " is a table in T, but cloud '" +
-                              fluid_.name() + "' has no T (set it with setCastFields)");
-  }
+  requireTemperatureFor(*settings_.gasTension, fluid_);
   if (!fluid_.hasScalarField("surfaceEnergy")) fluid_.addScalarField("surfaceEnergy");
   neighbourhood_.requestPairs(fluid_, fluid_);
   for (const ParticleCloud* wall : walls_) neighbourhood_.requestPairs(fluid_, *wall);
@@ -90,18 +86,7 @@ Real SurfaceEnergyTension::solidTension(Real gasTension) const {
 }
 
 void SurfaceEnergyTension::updateGasTension() {
-  const std::size_t n = fluid_.size();
-  gasTension_.resize(n);
-  const TemperatureTable& table = *settings_.gasTension;
-  if (table.isConstant()) {
-    std::fill(gasTension_.begin(), gasTension_.end(), static_cast<Real>(table(0)));
-  } else {
-    const auto& temperature = fluid_.scalarField("T");
-#pragma omp parallel for schedule(static)
-    for (std::size_t i = 0; i < n; ++i) {
-      gasTension_[i] = static_cast<Real>(table(static_cast<double>(temperature[i])));
-    }
-  }
+  tensionAtParticles(*settings_.gasTension, fluid_, gasTension_);
   largestTension_ = largestTension(gasTension_);
 }
 

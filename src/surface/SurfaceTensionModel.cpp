@@ -3,6 +3,7 @@
 
 #include "surface/SurfaceTensionModel.h"
 
+#include <algorithm>
 #include <functional>
 #include <utility>
 
@@ -35,6 +36,28 @@ const std::vector<std::pair<std::string, Constructor>>& registry() {
 }
 
 }  // namespace
+
+void requireTemperatureFor(const TemperatureTable& sigma, const ParticleCloud& fluid) {
+  if (sigma.isConstant() || fluid.hasScalarField("T")) return;
+  throw DictionaryError(sigma.location(), sigma.description() + " is a table in T, but cloud '" +
+                                              fluid.name() +
+                                              "' has no T (set it with setCastFields)");
+}
+
+void tensionAtParticles(const TemperatureTable& sigma, const ParticleCloud& fluid,
+                        std::vector<Real>& tension) {
+  const std::size_t n = fluid.size();
+  tension.resize(n);
+  if (sigma.isConstant()) {
+    std::fill(tension.begin(), tension.end(), static_cast<Real>(sigma(0)));
+    return;
+  }
+  const auto& temperature = fluid.scalarField("T");
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < n; ++i) {
+    tension[i] = static_cast<Real>(sigma(static_cast<double>(temperature[i])));
+  }
+}
 
 const std::vector<std::string>& surfaceTensionModelNames() {
   static const std::vector<std::string> names = [] {

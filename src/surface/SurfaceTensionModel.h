@@ -23,6 +23,12 @@ class SurfaceTensionModel : public FluidForceModel {
   }
 };
 
+// What both models need of sigma = Gamma_g(T): the fluid has T when sigma is a table (an error
+// naming the table's file and line otherwise), and sigma at every particle's T now.
+void requireTemperatureFor(const TemperatureTable& sigma, const ParticleCloud& fluid);
+void tensionAtParticles(const TemperatureTable& sigma, const ParticleCloud& fluid,
+                        std::vector<Real>& tension);
+
 // The models by the names constant/physicsModels gives them (surfaceTension { model NAME; }),
 // in the order the error for an unknown name lists them; the first is the default.
 const std::vector<std::string>& surfaceTensionModelNames();

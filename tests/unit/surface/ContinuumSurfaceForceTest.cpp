@@ -162,15 +162,7 @@ TEST(ContinuumSurfaceForce, SameBitsOnOneAndTwoThreads) {
     ParticleCloud fluid = testing::latticeFluid(
         3, dx, Vector(-8 * dx, -8 * dx, 0), Vector(8 * dx, 8 * dx, 8 * dx),
         [&](const Vector& x) { return x.norm() < 7 * dx; }, 1000, 1e-3, 0.1);
-    ParticleCloud wall = testing::emptyWall();
-    for (int k = -10; k < 10; ++k) {  // a floor of three layers under the half ball
-      testing::addWallCells(
-          wall, -10, 10, -3, 0, dx, Vector(0, 0, (k + Real(0.5)) * dx),
-          [](int, int) { return Vector(0, 1, 0); },
-          [dx](int, int row) { return (-row - Real(0.5)) * dx; });
-    }
-    for (Vector& x : wall.positions()) x = Vector(x[0], x[2], x[1]);  // the floor in z = 0
-    for (Vector& n : wall.vectorField("normal")) n = Vector(0, 0, 1);
+    ParticleCloud wall = testing::floorInZ(10, dx);  // three layers under the half ball
     Neighbourhood neighbourhood(h, PeriodicBox());
     neighbourhood.addCloud(fluid, Neighbourhood::Motion::moving);
     neighbourhood.addFixedCloud(wall);
@@ -450,35 +442,15 @@ OscillationResult oscillatingDrop(int dimension, int across, double periods) {
     moments.push_back(moment());
   }
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  double mean = 0;
-  for (const double m : moments) mean += m;
-  mean /= static_cast<double>(moments.size());
-  std::vector<double> crossings, extremes;
-  for (std::size_t k = 1; k < moments.size(); ++k) {
-    const double previous = moments[k - 1] - mean, now = moments[k] - mean;
-    if ((previous > 0) != (now > 0)) {
-      crossings.push_back(times[k - 1] + (times[k] - times[k - 1]) * previous / (previous - now));
-    }
-    if (k >= 2) {
-      const double before = moments[k - 2] - mean;
-      if (std::abs(previous) > std::abs(before) && std::abs(previous) >= std::abs(now)) {
-        extremes.push_back(std::abs(previous));
-      }
-    }
-  }
+  const testing::ModeReading mode = testing::readMode(times, moments);
   if (std::getenv("SPHCAST_CSF_TRACE")) {
-    for (const double e : extremes) std::cout << "  extreme " << e / (R * R) << std::endl;
-    for (const double t : crossings)
+    for (const double e : mode.extremes) std::cout << "  extreme " << e / (R * R) << std::endl;
+    for (const double t : mode.crossings) {
       std::cout << "  crossing " << t / result.lambPeriod << std::endl;
+    }
   }
-  if (crossings.size() >= 3) {
-    result.period =
-        (crossings.back() - crossings.front()) / (0.5 * static_cast<double>(crossings.size() - 1));
-  }
-  if (extremes.size() >= 2 && result.period > 0) {
-    result.decay = std::log(extremes.front() / extremes.back()) /
-                   (0.5 * result.period * static_cast<double>(extremes.size() - 1));
-  }
+  result.period = mode.period;
+  result.decay = mode.decay;
   return result;
 }
 

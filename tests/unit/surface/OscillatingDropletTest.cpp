@@ -180,32 +180,10 @@ DropletResult oscillatingDroplet(const DropletSetup& setup) {
   }
   result.seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - clockStart).count();
-  double mean = 0;
-  for (const double m : moments) mean += m;
-  mean /= static_cast<double>(moments.size());
-  std::vector<double> crossings, extremeValues;
-  for (std::size_t k = 1; k < moments.size(); ++k) {
-    const double previous = moments[k - 1] - mean, now = moments[k] - mean;
-    if ((previous > 0) != (now > 0)) {
-      crossings.push_back(times[k - 1] + (times[k] - times[k - 1]) * previous / (previous - now));
-    }
-    if (k >= 2) {
-      const double beforePrevious = moments[k - 2] - mean;
-      if (std::abs(previous) > std::abs(beforePrevious) && std::abs(previous) >= std::abs(now)) {
-        extremeValues.push_back(std::abs(previous));
-      }
-    }
-  }
-  result.offset = mean / R;
-  if (crossings.size() >= 3) {
-    result.period =
-        (crossings.back() - crossings.front()) / (0.5 * static_cast<double>(crossings.size() - 1));
-  }
-  if (extremeValues.size() >= 2) {
-    // successive extremes are half a period apart
-    result.decay = std::log(extremeValues.front() / extremeValues.back()) /
-                   (0.5 * result.period * static_cast<double>(extremeValues.size() - 1));
-  }
+  const testing::ModeReading mode = testing::readMode(times, moments);
+  result.offset = mode.mean / R;
+  result.period = mode.period;
+  result.decay = mode.decay;
   return result;
 }
 

@@ -228,15 +228,7 @@ TEST(SurfaceForce, SameBitsOnOneAndTwoThreads) {
     ParticleCloud fluid = latticeFluid(
         3, dx, Vector(-8 * dx, -8 * dx, 0), Vector(8 * dx, 8 * dx, 8 * dx),
         [&](const Vector& x) { return x.norm() < 7 * dx; }, 1000, 1e-3, 0.1);
-    ParticleCloud wall = testing::emptyWall();
-    for (int k = -10; k < 10; ++k) {  // a floor of three layers under the half ball
-      testing::addWallCells(
-          wall, -10, 10, -3, 0, dx, Vector(0, 0, (k + Real(0.5)) * dx),
-          [](int, int) { return Vector(0, 1, 0); },
-          [dx](int, int row) { return (-row - Real(0.5)) * dx; });
-    }
-    for (Vector& x : wall.positions()) x = Vector(x[0], x[2], x[1]);  // the floor in z = 0
-    for (Vector& n : wall.vectorField("normal")) n = Vector(0, 0, 1);
+    ParticleCloud wall = testing::floorInZ(10, dx);  // three layers under the half ball
     Neighbourhood neighbourhood(h, PeriodicBox());
     neighbourhood.addCloud(fluid, Neighbourhood::Motion::moving);
     neighbourhood.addFixedCloud(wall);

@@ -14,6 +14,7 @@
 #include "core/dictionary/Dictionary.h"
 #include "materials/MaterialLibrary.h"
 #include "particles/Neighbourhood.h"
+#include "sph/FlowTestCases.h"
 #include "sph/WeaklyCompressibleFlow.h"
 #include "surface/ContinuumSurfaceForce.h"
 #include "surface/SurfaceEnergyTension.h"
@@ -48,6 +49,30 @@ inline Real capillarySoundSpeed(Real energyFactor, Real gamma, Real dx, Real rho
   return std::sqrt(energyFactor * gamma / (dx * rho * compression));
 }
 
+// A fluid at rest of density rho and dynamic viscosity mu on the given positions, each particle
+// carrying rho dx^d, with the fields the flow and the surface tension read.
+inline ParticleCloud fluidAtRest(int dimension, Real dx, const std::vector<Vector>& positions,
+                                 Real rho, Real mu) {
+  ParticleCloud fluid("fluid");
+  fluid.resize(positions.size());
+  auto& U = fluid.addVectorField("U");
+  auto& density = fluid.addScalarField("rho");
+  auto& mass = fluid.addScalarField("mass");
+  auto& viscosity = fluid.addScalarField("viscosity");
+  auto& rest = fluid.addScalarField("restDensity");
+  fluid.addVectorField("acceleration");
+  fluid.addScalarField("densityRate");
+  for (std::size_t i = 0; i < positions.size(); ++i) {
+    fluid.positions()[i] = positions[i];
+    U[i] = Vector::Zero();
+    density[i] = rest[i] = rho;
+    mass[i] = rho * std::pow(dx, dimension);
+    viscosity[i] = mu;
+  }
+  fluid.attributes()["spacing"] = dx;
+  return fluid;
+}
+
 // The lattice particles (spacing dx, cell centres on (i + 1/2) dx, z = 0 in 2D) for which
 // inside(x) holds, as a fluid at rest of density rho and dynamic viscosity mu; each particle
 // moved by up to `jitter` dx along each axis when jitter > 0.
@@ -73,32 +98,16 @@ inline ParticleCloud latticeFluid(int dimension, Real dx, const Vector& lower, c
       }
     }
   }
-  std::mt19937 random(seed);
-  std::uniform_real_distribution<Real> offset(-jitter * dx, jitter * dx);
-  ParticleCloud fluid("fluid");
-  fluid.resize(positions.size());
-  auto& U = fluid.addVectorField("U");
-  auto& density = fluid.addScalarField("rho");
-  auto& mass = fluid.addScalarField("mass");
-  auto& viscosity = fluid.addScalarField("viscosity");
-  auto& rest = fluid.addScalarField("restDensity");
-  fluid.addVectorField("acceleration");
-  fluid.addScalarField("densityRate");
-  for (std::size_t i = 0; i < positions.size(); ++i) {
-    Vector x = positions[i];
-    if (jitter > 0) {
+  if (jitter > 0) {
+    std::mt19937 random(seed);
+    std::uniform_real_distribution<Real> offset(-jitter * dx, jitter * dx);
+    for (Vector& x : positions) {
       x[0] += offset(random);
       x[1] += offset(random);
       if (dimension == 3) x[2] += offset(random);
     }
-    fluid.positions()[i] = x;
-    U[i] = Vector::Zero();
-    density[i] = rest[i] = rho;
-    mass[i] = rho * std::pow(dx, dimension);
-    viscosity[i] = mu;
   }
-  fluid.attributes()["spacing"] = dx;
-  return fluid;
+  return fluidAtRest(dimension, dx, positions, rho, mu);
 }
 
 // A drop of radius R = layers dx centred on the origin, built of rings (2D) or shells (3D) of
@@ -128,24 +137,60 @@ inline ParticleCloud ringFluid(int dimension, Real dx, int layers, Real rho, Rea
       }
     }
   }
-  ParticleCloud fluid("fluid");
-  fluid.resize(positions.size());
-  auto& U = fluid.addVectorField("U");
-  auto& density = fluid.addScalarField("rho");
-  auto& mass = fluid.addScalarField("mass");
-  auto& viscosity = fluid.addScalarField("viscosity");
-  auto& rest = fluid.addScalarField("restDensity");
-  fluid.addVectorField("acceleration");
-  fluid.addScalarField("densityRate");
-  for (std::size_t i = 0; i < positions.size(); ++i) {
-    fluid.positions()[i] = positions[i];
-    U[i] = Vector::Zero();
-    density[i] = rest[i] = rho;
-    mass[i] = rho * std::pow(dx, dimension);
-    viscosity[i] = mu;
+  return fluidAtRest(dimension, dx, positions, rho, mu);
+}
+
+// A 3D floor of three wall layers in z < 0 (its surface z = 0, normals +z), 2 reach spacings a
+// side about the origin, for a half ball resting on it.
+inline ParticleCloud floorInZ(int reach, Real dx) {
+  ParticleCloud wall = emptyWall();
+  for (int k = -reach; k < reach; ++k) {
+    addWallCells(
+        wall, -reach, reach, -3, 0, dx, Vector(0, 0, (k + Real(0.5)) * dx),
+        [](int, int) { return Vector(0, 1, 0); },
+        [dx](int, int row) { return (-row - Real(0.5)) * dx; });
   }
-  fluid.attributes()["spacing"] = dx;
-  return fluid;
+  for (Vector& x : wall.positions()) x = Vector(x[0], x[2], x[1]);
+  for (Vector& n : wall.vectorField("normal")) n = Vector(0, 0, 1);
+  return wall;
+}
+
+// A drop's mode read from the history of its moment (times, moments): the period from the zero
+// crossings about the moment's mean over the run (a relaxed drop is not quite round, so its
+// moment keeps an offset), the amplitude's decay rate from successive extremes (half a period
+// apart); 0 where there are too few crossings or extremes.
+struct ModeReading {
+  double period = 0, decay = 0, mean = 0;
+  std::vector<double> crossings, extremes;  // times; |moment - mean|
+};
+
+inline ModeReading readMode(const std::vector<double>& times, const std::vector<double>& moments) {
+  ModeReading mode;
+  for (const double m : moments) mode.mean += m;
+  mode.mean /= static_cast<double>(moments.size());
+  for (std::size_t k = 1; k < moments.size(); ++k) {
+    const double previous = moments[k - 1] - mode.mean, now = moments[k] - mode.mean;
+    if ((previous > 0) != (now > 0)) {
+      mode.crossings.push_back(times[k - 1] +
+                               (times[k] - times[k - 1]) * previous / (previous - now));
+    }
+    if (k >= 2) {
+      const double before = moments[k - 2] - mode.mean;
+      if (std::abs(previous) > std::abs(before) && std::abs(previous) >= std::abs(now)) {
+        mode.extremes.push_back(std::abs(previous));
+      }
+    }
+  }
+  const std::size_t crossings = mode.crossings.size(), extremes = mode.extremes.size();
+  if (crossings >= 3) {
+    mode.period = (mode.crossings.back() - mode.crossings.front()) /
+                  (0.5 * static_cast<double>(crossings - 1));
+  }
+  if (extremes >= 2 && mode.period > 0) {
+    mode.decay = std::log(mode.extremes.front() / mode.extremes.back()) /
+                 (0.5 * mode.period * static_cast<double>(extremes - 1));
+  }
+  return mode;
 }
 
 // A flow with surface tension (the model Tension: SurfaceEnergyTension or
