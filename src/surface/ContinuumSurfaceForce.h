@@ -50,7 +50,9 @@ class SurfaceDepthProfile {
 //   particles/WallSurfaceDistance.h, each step, so curved and moving molds are followed) the
 //   normal is turned towards n_w cos(theta) + t sin(theta), t the unit part of n_i along the
 //   wall, with the weight 1 - s(l_i / h) (s: smoothstep): at the wall the surface meets it at
-//   theta (Young), and the curvature that follows bends it there;
+//   theta (Young), and the curvature that follows bends it there; theta is at most 150 degrees
+//   (above it a free drop on a wall threw particles out; 150 reads 109 to 114 on a sessile
+//   drop, doc/validation.md §2.2);
 // - curvature: the divergence of n over the surface particles, normalised so that it is exact
 //   for a field that turns only along the surface, whatever part of the kernel is filled:
 //     kappa_i = (d - 1) sum_j w_j V_j (n_j - n_i) . grad_i W_ij
@@ -74,12 +76,15 @@ class SurfaceDepthProfile {
 class ContinuumSurfaceForce : public SurfaceTensionModel {
  public:
   // settings: dimension, supportRadius, spacing, gasTension (sigma) and cosContactAngle
-  // (180 degrees by default) are read; the rest belongs to surfaceEnergy.
+  // (150 degrees by default, and at most: see settingsWarning) are read; the rest belongs to
+  // surfaceEnergy.
   ContinuumSurfaceForce(SurfaceTensionSettings settings, ParticleCloud& fluid,
                         std::vector<const ParticleCloud*> walls, Neighbourhood& neighbourhood);
 
   std::string limitName() const override { return "capillary"; }
   std::string summary(double soundSpeed) const override;
+  // contactAngle above 150 degrees (imposed as 150)
+  std::string settingsWarning(double soundSpeed) const override;
   void addAcceleration() override;
   // 0.25 sqrt(rho_min dx^3 / (2 pi sigma_max)) (Brackbill, Kothe & Zemach 1992).
   double stableDeltaT() const override;

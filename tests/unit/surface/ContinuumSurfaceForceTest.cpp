@@ -18,8 +18,11 @@
 #include <cmath>
 #include <cstdlib>
 #include <iostream>
+#include <memory>
 #include <numbers>
+#include <optional>
 #include <sstream>
+#include <string>
 
 #include <Eigen/Dense>
 
@@ -148,6 +151,38 @@ TEST(ContinuumSurfaceForce, AFaceOnAWallIsNoSurface) {
       EXPECT_TRUE(tension.onSurface()[i]);
     }
   }
+}
+
+// Above 150 degrees the turned normal threw particles off a free drop (doc/validation.md §2.2):
+// a larger contactAngle is imposed as 150 and the log is warned; 150 is also the default.
+TEST(ContinuumSurfaceForce, AContactAngleAbove150IsImposedAs150WithAWarning) {
+  const Real dx = 0.001;
+  ParticleCloud fluid = testing::latticeFluid(
+      2, dx, Vector(0, 0, 0), Vector(6 * dx, 4 * dx, 0), [](const Vector&) { return true; }, 1000,
+      1e-3);
+  ParticleCloud wall = testing::emptyWall();
+  testing::addWallCells(
+      wall, -4, 10, -3, 0, dx, Vector::Zero(), [](int, int) { return Vector(0, 1, 0); },
+      [dx](int, int row) { return (-row - Real(0.5)) * dx; });
+  Neighbourhood neighbourhood(3 * dx, PeriodicBox());
+  neighbourhood.addCloud(fluid, Neighbourhood::Motion::moving);
+  neighbourhood.addFixedCloud(wall);
+  auto model = [&](std::optional<double> degrees) {
+    SurfaceTensionSettings settings = testing::tensionSettings(2, 3 * dx, dx, 0.07);
+    if (degrees) {
+      settings.cosContactAngle = static_cast<Real>(std::cos(*degrees * std::numbers::pi / 180));
+    }
+    return std::make_unique<ContinuumSurfaceForce>(
+        settings, fluid, std::vector<const ParticleCloud*>{&wall}, neighbourhood);
+  };
+  const std::string asked170 = model(170.0)->settingsWarning(1);
+  EXPECT_NE(asked170.find("contactAngle 170 is imposed as 150"), std::string::npos) << asked170;
+  EXPECT_NE(model(180.0)->summary(1).find("contact angle 150 degrees"), std::string::npos);
+  EXPECT_TRUE(model(150.0)->settingsWarning(1).empty());
+  EXPECT_TRUE(model(60.0)->settingsWarning(1).empty());
+  EXPECT_NE(model(60.0)->summary(1).find("contact angle 60 degrees"), std::string::npos);
+  EXPECT_TRUE(model(std::nullopt)->settingsWarning(1).empty());
+  EXPECT_NE(model(std::nullopt)->summary(1).find("contact angle 150 degrees"), std::string::npos);
 }
 
 // Every pass (colour, normals, the turn at the wall, curvature, its smoothing, the force) gives
