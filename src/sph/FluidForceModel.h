@@ -1,6 +1,9 @@
 #pragma once
 
 #include <string>
+#include <vector>
+
+#include "core/Real.h"
 
 namespace sphcast {
 
@@ -20,6 +23,12 @@ class FluidForceModel {
   virtual double stableDeltaT() const = 0;
   // Wall time spent in addAcceleration, seconds since construction.
   virtual double seconds() const = 0;
+  // A model that needs the colour gradient g_i = -sum_j V_j grad_i W_ij over the fluid and the
+  // walls (V_j = m_j / rho_j, the walls' `volume`; uncorrected kernel gradients) returns where
+  // the flow should write it: the flow sums it in its own pair loop, which has every grad W at
+  // hand, before addAcceleration, one per fluid particle; the particles its loop skips (frozen
+  // metal with no melt within two hops) are left NaN. The model empties it once read.
+  virtual std::vector<Vector>* colourGradientBuffer() { return nullptr; }
 };
 
 }  // namespace sphcast

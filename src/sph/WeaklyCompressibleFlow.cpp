@@ -415,6 +415,19 @@ void WeaklyCompressibleFlow::computeRatesFor() {
     interiorLower[a] = periodic.lower(a) + margin;
     interiorUpper[a] = periodic.lower(a) + periodic.period(a) - margin;
   }
+  // The colour gradient a force model asked for (FluidForceModel::colourGradientBuffer), summed
+  // here beside the pressure, with the grad W the pair loop has anyway
+  Vector* colourGradient = nullptr;
+  const Real* pairVolume = nullptr;
+  if constexpr (wantsAcceleration) {
+    if (!colourGradientBuffers_.empty()) {
+      colourGradientBuffers_.front()->resize(x.size());
+      colourGradient = colourGradientBuffers_.front()->data();
+      pairVolume_.resize(x.size());
+      for (std::size_t j = 0; j < x.size(); ++j) pairVolume_[j] = mass[j] / rho[j];
+      pairVolume = pairVolume_.data();
+    }
+  }
   auto plainDifference = [](const Vector& a, const Vector& b) { return Vector(a - b); };
   auto ratesWith = [&](auto separation) {
 #pragma omp parallel for schedule(static)
@@ -425,6 +438,9 @@ void WeaklyCompressibleFlow::computeRatesFor() {
         for (const WallArrays& wall : walls) {
           if (wall.loadForce) wall.loadForce[i] = wall.loadTorque[i] = Vector::Zero();
         }
+        if (colourGradient) {
+          colourGradient[i] = Vector::Constant(std::numeric_limits<Real>::quiet_NaN());
+        }
         continue;
       }
       const Vector xi = x[i];
@@ -433,6 +449,7 @@ void WeaklyCompressibleFlow::computeRatesFor() {
       const InterfaceSide self{rho[i], p[i], vi};
       Real rate = 0;
       Vector accel = gravity;
+      Vector colour = Vector::Zero();  // the colour gradient, when asked for
       const bool interior = inBox && (xi.array() >= interiorLower.array()).all() &&
                             (xi.array() <= interiorUpper.array()).all();
       const Matrix correctionI = corrected ? correction[i] : Matrix::Identity();
@@ -466,6 +483,7 @@ void WeaklyCompressibleFlow::computeRatesFor() {
           FluidPair<Dim, Interface, Viscosity>::accumulate(self, {rho[j], p[j], v[j]}, mass[j], muI,
                                                            mu[j], vi - v[j], xij, distance[n],
                                                            pairGradW, constants, rate, accel);
+          if (colourGradient) colour -= (pairVolume[j] * gradientFactor[n]) * xij;
           if (diffusive) {
             DeltaSPHPair::accumulate(rho[i], rho[j], densityGradientI,
                                      diffusiveDensity ? densityGradient[j] : Vector::Zero(),
@@ -485,6 +503,7 @@ void WeaklyCompressibleFlow::computeRatesFor() {
               wallVelocity,   wall.normal[k],   wall.volume[k],
               wall.depth[k],  wall.pressure[k], eos.density(wall.pressure[k], restDensity[i])};
           const Vector gradW = kernel.gradient(xik, r);
+          if (colourGradient) colour -= (wall.volume[k] * kernel.derivativeOverDistance(r)) * xik;
           Vector pairAcceleration = Vector::Zero();
           Vector& target = wall.loadForce ? pairAcceleration : accel;
           accumulateWallPair<Dim, Interface, Viscosity>(
@@ -512,6 +531,7 @@ void WeaklyCompressibleFlow::computeRatesFor() {
       }
       if constexpr (wantsDensityRate) densityRate[i] = rate;
       if constexpr (wantsAcceleration) acceleration[i] = accel;
+      if (colourGradient) colourGradient[i] = colour;
     }
   };
   if (periodic.anyPeriodic()) {
@@ -520,6 +540,11 @@ void WeaklyCompressibleFlow::computeRatesFor() {
     ratesWith(plainDifference);
   }
   if constexpr (wantsAcceleration) sumWallLoads();
+  if (colourGradient) {
+    for (std::size_t m = 1; m < colourGradientBuffers_.size(); ++m) {
+      *colourGradientBuffers_[m] = *colourGradientBuffers_.front();
+    }
+  }
 }
 
 // The numerics are chosen by type once per pass, never by `if` inside the pair loop.

@@ -120,7 +120,12 @@ class WeaklyCompressibleFlow {
 
   // A force the flow adds at every evaluation of the rates, after its own (surface tension);
   // the model must stay alive while the flow steps.
-  void addForceModel(FluidForceModel& model) { forceModels_.push_back(&model); }
+  void addForceModel(FluidForceModel& model) {
+    forceModels_.push_back(&model);
+    if (std::vector<Vector>* buffer = model.colourGradientBuffer()) {
+      colourGradientBuffers_.push_back(buffer);
+    }
+  }
 
   // One whole kick-drift-kick step of deltaT (a flow with its own neighbourhood).
   void step(double deltaT);
@@ -203,6 +208,9 @@ class WeaklyCompressibleFlow {
   std::vector<Vector> densityGradient_;          // renormalised grad rho (deltaSPH)
   WallClearanceReport lastClearance_;
   std::vector<FluidForceModel*> forceModels_;
+  // where the models that asked for the colour gradient want it, and m / rho for its sum
+  std::vector<std::vector<Vector>*> colourGradientBuffers_;
+  std::vector<Real> pairVolume_;
   std::vector<std::uint8_t> frozenTouchesMelt_, frozenNearMelt_;  // markFrozenNearMelt
   FlowTimings timings_;
 };

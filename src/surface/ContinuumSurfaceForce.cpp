@@ -201,7 +201,8 @@ double ContinuumSurfaceForce::stableDeltaT() const {
   return 0.25 * std::sqrt(lightest * dx * dx * dx / (2 * std::numbers::pi * sigma));
 }
 
-// c_i, the raw colour gradient, z_i, then the normal smoothed over the fluid and made unit.
+// The colour gradient g_i, then c_i and z_i where i can be a surface particle, then the normal
+// smoothed over the fluid and made unit.
 template <int Dim>
 void ContinuumSurfaceForce::computeColourAndNormal() {
   const WendlandC2Kernel<Dim> kernel(settings_.supportRadius);
@@ -227,34 +228,62 @@ void ContinuumSurfaceForce::computeColourAndNormal() {
   const Real bulk = bulkColour_;
   const Real threshold = Real(0.1) * surfaceGradient_;
   const Real h = settings_.supportRadius;
-  auto colourPass = [&](auto separation) {
+  // g from the flow's pair loop when it summed it for these positions (colourGradientBuffer:
+  // the same sum, where every grad W was at hand), else here; the particles the flow skipped
+  // (frozen metal away from the melt) it left NaN
+  const bool fromFlow = flowGradient_.size() == n;
+  if (fromFlow) ++passesWithFlowsGradient_;
+  auto gradientPass = [&](auto separation) {
 #pragma omp parallel for schedule(static)
     for (std::size_t i = 0; i < n; ++i) {
-      Real c = volume_[i] * self;
+      if (fromFlow && flowGradient_[i].allFinite()) {
+        gradient_[i] = flowGradient_[i] / bulk;
+        continue;
+      }
       Vector g = Vector::Zero();
       for (const std::uint32_t j : pairs.of(i)) {
         const Vector xij = separation(x[i], x[j]);
-        const Real r = xij.norm();
-        c += volume_[j] * kernel.value(r);
-        g -= (volume_[j] * kernel.derivativeOverDistance(r)) * xij;
+        g -= (volume_[j] * kernel.derivativeOverDistance(xij.norm())) * xij;
       }
       for (std::size_t w = 0; w < walls_.size(); ++w) {
         const auto& y = walls_[w]->positions();
         const auto& v = wallVolume_[w];
         for (const std::uint32_t k : wallPairs[w]->of(i)) {
           const Vector xik = separation(x[i], y[k]);
-          const Real r = xik.norm();
-          c += v[k] * kernel.value(r);
-          g -= (v[k] * kernel.derivativeOverDistance(r)) * xik;
+          g -= (v[k] * kernel.derivativeOverDistance(xik.norm())) * xik;
+        }
+      }
+      gradient_[i] = g / bulk;
+    }
+  };
+  withSeparation(periodic, gradientPass);
+  flowGradient_.clear();  // used: the next pass asks the flow again
+  // c and z only where the surface weight can be above 0: |g| above the threshold (most of the
+  // liquid lies deeper; there colour and depth are not computed, NaN)
+  auto colourPass = [&](auto separation) {
+#pragma omp parallel for schedule(dynamic, 256)
+    for (std::size_t i = 0; i < n; ++i) {
+      const Real length = gradient_[i].norm();
+      if (!(length > threshold)) {
+        colour_[i] = depth_[i] = std::numeric_limits<Real>::quiet_NaN();
+        continue;
+      }
+      Real c = volume_[i] * self;
+      for (const std::uint32_t j : pairs.of(i)) {
+        c += volume_[j] * kernel.value(separation(x[i], x[j]).norm());
+      }
+      for (std::size_t w = 0; w < walls_.size(); ++w) {
+        const auto& y = walls_[w]->positions();
+        const auto& v = wallVolume_[w];
+        for (const std::uint32_t k : wallPairs[w]->of(i)) {
+          c += v[k] * kernel.value(separation(x[i], y[k]).norm());
         }
       }
       colour_[i] = c / bulk;
-      gradient_[i] = g / bulk;
       depth_[i] = profile_.depth(colour_[i]);
       // from a tenth to a fifth of a flat face's largest gradient the weight rises smoothly:
       // a particle that crossed a sharp threshold would be kicked
-      surfaceWeight_[i] =
-          depth_[i] < h ? smoothstep(gradient_[i].norm() / threshold - Real(1)) : Real(0);
+      surfaceWeight_[i] = depth_[i] < h ? smoothstep(length / threshold - Real(1)) : Real(0);
       onSurface_[i] = surfaceWeight_[i] > 0 ? 1 : 0;
     }
   };

@@ -86,14 +86,21 @@ class ContinuumSurfaceForce : public SurfaceTensionModel {
   // contactAngle above 150 degrees (imposed as 150)
   std::string settingsWarning(double soundSpeed) const override;
   void addAcceleration() override;
+  // The flow sums g_i in its own pair loop into this (the model's colour pass then reads it).
+  std::vector<Vector>* colourGradientBuffer() override { return &flowGradient_; }
   // 0.25 sqrt(rho_min dx^3 / (2 pi sigma_max)) (Brackbill, Kothe & Zemach 1992).
   double stableDeltaT() const override;
   double seconds() const override { return seconds_; }
 
-  // The per-particle quantities of the last pass (tests, the log).
+  // The per-particle quantities of the last pass (tests, the log); colour and depth only where
+  // |g| is above a tenth of a face's (where i can be on the surface), NaN elsewhere.
   const std::vector<Real>& colour() const { return colour_; }
   const std::vector<Real>& depth() const { return depth_; }
   const std::vector<Vector>& unitNormal() const { return unitNormal_; }
+  // g_i over the flat face's bulk colour (1/m)
+  const std::vector<Vector>& colourGradient() const { return gradient_; }
+  // How many passes took g from the flow's pair loop (colourGradientBuffer), not their own.
+  std::size_t passesWithFlowsGradient() const { return passesWithFlowsGradient_; }
   // 1 for the surface particles (a byte each: the passes write them from several threads)
   const std::vector<std::uint8_t>& onSurface() const { return onSurface_; }
   // Computes the colour, normals, curvature and delta of the current positions, no force.
@@ -120,6 +127,8 @@ class ContinuumSurfaceForce : public SurfaceTensionModel {
   // per particle, from the last pass
   std::vector<Real> volume_, tension_, colour_, depth_, kappa_;
   std::vector<Vector> gradient_, unitNormal_;
+  std::vector<Vector> flowGradient_;  // -sum_j V_j grad_i W_ij, from the flow's pass (unscaled)
+  std::size_t passesWithFlowsGradient_ = 0;
   std::vector<std::uint8_t> onSurface_;
   std::vector<Real> surfaceWeight_;  // 0 off the surface to 1 on it
   double seconds_ = 0;

@@ -4,9 +4,11 @@
 //     s_i and the energy, then the pair forces), skipping the pairs inside the liquid
 //     (surfaceOnly) or not (allPairs);
 //   ContinuumSurfaceForcePass: the continuum surface force's passes alone
-//     (surface/ContinuumSurfaceForce.h: colour and gradient, normals, curvature, force);
-//   FlowStep: a whole flow step over one shared neighbourhood, alone, with the surface energy,
-//     with the continuum surface force.
+//     (surface/ContinuumSurfaceForce.h: colour gradient, colour near the surface, normals,
+//     curvature, force), summing the colour gradient itself;
+//   FlowStep: a whole flow step over one shared neighbourhood, alone, with the flow summing the
+//     colour gradient for a model that adds nothing (its cost in the flow's pair loop), with
+//     the surface energy, with the continuum surface force.
 // Reports particle-steps/s (items).
 #include <benchmark/benchmark.h>
 
@@ -113,7 +115,20 @@ BENCHMARK(ContinuumSurfaceForcePass)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 
-enum class Tension { none, surfaceEnergy, continuumSurfaceForce };
+enum class Tension { none, colourGradientOnly, surfaceEnergy, continuumSurfaceForce };
+
+// A force model that only asks the flow for the colour gradient.
+class ColourGradientOnly : public sphcast::FluidForceModel {
+ public:
+  std::string limitName() const override { return "none"; }
+  void addAcceleration() override { gradient_.clear(); }
+  double stableDeltaT() const override { return 1e30; }
+  double seconds() const override { return 0; }
+  std::vector<Vector>* colourGradientBuffer() override { return &gradient_; }
+
+ private:
+  std::vector<Vector> gradient_;
+};
 
 void FlowStep(benchmark::State& state, Tension model) {
   auto fluid = ball(state.range(0));
@@ -125,6 +140,8 @@ void FlowStep(benchmark::State& state, Tension model) {
   neighbourhood.addCloud(fluid, sphcast::Neighbourhood::Motion::moving);
   sphcast::WeaklyCompressibleFlow flow(settings, fluid, {}, neighbourhood);
   std::unique_ptr<sphcast::SurfaceTensionModel> tension;
+  ColourGradientOnly colourGradientOnly;
+  if (model == Tension::colourGradientOnly) flow.addForceModel(colourGradientOnly);
   if (model == Tension::surfaceEnergy) {
     tension = std::make_unique<sphcast::SurfaceEnergyTension>(
         tensionSettings(true), fluid, std::vector<const sphcast::ParticleCloud*>{}, neighbourhood);
@@ -148,6 +165,11 @@ void FlowStep(benchmark::State& state, Tension model) {
   if (tension) state.counters["tension_ms"] = 1e3 * tension->seconds() / double(state.iterations());
 }
 BENCHMARK_CAPTURE(FlowStep, flowAlone, Tension::none)
+    ->Arg(10'000)
+    ->Arg(100'000)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+BENCHMARK_CAPTURE(FlowStep, summingTheColourGradient, Tension::colourGradientOnly)
     ->Arg(10'000)
     ->Arg(100'000)
     ->Unit(benchmark::kMillisecond)

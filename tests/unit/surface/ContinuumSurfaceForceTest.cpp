@@ -7,7 +7,8 @@
 // SPHCAST_CSF_OSCILLATION="dimension across periods", SPHCAST_CSF_SESSILE="layers
 // capillaryTimes bond angles..."; with them SPHCAST_CSF_LATTICE (a static drop of lattice
 // particles instead of rings), SPHCAST_CSF_C (a factor on the speed of sound) and
-// SPHCAST_CSF_TRACE (print as it runs).
+// SPHCAST_CSF_TRACE (print as it runs); SPHCAST_CSF_CYLINDER=F puts the sessile drops on a
+// cylinder of F times their radius.
 
 #include <gtest/gtest.h>
 
@@ -151,6 +152,40 @@ TEST(ContinuumSurfaceForce, AFaceOnAWallIsNoSurface) {
       EXPECT_TRUE(tension.onSurface()[i]);
     }
   }
+}
+
+// The colour gradient summed in the flow's pair loop (FluidForceModel::colourGradientBuffer) is
+// the one the model sums alone, bit for bit: a half disk on a wall, after a few steps.
+TEST(ContinuumSurfaceForce, TheFlowsColourGradientIsTheModelsOwn) {
+  const Real dx = 5e-4, h = 3 * dx, radius = 10 * dx;
+  ParticleCloud fluid = testing::latticeFluid(
+      2, dx, Vector(-radius - dx, 0, 0), Vector(radius + dx, radius + dx, 0),
+      [&](const Vector& x) { return x.norm() < radius; }, 1000, 0.1);
+  ParticleCloud wall = testing::emptyWall();
+  testing::addWallCells(
+      wall, -40, 40, -3, 0, dx, Vector::Zero(), [](int, int) { return Vector(0, 1, 0); },
+      [dx](int, int row) { return (-row - Real(0.5)) * dx; });
+  FlowSettings flow;
+  flow.dimension = 2;
+  flow.supportRadius = h;
+  flow.soundSpeed = 5;
+  SurfaceTensionSettings tension = testing::tensionSettings(2, h, dx, 0.07);
+  tension.cosContactAngle = Real(-0.5);
+  testing::CapillaryRun<ContinuumSurfaceForce> run(flow, tension, fluid, {&wall});
+  for (int step = 0; step < 20; ++step) run.step(run.stableDeltaT());
+  const std::size_t before = run.tension.passesWithFlowsGradient();
+  run.flow.computeRatesAndKick(0);  // the rates of this state (a step's kick moves rho after)
+  ASSERT_EQ(run.tension.passesWithFlowsGradient(), before + 1);
+  const std::vector<Vector> fromFlow = run.tension.colourGradient();
+  run.tension.computeSurface();  // its own sums
+  const std::vector<Vector>& own = run.tension.colourGradient();
+  ASSERT_EQ(fromFlow.size(), own.size());
+  std::size_t surface = 0;
+  for (std::size_t i = 0; i < own.size(); ++i) {
+    EXPECT_EQ(fromFlow[i], own[i]) << "particle " << i;
+    surface += run.tension.onSurface()[i];
+  }
+  EXPECT_GT(surface, 20u);
 }
 
 // Above 150 degrees the turned normal threw particles off a free drop (doc/validation.md §2.2):
@@ -523,17 +558,47 @@ struct SessileResult {
   std::size_t particles = 0;
 };
 
-SessileResult sessileDrop(double degrees, int layers, double capillaryTimes, double bond) {
+// With `cylinder` > 0 the wall is a cylinder (a circle in 2D) of that many times the cap's
+// radius, its top at y = 0 (three rings of particles a spacing apart), and the drop the lattice
+// particles of the half disk that lie outside it; the angle then from the fitted circle and the
+// cylinder's, cos theta = (R^2 + R_c^2 - D^2) / (2 R R_c), D between their centres.
+SessileResult sessileDrop(double degrees, int layers, double capillaryTimes, double bond,
+                          double cylinder = 0) {
   const Real sigma = 0.07, rho = 1000, nu = 1e-4, dx = 5e-4, h = 3 * dx;
   const Real capRadius = layers * dx;
+  const Real cylinderRadius = static_cast<Real>(cylinder) * capRadius;
+  const Vector cylinderCentre(0, -cylinderRadius, 0);
   ParticleCloud fluid = testing::latticeFluid(
-      2, dx, Vector(-capRadius - dx, 0, 0), Vector(capRadius + dx, capRadius + dx, 0),
-      [&](const Vector& x) { return x.norm() < capRadius; }, rho, rho * nu);
+      2, dx, Vector(-capRadius - dx, -capRadius, 0), Vector(capRadius + dx, capRadius + dx, 0),
+      [&](const Vector& x) {
+        if (cylinder > 0) {
+          return x.norm() < capRadius && (x - cylinderCentre).norm() > cylinderRadius + dx / 2;
+        }
+        return x.norm() < capRadius && x[1] > 0;
+      },
+      rho, rho * nu);
   ParticleCloud wall = testing::emptyWall();
   const int reach = 4 * layers;
-  testing::addWallCells(
-      wall, -reach, reach, -3, 0, dx, Vector::Zero(), [](int, int) { return Vector(0, 1, 0); },
-      [dx](int, int row) { return (-row - Real(0.5)) * dx; });
+  if (cylinder > 0) {
+    for (int ring = 0; ring < 3; ++ring) {
+      const Real radius = cylinderRadius - (ring + Real(0.5)) * dx;
+      const int count = static_cast<int>(std::round(2 * std::numbers::pi * radius / dx));
+      for (int k = 0; k < count; ++k) {
+        const Real angle = 2 * std::numbers::pi * (k + Real(0.5) * (ring % 2)) / count;
+        const Vector normal(std::sin(angle), std::cos(angle), 0);
+        const std::size_t index = wall.size();
+        wall.resize(index + 1);
+        wall.positions()[index] = cylinderCentre + radius * normal;
+        wall.scalarField("volume")[index] = dx * dx;
+        wall.vectorField("normal")[index] = normal;
+        wall.scalarField("wallDistance")[index] = (ring + Real(0.5)) * dx;
+      }
+    }
+  } else {
+    testing::addWallCells(
+        wall, -reach, reach, -3, 0, dx, Vector::Zero(), [](int, int) { return Vector(0, 1, 0); },
+        [dx](int, int row) { return (-row - Real(0.5)) * dx; });
+  }
   const double area = static_cast<double>(fluid.size()) * dx * dx;
   FlowSettings flow;
   flow.dimension = 2;
@@ -558,6 +623,22 @@ SessileResult sessileDrop(double degrees, int layers, double capillaryTimes, dou
       }
       std::cout << "  t " << run.time << " fastest " << fastest << " lowest " << lowest
                 << " dx, largest |kappa| dx " << kmax * dx << std::endl;
+      if (std::getenv("SPHCAST_CSF_TRACE_FASTEST")) {
+        std::size_t f = 0;
+        for (std::size_t i = 0; i < fluid.size(); ++i) {
+          if (fluid.vectorField("U")[i].norm() > fluid.vectorField("U")[f].norm()) f = i;
+        }
+        int near = 0;
+        for (std::size_t j = 0; j < fluid.size(); ++j) {
+          near += (fluid.positions()[j] - fluid.positions()[f]).norm() < h;
+        }
+        std::cout << "    fastest at " << (fluid.positions()[f] / dx).transpose() << " dx, U "
+                  << fluid.vectorField("U")[f].transpose() << ", " << near - 1
+                  << " fluid within h, g " << run.tension.colourGradient()[f].transpose() * dx
+                  << " /dx, kappa dx " << fluid.scalarField("curvature")[f] * dx << ", surface "
+                  << int(run.tension.onSurface()[f]) << ", a "
+                  << fluid.vectorField("acceleration")[f].transpose() << std::endl;
+      }
     }
   }
   SessileResult result;
@@ -576,16 +657,24 @@ SessileResult sessileDrop(double degrees, int layers, double capillaryTimes, dou
     }
     if (!run.tension.onSurface()[i] || run.tension.depth()[i] > Real(0.8) * dx) continue;
     const Vector surface = x[i] + run.tension.depth()[i] * run.tension.unitNormal()[i];
-    if (surface[1] < h) continue;
+    const Real aboveWall =
+        cylinder > 0 ? (surface - cylinderCentre).norm() - cylinderRadius : surface[1];
+    if (aboveWall < h) continue;
     a.conservativeResize(a.rows() + 1, Eigen::NoChange);
     b.conservativeResize(b.rows() + 1);
     a.row(a.rows() - 1) << double(surface[0]), double(surface[1]), 1.0;
     b(b.rows() - 1) = -double(surface.squaredNorm());
   }
   const Eigen::Vector3d fit = a.colPivHouseholderQr().solve(b);
-  const double centreY = -0.5 * fit(1);
+  const Eigen::Vector2d centre(-0.5 * fit(0), -0.5 * fit(1));
   const double fitted = std::sqrt(0.25 * fit(0) * fit(0) + 0.25 * fit(1) * fit(1) - fit(2));
-  result.angle = std::acos(std::clamp(-centreY / fitted, -1.0, 1.0)) * 180 / std::numbers::pi;
+  double cosine = -centre(1) / fitted;
+  if (cylinder > 0) {
+    const double rc = cylinderRadius;
+    const double apart = (centre - Eigen::Vector2d(0, -rc)).norm();
+    cosine = (fitted * fitted + rc * rc - apart * apart) / (2 * fitted * rc);
+  }
+  result.angle = std::acos(std::clamp(cosine, -1.0, 1.0)) * 180 / std::numbers::pi;
   return result;
 }
 
@@ -598,8 +687,10 @@ TEST(ContinuumSurfaceForce, SessileDropStudy) {
   int layers = 15;
   double times = 10, bond = 0.2;
   in >> layers >> times >> bond;
+  const char* cylinder = std::getenv("SPHCAST_CSF_CYLINDER");  // its radius over the cap's
   for (double degrees = 0; in >> degrees;) {
-    const SessileResult r = sessileDrop(degrees, layers, times, bond);
+    const SessileResult r =
+        sessileDrop(degrees, layers, times, bond, cylinder ? std::atof(cylinder) : 0.0);
     std::cout << "theta " << degrees << ": " << r.angle << " degrees, " << r.particles
               << " particles, lowest " << r.lowest << " dx above the wall, nearest pair "
               << r.closest << " dx, " << r.seconds << " s" << std::endl;
