@@ -559,24 +559,34 @@ struct SessileResult {
 };
 
 // With `cylinder` > 0 the wall is a cylinder (a circle in 2D) of that many times the cap's
-// radius, its top at y = 0 (three rings of particles a spacing apart), and the drop the lattice
-// particles of the half disk that lie outside it; the angle then from the fitted circle and the
-// cylinder's, cos theta = (R^2 + R_c^2 - D^2) / (2 R R_c), D between their centres.
+// radius, its top at y = 0 (three rings of particles a spacing apart), and the drop the particles
+// of rings round it a spacing apart within the cap's radius of the top; the angle then from the
+// fitted circle and the cylinder's, cos theta = (R^2 + R_c^2 - D^2) / (2 R R_c), D between
+// their centres.
 SessileResult sessileDrop(double degrees, int layers, double capillaryTimes, double bond,
                           double cylinder = 0) {
   const Real sigma = 0.07, rho = 1000, nu = 1e-4, dx = 5e-4, h = 3 * dx;
   const Real capRadius = layers * dx;
   const Real cylinderRadius = static_cast<Real>(cylinder) * capRadius;
   const Vector cylinderCentre(0, -cylinderRadius, 0);
-  ParticleCloud fluid = testing::latticeFluid(
-      2, dx, Vector(-capRadius - dx, -capRadius, 0), Vector(capRadius + dx, capRadius + dx, 0),
-      [&](const Vector& x) {
-        if (cylinder > 0) {
-          return x.norm() < capRadius && (x - cylinderCentre).norm() > cylinderRadius + dx / 2;
-        }
-        return x.norm() < capRadius && x[1] > 0;
-      },
-      rho, rho * nu);
+  // on a cylinder the drop is built of rings round it a spacing apart (lattice rows would leave
+  // gaps of up to a spacing and more against its surface)
+  std::vector<Vector> rings;
+  for (int ring = 0; cylinder > 0 && ring < 2 * layers; ++ring) {
+    const Real radius = cylinderRadius + (ring + Real(0.5)) * dx;
+    const int count = static_cast<int>(std::round(2 * std::numbers::pi * radius / dx));
+    for (int k = 0; k < count; ++k) {
+      const Real angle = 2 * std::numbers::pi * (k + Real(0.5) * (ring % 2)) / count;
+      const Vector x = cylinderCentre + radius * Vector(std::sin(angle), std::cos(angle), 0);
+      if (x.norm() < capRadius) rings.push_back(x);
+    }
+  }
+  ParticleCloud fluid =
+      cylinder > 0 ? testing::fluidAtRest(2, dx, rings, rho, rho * nu)
+                   : testing::latticeFluid(
+                         2, dx, Vector(-capRadius - dx, 0, 0),
+                         Vector(capRadius + dx, capRadius + dx, 0),
+                         [&](const Vector& x) { return x.norm() < capRadius; }, rho, rho * nu);
   ParticleCloud wall = testing::emptyWall();
   const int reach = 4 * layers;
   if (cylinder > 0) {
