@@ -416,7 +416,9 @@ void WeaklyCompressibleFlow::computeRatesFor() {
     interiorUpper[a] = periodic.lower(a) + periodic.period(a) - margin;
   }
   // The colour gradient a force model asked for (FluidForceModel::colourGradientBuffer), summed
-  // here beside the pressure, with the grad W the pair loop has anyway
+  // here beside the pressure, with the grad W the pair loop has anyway. A flag that never
+  // changes within the pass, not another type: a type would double the pass's instantiations
+  // for one multiply-add per pair (3 % of a flow step when on, tests/benchmarks/README.md).
   Vector* colourGradient = nullptr;
   const Real* pairVolume = nullptr;
   if constexpr (wantsAcceleration) {

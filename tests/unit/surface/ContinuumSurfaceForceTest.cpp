@@ -8,7 +8,7 @@
 // capillaryTimes bond angles..."; with them SPHCAST_CSF_LATTICE (a static drop of lattice
 // particles instead of rings), SPHCAST_CSF_C (a factor on the speed of sound) and
 // SPHCAST_CSF_TRACE (print as it runs); SPHCAST_CSF_CYLINDER=F puts the sessile drops on a
-// cylinder of F times their radius.
+// cylinder of F times their radius, SPHCAST_CSF_3D makes them half balls on a 3D floor.
 
 #include <gtest/gtest.h>
 
@@ -155,7 +155,8 @@ TEST(ContinuumSurfaceForce, AFaceOnAWallIsNoSurface) {
 }
 
 // The colour gradient summed in the flow's pair loop (FluidForceModel::colourGradientBuffer) is
-// the one the model sums alone, bit for bit: a half disk on a wall, after a few steps.
+// the one the model sums alone, bit for bit: a half disk on a wall, after a few steps; then with
+// its lower part frozen, which the flow's loop skips.
 TEST(ContinuumSurfaceForce, TheFlowsColourGradientIsTheModelsOwn) {
   const Real dx = 5e-4, h = 3 * dx, radius = 10 * dx;
   ParticleCloud fluid = testing::latticeFluid(
@@ -186,6 +187,22 @@ TEST(ContinuumSurfaceForce, TheFlowsColourGradientIsTheModelsOwn) {
     surface += run.tension.onSurface()[i];
   }
   EXPECT_GT(surface, 20u);
+  // frozen metal with no melt within two hops (the flow's loop skips it, leaving NaN): the
+  // model sums those itself
+  auto& frozen = fluid.addScalarField("frozen");
+  std::size_t skipped = 0;
+  for (std::size_t i = 0; i < fluid.size(); ++i) {
+    frozen[i] = fluid.positions()[i][1] < 8 * dx ? 1 : 0;
+    skipped += fluid.positions()[i][1] < 1.5 * dx;
+  }
+  ASSERT_GT(skipped, 5u);
+  run.flow.computeRatesAndKick(0);
+  ASSERT_EQ(run.tension.passesWithFlowsGradient(), before + 2);
+  const std::vector<Vector> withFrozen = run.tension.colourGradient();
+  run.tension.computeSurface();
+  for (std::size_t i = 0; i < own.size(); ++i) {
+    EXPECT_EQ(withFrozen[i], run.tension.colourGradient()[i]) << "particle " << i;
+  }
 }
 
 // Above 150 degrees the turned normal threw particles off a free drop (doc/validation.md §2.2):
@@ -582,11 +599,11 @@ SessileResult sessileDrop(double degrees, int layers, double capillaryTimes, dou
     }
   }
   ParticleCloud fluid =
-      cylinder > 0 ? testing::fluidAtRest(2, dx, rings, rho, rho * nu)
-                   : testing::latticeFluid(
-                         2, dx, Vector(-capRadius - dx, 0, 0),
-                         Vector(capRadius + dx, capRadius + dx, 0),
-                         [&](const Vector& x) { return x.norm() < capRadius; }, rho, rho * nu);
+      cylinder > 0
+          ? testing::fluidAtRest(2, dx, rings, rho, rho * nu)
+          : testing::latticeFluid(
+                2, dx, Vector(-capRadius - dx, 0, 0), Vector(capRadius + dx, capRadius + dx, 0),
+                [&](const Vector& x) { return x.norm() < capRadius; }, rho, rho * nu);
   ParticleCloud wall = testing::emptyWall();
   const int reach = 4 * layers;
   if (cylinder > 0) {
@@ -688,6 +705,77 @@ SessileResult sessileDrop(double degrees, int layers, double capillaryTimes, dou
   return result;
 }
 
+// The same in 3D: the lattice particles of a half ball of radius `layers` dx on a floor
+// (floorInZ), Bond rho g V^(2/3) / sigma, capillary times of sqrt(rho V / sigma); the angle from a
+// sphere fitted to the surface more than h above the floor, cos theta = -z_centre / R.
+SessileResult sessileDrop3D(double degrees, int layers, double capillaryTimes, double bond) {
+  const Real sigma = 0.07, rho = 1000, nu = 1e-4, dx = 5e-4, h = 3 * dx;
+  const Real ballRadius = layers * dx;
+  ParticleCloud fluid = testing::latticeFluid(
+      3, dx, Vector(-ballRadius - dx, -ballRadius - dx, 0),
+      Vector(ballRadius + dx, ballRadius + dx, ballRadius + dx),
+      [&](const Vector& x) { return x.norm() < ballRadius; }, rho, rho * nu);
+  ParticleCloud wall = testing::floorInZ(3 * layers, dx);
+  const double volume = static_cast<double>(fluid.size()) * dx * dx * dx;
+  FlowSettings flow;
+  flow.dimension = 3;
+  flow.supportRadius = h;
+  flow.gravity =
+      Vector(0, 0, static_cast<Real>(-bond * sigma / (rho * std::cbrt(volume * volume))));
+  const double radius = std::cbrt(3 * volume / (4 * std::numbers::pi));
+  flow.soundSpeed = static_cast<Real>(std::sqrt(1000.0 * sigma / (rho * radius)));
+  SurfaceTensionSettings tension = testing::tensionSettings(3, h, dx, sigma);
+  tension.cosContactAngle = static_cast<Real>(std::cos(degrees * std::numbers::pi / 180));
+  testing::CapillaryRun<ContinuumSurfaceForce> run(flow, tension, fluid, {&wall});
+  const double end = capillaryTimes * std::sqrt(rho * volume / sigma);
+  const auto start = std::chrono::steady_clock::now();
+  long steps = 0;
+  while (run.time < end) {
+    run.step(run.stableDeltaT());
+    if (std::getenv("SPHCAST_CSF_TRACE") && ++steps % 100 == 0) {
+      double fastest = 0, kmax = 0, lowest = 1e9;
+      for (std::size_t i = 0; i < fluid.size(); ++i) {
+        fastest = std::max(fastest, static_cast<double>(fluid.vectorField("U")[i].norm()));
+        lowest = std::min(lowest, static_cast<double>(fluid.positions()[i][2] / dx));
+        kmax = std::max(kmax, std::abs(static_cast<double>(fluid.scalarField("curvature")[i])));
+      }
+      std::cout << "  t " << run.time << " fastest " << fastest << " lowest " << lowest
+                << " dx, largest |kappa| dx " << kmax * dx << std::endl;
+    }
+  }
+  SessileResult result;
+  result.particles = fluid.size();
+  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  run.tension.computeSurface();
+  const auto& x = fluid.positions();
+  std::vector<Eigen::Vector4d> rows;
+  std::vector<double> right;
+  result.lowest = 1e9;
+  result.closest = 1e9;
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    result.lowest = std::min(result.lowest, static_cast<double>(x[i][2] / dx));
+    for (std::size_t j = i + 1; j < x.size(); ++j) {
+      result.closest = std::min(result.closest, static_cast<double>((x[i] - x[j]).norm() / dx));
+    }
+    if (!run.tension.onSurface()[i] || run.tension.depth()[i] > Real(0.8) * dx) continue;
+    const Vector surface = x[i] + run.tension.depth()[i] * run.tension.unitNormal()[i];
+    if (surface[2] < h) continue;
+    rows.emplace_back(double(surface[0]), double(surface[1]), double(surface[2]), 1.0);
+    right.push_back(-double(surface.squaredNorm()));
+  }
+  Eigen::MatrixXd a(rows.size(), 4);
+  Eigen::VectorXd b(rows.size());
+  for (std::size_t k = 0; k < rows.size(); ++k) {
+    a.row(static_cast<Eigen::Index>(k)) = rows[k].transpose();
+    b(static_cast<Eigen::Index>(k)) = right[k];
+  }
+  const Eigen::Vector4d fit = a.colPivHouseholderQr().solve(b);
+  const Eigen::Vector3d centre = -0.5 * fit.head<3>();
+  const double fitted = std::sqrt(centre.squaredNorm() - fit(3));
+  result.angle = std::acos(std::clamp(-centre(2) / fitted, -1.0, 1.0)) * 180 / std::numbers::pi;
+  return result;
+}
+
 TEST(ContinuumSurfaceForce, SessileDropStudy) {
   const char* study = std::getenv("SPHCAST_CSF_SESSILE");
   if (study == nullptr) {
@@ -698,9 +786,11 @@ TEST(ContinuumSurfaceForce, SessileDropStudy) {
   double times = 10, bond = 0.2;
   in >> layers >> times >> bond;
   const char* cylinder = std::getenv("SPHCAST_CSF_CYLINDER");  // its radius over the cap's
+  const bool threeD = std::getenv("SPHCAST_CSF_3D") != nullptr;
   for (double degrees = 0; in >> degrees;) {
     const SessileResult r =
-        sessileDrop(degrees, layers, times, bond, cylinder ? std::atof(cylinder) : 0.0);
+        threeD ? sessileDrop3D(degrees, layers, times, bond)
+               : sessileDrop(degrees, layers, times, bond, cylinder ? std::atof(cylinder) : 0.0);
     std::cout << "theta " << degrees << ": " << r.angle << " degrees, " << r.particles
               << " particles, lowest " << r.lowest << " dx above the wall, nearest pair "
               << r.closest << " dx, " << r.seconds << " s" << std::endl;

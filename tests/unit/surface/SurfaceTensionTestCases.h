@@ -152,6 +152,7 @@ inline ParticleCloud floorInZ(int reach, Real dx) {
   }
   for (Vector& x : wall.positions()) x = Vector(x[0], x[2], x[1]);
   for (Vector& n : wall.vectorField("normal")) n = Vector(0, 0, 1);
+  for (Real& v : wall.scalarField("volume")) v = dx * dx * dx;  // addWallCells gives 2D's dx^2
   return wall;
 }
 
