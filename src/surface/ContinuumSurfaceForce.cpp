@@ -236,9 +236,26 @@ void ContinuumSurfaceForce::computeColourAndNormal() {
   auto gradientPass = [&](auto separation) {
 #pragma omp parallel for schedule(static)
     for (std::size_t i = 0; i < n; ++i) {
-      if (fromFlow && flowGradient_[i].allFinite()) {
-        gradient_[i] = flowGradient_[i] / bulk;
-        continue;
+      if (fromFlow) {
+        if (flowGradient_[i].allFinite()) {
+          gradient_[i] = flowGradient_[i] / bulk;
+          continue;
+        }
+        // skipped by the flow (no melt within two hops): summed here only within a hop of one
+        // it summed. A melt particle's curvature reads normals two hops out, each smoothed over
+        // a third hop's g; farther frozen metal reaches no melt particle's force, and its own
+        // force is held: g = 0 there (most of a casting in the cooling mode)
+        bool nearSummed = false;
+        for (const std::uint32_t j : pairs.of(i)) {
+          if (flowGradient_[j].allFinite()) {
+            nearSummed = true;
+            break;
+          }
+        }
+        if (!nearSummed) {
+          gradient_[i] = Vector::Zero();
+          continue;
+        }
       }
       Vector g = Vector::Zero();
       for (const std::uint32_t j : pairs.of(i)) {

@@ -72,7 +72,8 @@ class SurfaceDepthProfile {
 // sigma(T) is the fluid material's surfaceTension: a constant or a table; a particle where it
 // is 0 (the solid rows of AC4CH) carries no force. Reads the fluid's positions, mass, rho, T
 // (when sigma is a table); the walls' positions, normal, wallDistance and volumes. Adds to
-// `acceleration`; writes `curvature` (1/m: the surface's, near the surface; 0 elsewhere).
+// `acceleration`; writes `curvature` (1/m: the surface's, near the surface; 0 elsewhere, and on
+// frozen metal more than three neighbour hops from the melt, whose colour gradient is not summed).
 class ContinuumSurfaceForce : public SurfaceTensionModel {
  public:
   // settings: dimension, supportRadius, spacing, gasTension (sigma) and cosContactAngle
