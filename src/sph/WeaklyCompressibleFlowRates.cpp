@@ -1,0 +1,415 @@
+#include "sph/WeaklyCompressibleFlow.h"
+
+#include <algorithm>
+#include <cstdint>
+#include <limits>
+
+#include <Eigen/Geometry>
+
+#include "sph/EquationOfState.h"
+#include "sph/FlowRates.h"
+
+// The flow's pair loops: the walls' pressure, the kernel correction, the rates (density rate and
+// acceleration, with the force models after them) and the frozen metal they skip. The step, its
+// integration, limits and the walls' loads and clearance are in WeaklyCompressibleFlow.cpp.
+
+namespace sphcast {
+
+template <int Dim>
+void WeaklyCompressibleFlow::extrapolateWallPressure() {
+  const WendlandC2Kernel<Dim> kernel(settings_.supportRadius);
+  const PeriodicBox periodic = settings_.periodic;
+  const auto& x = fluid_.positions();
+  const auto& rho = fluid_.scalarField("rho");
+  const auto& p = fluid_.scalarField("p");
+  const Vector gravity = settings_.gravity;
+  // as in computeRatesFor: the minimum image only when an axis is periodic, chosen once
+  auto extrapolateWith = [&](auto separation) {
+    for (std::size_t w = 0; w < walls_.size(); ++w) {
+      const auto& wallX = walls_[w]->positions();
+      const NeighbourList& fluidAround = fluidAroundWall(w);
+      Real* wallPressure = wallPressure_[w].data();
+      // a moving wall's particles feel g - a_wall (eq. (27))
+      const Vector* wallAcceleration = walls_[w]->hasVectorField("acceleration")
+                                           ? walls_[w]->vectorField("acceleration").data()
+                                           : nullptr;
+#pragma omp parallel for schedule(static)
+      for (std::size_t k = 0; k < wallX.size(); ++k) {
+        WallPressureSums sums;
+        for (const std::uint32_t f : fluidAround.of(k)) {
+          const Vector xkf = separation(wallX[k], x[f]);
+          sums.add(kernel.value(xkf.norm()), p[f], rho[f], xkf);
+        }
+        wallPressure[k] = sums.wallPressure(
+            wallAcceleration ? Vector(gravity - wallAcceleration[k]) : gravity);
+      }
+    }
+  };
+  if (periodic.anyPeriodic()) {
+    extrapolateWith(
+        [periodic](const Vector& a, const Vector& b) { return periodic.separation(a, b); });
+  } else {
+    extrapolateWith([](const Vector& a, const Vector& b) { return Vector(a - b); });
+  }
+}
+
+// L_i of every fluid particle from its fluid and wall neighbours (walls complete the kernel
+// there, so a particle on a wall is corrected as an interior one) and, for deltaSPH, the
+// renormalised density gradient L_i sum_j V_j (rho_j - rho_i) grad_i W_ij of Antuono et al.
+// (2010), wall particles taking the density of their extrapolated pressure.
+template <int Dim>
+void WeaklyCompressibleFlow::computeCorrection() {
+  const WendlandC2Kernel<Dim> kernel(settings_.supportRadius);
+  const LinearEquationOfState eos{settings_.soundSpeed};
+  const PeriodicBox periodic = settings_.periodic;
+  const bool densityGradient = settings_.densityScheme == "deltaSPH";
+  const auto& x = fluid_.positions();
+  const auto& rho = fluid_.scalarField("rho");
+  const auto& mass = fluid_.scalarField("mass");
+  const auto& restDensity = fluid_.scalarField("restDensity");
+  correction_.resize(x.size());
+  densityGradient_.resize(densityGradient ? x.size() : 0);
+  std::vector<const Real*> wallVolume;  // looked up once, not per particle
+  for (const ParticleCloud* wall : walls_) wallVolume.push_back(wall->scalarField("volume").data());
+  const NeighbourList& fluidList = fluidPairs();
+  std::vector<const NeighbourList*> wallLists;
+  for (std::size_t w = 0; w < walls_.size(); ++w) wallLists.push_back(&wallPairs(w));
+  // as in computeRatesFor: the minimum image only when an axis is periodic, chosen once
+  auto correctWith = [&](auto separation) {
+#pragma omp parallel for schedule(static)
+    for (std::size_t i = 0; i < x.size(); ++i) {
+      CorrectionMoment moment;
+      Vector gradientSum = Vector::Zero();
+      for (const std::uint32_t j : fluidList.of(i)) {
+        const Vector xij = separation(x[i], x[j]);
+        const Real factor = kernel.derivativeOverDistance(xij.norm());
+        const Real volumeJ = mass[j] / rho[j];
+        moment.add(volumeJ, factor, xij);
+        gradientSum += (volumeJ * (rho[j] - rho[i]) * factor) * xij;
+      }
+      for (std::size_t w = 0; w < walls_.size(); ++w) {
+        const auto& wallX = walls_[w]->positions();
+        const Real* volume = wallVolume[w];
+        for (const std::uint32_t k : wallLists[w]->of(i)) {
+          const Vector xik = separation(x[i], wallX[k]);
+          const Real factor = kernel.derivativeOverDistance(xik.norm());
+          moment.add(volume[k], factor, xik);
+          const Real wallDensity = eos.density(wallPressure_[w][k], restDensity[i]);
+          gradientSum += (volume[k] * (wallDensity - rho[i]) * factor) * xik;
+        }
+      }
+      correction_[i] = correctionMatrix(moment.sum, Dim);
+      if (densityGradient) densityGradient_[i] = correction_[i] * gradientSum;
+    }
+  };
+  if (periodic.anyPeriodic()) {
+    correctWith([periodic](const Vector& a, const Vector& b) { return periodic.separation(a, b); });
+  } else {
+    correctWith([](const Vector& a, const Vector& b) { return Vector(a - b); });
+  }
+}
+
+template <int Dim, class Interface, class Viscosity, WeaklyCompressibleFlow::RatePart Part>
+void WeaklyCompressibleFlow::computeRatesFor() {
+  constexpr bool wantsDensityRate = Part != RatePart::acceleration;
+  constexpr bool wantsAcceleration = Part != RatePart::densityRate;
+  extrapolateWallPressure<Dim>();
+  if (needsCorrectionMatrix(Part)) computeCorrection<Dim>();
+  const LinearEquationOfState eos{settings_.soundSpeed};
+  const WendlandC2Kernel<Dim> kernel(settings_.supportRadius);
+  const Real spacing = static_cast<Real>(fluid_.attributes().at("spacing"));
+  const FlowConstants constants{settings_.soundSpeed, settings_.gravity,
+                                Real(0.01) * spacing * spacing};
+  const PeriodicBox periodic = settings_.periodic;
+  const auto& x = fluid_.positions();
+  const auto& v = fluid_.vectorField("U");
+  const auto& rho = fluid_.scalarField("rho");
+  const auto& p = fluid_.scalarField("p");
+  const auto& mass = fluid_.scalarField("mass");
+  const auto& mu = fluid_.scalarField("viscosity");
+  const auto& restDensity = fluid_.scalarField("restDensity");
+  auto& densityRate = fluid_.scalarField("densityRate");
+  auto& acceleration = fluid_.vectorField("acceleration");
+  struct WallArrays {
+    const Vector* position;
+    const Real* volume;
+    const Vector* normal;
+    const Real* depth;
+    const Real* pressure;
+    const NeighbourList* neighbours;
+    const Vector* velocity;  // null: at rest
+    Vector* loadForce;       // per fluid particle, null unless the load is measured
+    Vector* loadTorque;
+  };
+  std::vector<WallArrays> walls;
+  for (std::size_t w = 0; w < walls_.size(); ++w) {
+    const bool measured = loadMeasured_[w] && wantsAcceleration;
+    if (measured) {
+      loadForce_[w].resize(x.size());
+      loadTorque_[w].resize(x.size());
+    }
+    walls.push_back({walls_[w]->positions().data(), walls_[w]->scalarField("volume").data(),
+                     walls_[w]->vectorField("normal").data(),
+                     walls_[w]->scalarField("wallDistance").data(), wallPressure_[w].data(),
+                     &wallPairs(w),
+                     walls_[w]->hasVectorField("U") ? walls_[w]->vectorField("U").data() : nullptr,
+                     measured ? loadForce_[w].data() : nullptr,
+                     measured ? loadTorque_[w].data() : nullptr});
+  }
+  const Real halfSpacing = Real(0.5) * spacing;
+  const Vector gravity = settings_.gravity;
+  const bool corrected = settings_.kernelCorrection;
+  const Matrix* correction = correction_.data();
+  // deltaSPH: diffusion delta h c and artificial viscosity alpha h c, with h the smoothing
+  // length, half the Wendland support radius (Antuono et al. 2010 write W with support 2h)
+  const bool diffusive = settings_.densityScheme == "deltaSPH";
+  // the density gradient exists only where the pass computed it (not for the acceleration)
+  const bool diffusiveDensity = diffusive && wantsDensityRate;
+  const Real smoothingLength = Real(0.5) * settings_.supportRadius;
+  const Real diffusion = settings_.deltaSPHDiffusion * smoothingLength * settings_.soundSpeed;
+  const Real artificialViscosity =
+      diffusive ? settings_.deltaSPHViscosity * smoothingLength * settings_.soundSpeed : Real(0);
+  const Vector* densityGradient = densityGradient_.data();
+  const std::uint64_t* fluidOffsets = fluidPairs().offsets().data();
+  const std::uint32_t* fluidNeighbours = fluidPairs().neighbours().data();
+  // Frozen particles with no melt within two neighbour hops (solidified metal away from the
+  // melt) have nothing to compute: no acceleration (they are held), and a density that only the
+  // melt moving against them would change. One hop is not enough: the melt feels the pressure of
+  // the frozen particles within h, and theirs depends on their own frozen neighbours (measured:
+  // with one hop a pocket of melt in frozen metal settled 0.7 dx lower, its particles to 0.44 dx).
+  const Real* frozen = fluid_.hasScalarField("frozen") ? fluid_.scalarField("frozen").data()
+                                                       : nullptr;
+  const std::uint8_t* nearMelt = nullptr;
+  if (frozen) {
+    markFrozenNearMelt();
+    nearMelt = frozenNearMelt_.data();
+  }
+
+  // The pair loop, given how it takes x_i - x_j: the minimum image only when an axis is
+  // periodic, chosen once per pass (with no periodic axis separation() is x_i - x_j).
+  // The fluid neighbours of i are taken in chunks: first the geometry of every pair of the
+  // chunk (x_ij, r, dW/dr / r), a loop whose pairs do not depend on each other, so the square
+  // roots and kernel polynomials of many pairs are in flight at once (measured: a step 11 %
+  // faster than one pair at a time); then the physics, pair by pair in list order. The values
+  // are those of kernel.gradient(xij, r), bit for bit.
+  constexpr std::size_t chunk = 64;
+  // A fluid particle at least h inside every periodic face, of a fluid whose particles all lie
+  // in the periodic box (the grid checked it: imagesByCell), has no neighbour across a face:
+  // for each of its neighbours |x_i - x_j| < h < period / 2, where separation() subtracts
+  // nothing. Its pairs take the plain difference, chosen once per particle.
+  const bool inBox = periodic.anyPeriodic() && neighbourhood_.grid(fluid_).imagesByCell();
+  Vector interiorLower = Vector::Constant(-std::numeric_limits<Real>::max());
+  Vector interiorUpper = Vector::Constant(std::numeric_limits<Real>::max());
+  for (int a = 0; a < 3; ++a) {
+    if (!periodic.isPeriodic(a)) continue;
+    const Real margin = settings_.supportRadius * Real(1.000001);  // round-off in x_i +- h
+    interiorLower[a] = periodic.lower(a) + margin;
+    interiorUpper[a] = periodic.lower(a) + periodic.period(a) - margin;
+  }
+  // The colour gradient a force model asked for (FluidForceModel::colourGradientBuffer), summed
+  // here beside the pressure, with the grad W the pair loop has anyway. A flag that never
+  // changes within the pass, not another type: a type would double the pass's instantiations
+  // for one multiply-add per pair (3 % of a flow step when on, tests/benchmarks/README.md).
+  Vector* colourGradient = nullptr;
+  const Real* pairVolume = nullptr;
+  if constexpr (wantsAcceleration) {
+    if (!colourGradientBuffers_.empty()) {
+      colourGradientBuffers_.front()->resize(x.size());
+      colourGradient = colourGradientBuffers_.front()->data();
+      pairVolume_.resize(x.size());
+      for (std::size_t j = 0; j < x.size(); ++j) pairVolume_[j] = mass[j] / rho[j];
+      pairVolume = pairVolume_.data();
+    }
+  }
+  auto plainDifference = [](const Vector& a, const Vector& b) { return Vector(a - b); };
+  auto ratesWith = [&](auto separation) {
+#pragma omp parallel for schedule(static)
+    for (std::size_t i = 0; i < x.size(); ++i) {
+      if (frozen && frozen[i] != 0 && !nearMelt[i]) {
+        if constexpr (wantsDensityRate) densityRate[i] = 0;
+        if constexpr (wantsAcceleration) acceleration[i] = Vector::Zero();
+        for (const WallArrays& wall : walls) {
+          if (wall.loadForce) wall.loadForce[i] = wall.loadTorque[i] = Vector::Zero();
+        }
+        if (colourGradient) {
+          colourGradient[i] = Vector::Constant(std::numeric_limits<Real>::quiet_NaN());
+        }
+        continue;
+      }
+      const Vector xi = x[i];
+      const Vector vi = v[i];
+      const Real muI = mu[i];
+      const InterfaceSide self{rho[i], p[i], vi};
+      Real rate = 0;
+      Vector accel = gravity;
+      Vector colour = Vector::Zero();  // the colour gradient, when asked for
+      const bool interior = inBox && (xi.array() >= interiorLower.array()).all() &&
+                            (xi.array() <= interiorUpper.array()).all();
+      const Matrix correctionI = corrected ? correction[i] : Matrix::Identity();
+      const Vector densityGradientI = diffusiveDensity ? densityGradient[i] : Vector::Zero();
+      const Real viscousScale = artificialViscosity * restDensity[i] / rho[i];
+      Real xijX[chunk], xijY[chunk], xijZ[chunk], distance[chunk], gradientFactor[chunk];
+      for (std::uint64_t first = fluidOffsets[i]; first < fluidOffsets[i + 1]; first += chunk) {
+        const std::size_t pairs = std::min<std::uint64_t>(chunk, fluidOffsets[i + 1] - first);
+        const std::uint32_t* neighbourJ = fluidNeighbours + first;
+        auto geometryWith = [&](auto pairSeparation) {
+          for (std::size_t n = 0; n < pairs; ++n) {
+            const Vector xij = pairSeparation(xi, x[neighbourJ[n]]);
+            const Real r = xij.norm();
+            xijX[n] = xij[0], xijY[n] = xij[1], xijZ[n] = xij[2];
+            distance[n] = r;
+            gradientFactor[n] = kernel.derivativeOverDistance(r);  // grad W = this x_ij
+          }
+        };
+        if (interior) {
+          geometryWith(plainDifference);
+        } else {
+          geometryWith(separation);
+        }
+        for (std::size_t n = 0; n < pairs; ++n) {
+          const std::uint32_t j = neighbourJ[n];
+          const Vector xij(xijX[n], xijY[n], xijZ[n]);
+          const Vector gradW = gradientFactor[n] * xij;
+          // 0.5 (L_i + L_j) grad_i W_ij stays antisymmetric: momentum is conserved exactly
+          const Vector pairGradW =
+              corrected ? Vector(Real(0.5) * (correctionI * gradW + correction[j] * gradW)) : gradW;
+          FluidPair<Dim, Interface, Viscosity>::accumulate(self, {rho[j], p[j], v[j]}, mass[j], muI,
+                                                           mu[j], vi - v[j], xij, distance[n],
+                                                           pairGradW, constants, rate, accel);
+          if (colourGradient) colour -= (pairVolume[j] * gradientFactor[n]) * xij;
+          if (diffusive) {
+            DeltaSPHPair::accumulate(rho[i], rho[j], densityGradientI,
+                                     diffusiveDensity ? densityGradient[j] : Vector::Zero(),
+                                     mass[j] / rho[j], vi - v[j], xij, distance[n], gradW,
+                                     diffusion, viscousScale, constants, rate, accel);
+          }
+        }
+      }
+      for (const WallArrays& wall : walls) {
+        // a measured wall's pairs are summed apart, so that the wall gets their exact negative
+        Vector wallForce = Vector::Zero(), wallTorque = Vector::Zero();
+        for (const std::uint32_t k : wall.neighbours->of(i)) {
+          const Vector xik = separation(xi, wall.position[k]);
+          const Real r = xik.norm();
+          const Vector wallVelocity = wall.velocity ? wall.velocity[k] : Vector::Zero();
+          const WallParticle particle{
+              wallVelocity,   wall.normal[k],   wall.volume[k],
+              wall.depth[k],  wall.pressure[k], eos.density(wall.pressure[k], restDensity[i])};
+          const Vector gradW = kernel.gradient(xik, r);
+          if (colourGradient) colour -= (wall.volume[k] * kernel.derivativeOverDistance(r)) * xik;
+          Vector pairAcceleration = Vector::Zero();
+          Vector& target = wall.loadForce ? pairAcceleration : accel;
+          accumulateWallPair<Dim, Interface, Viscosity>(
+              self, muI, particle, halfSpacing, xik, r,
+              corrected ? Vector(correctionI * gradW) : gradW, constants, rate, target);
+          if (diffusive) {
+            // deltaSPH's artificial viscosity against the mirror velocity 2 v_wall - v_i:
+            // without it a means interface has no dissipation at an impact on a wall
+            const Real etaSquared = constants.viscosityRegularisation;
+            target += (viscousScale * wall.volume[k] * Real(2) * (vi - wallVelocity).dot(xik) /
+                       (r * r + etaSquared)) *
+                      gradW;
+          }
+          if (wall.loadForce) {
+            accel += pairAcceleration;
+            const Vector onWall = -mass[i] * pairAcceleration;
+            wallForce += onWall;
+            wallTorque += wall.position[k].cross(onWall);
+          }
+        }
+        if (wall.loadForce) {
+          wall.loadForce[i] = wallForce;
+          wall.loadTorque[i] = wallTorque;
+        }
+      }
+      if constexpr (wantsDensityRate) densityRate[i] = rate;
+      if constexpr (wantsAcceleration) acceleration[i] = accel;
+      if (colourGradient) colourGradient[i] = colour;
+    }
+  };
+  if (periodic.anyPeriodic()) {
+    ratesWith([periodic](const Vector& a, const Vector& b) { return periodic.separation(a, b); });
+  } else {
+    ratesWith(plainDifference);
+  }
+  if constexpr (wantsAcceleration) sumWallLoads();
+  if (colourGradient) {
+    for (std::size_t m = 1; m < colourGradientBuffers_.size(); ++m) {
+      *colourGradientBuffers_[m] = *colourGradientBuffers_.front();
+    }
+  }
+}
+
+// The numerics are chosen by type once per pass, never by `if` inside the pair loop.
+template <int Dim, class Interface>
+void WeaklyCompressibleFlow::computeRatesWithInterface(RatePart part) {
+  auto withViscosity = [&]<class Viscosity>() {
+    switch (part) {
+      case RatePart::both:
+        computeRatesFor<Dim, Interface, Viscosity, RatePart::both>();
+        break;
+      case RatePart::densityRate:
+        computeRatesFor<Dim, Interface, Viscosity, RatePart::densityRate>();
+        break;
+      case RatePart::acceleration:
+        computeRatesFor<Dim, Interface, Viscosity, RatePart::acceleration>();
+        break;
+    }
+  };
+  if (settings_.viscousForm == "Morris") {
+    withViscosity.template operator()<MorrisViscosity>();
+  } else {
+    withViscosity.template operator()<ClearyViscosity>();
+  }
+}
+
+template <int Dim>
+void WeaklyCompressibleFlow::computeRatesInDimension(RatePart part) {
+  if (settings_.densityScheme == "riemann") {
+    computeRatesWithInterface<Dim, AcousticRiemannInterface>(part);
+  } else if (settings_.densityScheme == "standard") {
+    computeRatesWithInterface<Dim, ArithmeticMeanInterface>(part);
+  } else {  // deltaSPH, whose extra terms are added in the same pass
+    computeRatesWithInterface<Dim, DeltaSPHInterface>(part);
+  }
+}
+
+void WeaklyCompressibleFlow::computeRates(RatePart part) {
+  if (settings_.dimension == 2) {
+    computeRatesInDimension<2>(part);
+  } else {
+    computeRatesInDimension<3>(part);
+  }
+  if (part == RatePart::densityRate) return;
+  for (FluidForceModel* model : forceModels_) model->addAcceleration();
+  holdFrozenParticles();
+}
+
+// For each particle, whether a melt (not frozen) particle lies within two neighbour hops:
+// 1 for melt and the frozen particles it reaches that way (computeRatesFor skips the others).
+void WeaklyCompressibleFlow::markFrozenNearMelt() {
+  const auto& frozen = fluid_.scalarField("frozen");
+  const std::uint64_t* offsets = fluidPairs().offsets().data();
+  const std::uint32_t* neighbours = fluidPairs().neighbours().data();
+  const std::size_t count = frozen.size();
+  frozenTouchesMelt_.assign(count, 0);
+  frozenNearMelt_.assign(count, 0);
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < count; ++i) {
+    bool touches = frozen[i] == 0;
+    for (std::uint64_t k = offsets[i]; k < offsets[i + 1] && !touches; ++k) {
+      touches = frozen[neighbours[k]] == 0;
+    }
+    frozenTouchesMelt_[i] = touches ? 1 : 0;
+  }
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < count; ++i) {
+    bool near = frozenTouchesMelt_[i] != 0;
+    for (std::uint64_t k = offsets[i]; k < offsets[i + 1] && !near; ++k) {
+      near = frozenTouchesMelt_[neighbours[k]] != 0;
+    }
+    frozenNearMelt_[i] = near ? 1 : 0;
+  }
+}
+
+}  // namespace sphcast
