@@ -199,6 +199,7 @@ void CastingSolver::setUpFlow() {
   info() << "Flow: weakly compressible SPH (" << settings.dimension << "D), densityScheme "
          << settings.densityScheme << ", kernelCorrection "
          << (settings.kernelCorrection ? "on" : "off") << ", viscousForm " << settings.viscousForm
+         << ", wallSlip " << (settings.slipWalls ? "slip" : "noSlip")
          << ", h = " << settings.supportRadius << " m, c = " << settings.soundSpeed << " m/s\n"
          << "    fluid " << fluid.name() << ": " << fluid.size() << " particles\n";
   for (const ParticleCloud* wall : walls) {

@@ -87,13 +87,15 @@ FlowSetup readFlowSetup(const CaseFolder& caseFolder, const std::optional<Vector
   setup.wallClouds = flow.getOrDefault<std::vector<std::string>>("walls", {});
 
   const Dictionary schemes = Dictionary::read(caseFolder.systemFile("sphSchemes"));
-  schemes.checkKeys({"densityScheme", "kernelCorrection", "viscousForm", "supportRadius",
-                     "soundSpeed", "deltaSPHCoeffs", "wallClearance"});
+  schemes.checkKeys({"densityScheme", "kernelCorrection", "viscousForm", "wallSlip",
+                     "supportRadius", "soundSpeed", "deltaSPHCoeffs", "wallClearance"});
   FlowSettings& settings = setup.settings;
   settings.densityScheme = schemes.getChoice("densityScheme", {"riemann", "standard", "deltaSPH"});
   settings.kernelCorrection =
       schemes.getChoiceOrDefault("kernelCorrection", {"on", "off"}, "off") == "on";
   settings.viscousForm = schemes.getChoice("viscousForm", {"Morris", "Cleary"});
+  settings.slipWalls =
+      schemes.getChoiceOrDefault("wallSlip", {"noSlip", "slip"}, "noSlip") == "slip";
   settings.supportRadius = positive<Real>(schemes, "supportRadius", length);
   setup.supportRadiusAt = schemes.location("supportRadius");
   settings.soundSpeed = positive<Real>(schemes, "soundSpeed", speed);

@@ -150,10 +150,13 @@ struct WallParticle {
   Real density;   // from the pressure through the equation of state
 };
 
+// slip in [0, 1] blends towards a free-slip wall (wallSlip slip in system/sphSchemes): the mirror
+// velocity reflects only v_i's normal part, v_k = v_i - 2 ((v_i - v_wall) . n) n, and the wall
+// holds no shear.
 template <int Dim, class Interface, class Viscosity>
 inline void accumulateWallPair(const InterfaceSide& i, Real viscosityI, const WallParticle& k,
                                Real halfSpacing, const Vector& xik, Real r, const Vector& gradW,
-                               const FlowConstants& constants, Real& densityRate,
+                               const FlowConstants& constants, Real slip, Real& densityRate,
                                Vector& acceleration) {
   // A wall only pushes: with tension (p < 0) on either side the pair would pull a lone fluid
   // particle into the wall (measured: one of a 2D dam break's ended 0.11 dx inside the back
@@ -168,13 +171,18 @@ inline void accumulateWallPair(const InterfaceSide& i, Real viscosityI, const Wa
   const Real fluidPressure =
       Interface::fluidTensionAtWalls ? i.pressure : std::max(i.pressure, Real(0));
   const InterfaceSide fluid{i.density, fluidPressure, i.velocity};
-  const InterfaceSide mirror{k.density, std::max(k.pressure, Real(0)),
-                             Real(2) * k.velocity - i.velocity};
+  const Vector relative = i.velocity - k.velocity;
+  Vector mirrorVelocity = Real(2) * k.velocity - i.velocity;
+  if (slip > Real(0)) {
+    const Vector slipping = i.velocity - Real(2) * relative.dot(k.normal) * k.normal;
+    mirrorVelocity += slip * (slipping - mirrorVelocity);
+  }
+  const InterfaceSide mirror{k.density, std::max(k.pressure, Real(0)), mirrorVelocity};
   const Real fluidDistance = std::max(xik.dot(k.normal) - k.depth, halfSpacing);
   const Real beta = Real(1) + k.depth / fluidDistance;
   FluidPair<Dim, Interface, Viscosity>::accumulate(
-      fluid, mirror, k.density * k.volume, viscosityI, viscosityI, beta * (i.velocity - k.velocity),
-      xik, r, gradW, constants, densityRate, acceleration);
+      fluid, mirror, k.density * k.volume, viscosityI, viscosityI,
+      ((Real(1) - slip) * beta) * relative, xik, r, gradW, constants, densityRate, acceleration);
 }
 
 // Adami et al. (2012) eq. (27), static wall: the pressure of wall particle w from its fluid

@@ -30,6 +30,9 @@ struct FlowSettings {
   Real deltaSPHDiffusion = Real(0.1);
   Real deltaSPHViscosity = Real(0.02);
   std::string viscousForm = "Morris";  // Morris | Cleary (FlowRates.h says why Morris)
+  // wallSlip in system/sphSchemes: noSlip (false, the default) or slip (true): the walls hold
+  // no shear, the fluid slides along them (FlowRates.h, accumulateWallPair)
+  bool slipWalls = false;
   PeriodicBox periodic;
   // The least distance, in particle spacings, a fluid particle keeps from a wall surface
   // (WallClearance.h, WallSurfaceDistance.h).

@@ -221,6 +221,8 @@ void WeaklyCompressibleFlow::computeRatesFor() {
       pairVolume = pairVolume_.data();
     }
   }
+  // wallSlip slip: the walls hold no shear (FlowRates.h, accumulateWallPair)
+  const Real slip = settings_.slipWalls ? Real(1) : Real(0);
   auto plainDifference = [](const Vector& a, const Vector& b) { return Vector(a - b); };
   auto ratesWith = [&](auto separation) {
 #pragma omp parallel for schedule(static)
@@ -301,12 +303,17 @@ void WeaklyCompressibleFlow::computeRatesFor() {
           Vector& target = wall.loadForce ? pairAcceleration : accel;
           accumulateWallPair<Dim, Interface, Viscosity>(
               self, muI, particle, halfSpacing, xik, r,
-              corrected ? Vector(correctionI * gradW) : gradW, constants, rate, target);
+              corrected ? Vector(correctionI * gradW) : gradW, constants, slip, rate, target);
           if (diffusive) {
             // deltaSPH's artificial viscosity against the mirror velocity 2 v_wall - v_i:
             // without it a means interface has no dissipation at an impact on a wall
             const Real etaSquared = constants.viscosityRegularisation;
-            target += (viscousScale * wall.volume[k] * Real(2) * (vi - wallVelocity).dot(xik) /
+            // (a slip wall: against the normal part of the relative velocity only)
+            const Vector relative =
+                settings_.slipWalls
+                    ? Vector((vi - wallVelocity).dot(wall.normal[k]) * wall.normal[k])
+                    : Vector(vi - wallVelocity);
+            target += (viscousScale * wall.volume[k] * Real(2) * relative.dot(xik) /
                        (r * r + etaSquared)) *
                       gradW;
           }

@@ -9,6 +9,7 @@
 
 #include "core/Error.h"
 #include "surface/ContinuumSurfaceForce.h"
+#include "surface/PairwiseForce.h"
 #include "surface/SurfaceEnergyTension.h"
 
 namespace sphcast {
@@ -31,6 +32,7 @@ const std::vector<std::pair<std::string, Constructor>>& registry() {
   static const std::vector<std::pair<std::string, Constructor>> models{
       {"continuumSurfaceForce", constructorOf<ContinuumSurfaceForce>()},
       {"surfaceEnergy", constructorOf<SurfaceEnergyTension>()},
+      {"pairwiseForce", constructorOf<PairwiseForce>()},
   };
   return models;
 }

@@ -6,6 +6,7 @@
 //   ContinuumSurfaceForcePass: the continuum surface force's passes alone
 //     (surface/ContinuumSurfaceForce.h: colour gradient, colour near the surface, normals,
 //     curvature, force), summing the colour gradient itself;
+//   PairwiseForcePass: the pairwise force's one pass (surface/PairwiseForce.h);
 //   FlowStep: a whole flow step over one shared neighbourhood, alone, with the flow summing the
 //     colour gradient for a model that adds nothing (its cost in the flow's pair loop), with
 //     the surface energy, with the continuum surface force.
@@ -23,6 +24,7 @@
 #include "particles/Neighbourhood.h"
 #include "sph/WeaklyCompressibleFlow.h"
 #include "surface/ContinuumSurfaceForce.h"
+#include "surface/PairwiseForce.h"
 #include "surface/SurfaceEnergyTension.h"
 
 namespace {
@@ -110,6 +112,22 @@ void ContinuumSurfaceForcePass(benchmark::State& state) {
   state.counters["particles"] = double(fluid.size());
 }
 BENCHMARK(ContinuumSurfaceForcePass)
+    ->Arg(10'000)
+    ->Arg(100'000)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+
+void PairwiseForcePass(benchmark::State& state) {
+  auto fluid = ball(state.range(0));
+  sphcast::Neighbourhood neighbourhood(3 * dx, sphcast::PeriodicBox());
+  neighbourhood.addCloud(fluid, sphcast::Neighbourhood::Motion::moving);
+  sphcast::PairwiseForce tension(tensionSettings(true), fluid, {}, neighbourhood);
+  neighbourhood.update();
+  for (auto _ : state) tension.addAcceleration();
+  state.SetItemsProcessed(state.iterations() * static_cast<long>(fluid.size()));
+  state.counters["particles"] = double(fluid.size());
+}
+BENCHMARK(PairwiseForcePass)
     ->Arg(10'000)
     ->Arg(100'000)
     ->Unit(benchmark::kMillisecond)

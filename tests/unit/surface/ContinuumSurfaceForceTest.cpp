@@ -8,7 +8,11 @@
 // capillaryTimes bond angles..."; with them SPHCAST_CSF_LATTICE (a static drop of lattice
 // particles instead of rings), SPHCAST_CSF_C (a factor on the speed of sound) and
 // SPHCAST_CSF_TRACE (print as it runs); SPHCAST_CSF_CYLINDER=F puts the sessile drops on a
-// cylinder of F times their radius, SPHCAST_CSF_3D makes them half balls on a 3D floor.
+// cylinder of F times their radius, SPHCAST_CSF_3D makes them half balls on a 3D floor,
+// SPHCAST_CSF_START=degrees starts a flat wall's drop as a cap of that angle, SPHCAST_CSF_SLIP
+// gives the sessile drops slip walls (wallSlip slip); SPHCAST_CSF_MODEL=pairwiseForce runs the
+// studies with the pairwise force (surface/PairwiseForce.h) instead, the sessile drops' surface
+// still read by this model's detection.
 
 #include <gtest/gtest.h>
 
@@ -24,6 +28,7 @@
 #include <optional>
 #include <sstream>
 #include <string>
+#include <type_traits>
 
 #include <Eigen/Dense>
 
@@ -32,9 +37,16 @@
 #include "particles/WendlandKernel.h"
 #include "sph/FlowTestCases.h"
 #include "surface/ContinuumSurfaceForce.h"
+#include "surface/PairwiseForce.h"
 
 namespace sphcast {
 namespace {
+
+// SPHCAST_CSF_MODEL=pairwiseForce: the studies below on the pairwise force instead
+bool pairwiseStudy() {
+  const char* model = std::getenv("SPHCAST_CSF_MODEL");
+  return model != nullptr && std::string(model) == "pairwiseForce";
+}
 
 TEST(SurfaceDepthProfile, ColourRunsFromHalfToOneAndTheDepthInvertsIt) {
   for (const int dimension : {2, 3}) {
@@ -367,6 +379,7 @@ struct StaticDropResult {
   std::size_t particles = 0;
 };
 
+template <class Tension = ContinuumSurfaceForce>
 StaticDropResult staticDrop(int dimension, int across, double capillaryTimes, double nu) {
   const Real radius = 0.01, sigma = 0.07, rho = 1000;
   const Real dx = 2 * radius / across, h = 3 * dx;
@@ -386,7 +399,7 @@ StaticDropResult staticDrop(int dimension, int across, double capillaryTimes, do
       std::max(std::sqrt(1000.0 * (dimension - 1) * sigma / (rho * radius)), 20 * capillarySpeed) *
       (std::getenv("SPHCAST_CSF_C") ? std::atof(std::getenv("SPHCAST_CSF_C")) : 1.0));
   const SurfaceTensionSettings tension = testing::tensionSettings(dimension, h, dx, sigma);
-  testing::CapillaryRun<ContinuumSurfaceForce> run(flow, tension, fluid, {});
+  testing::CapillaryRun<Tension> run(flow, tension, fluid, {});
   const double capillaryTime = std::sqrt(rho * std::pow(radius, 3) / sigma);
   const auto start = std::chrono::steady_clock::now();
   const auto& U0 = fluid.vectorField("U");
@@ -429,7 +442,7 @@ StaticDropResult staticDrop(int dimension, int across, double capillaryTimes, do
     }
   }
   result.meanSpeed = speedSum / n / capillarySpeed;
-  {
+  if constexpr (std::is_same_v<Tension, ContinuumSurfaceForce>) {
     const auto& kappa = fluid.scalarField("curvature");
     double kw = 0, w = 0, ps = 0, pw = 0;
     for (std::size_t i = 0; i < x.size(); ++i) {
@@ -460,7 +473,9 @@ TEST(ContinuumSurfaceForce, StaticDropStudy) {
   int dimension = 2, across = 30;
   double times = 5, nu = 1e-5;
   std::istringstream(study) >> dimension >> across >> times >> nu;
-  const StaticDropResult result = staticDrop(dimension, across, times, nu);
+  const StaticDropResult result = pairwiseStudy()
+                                      ? staticDrop<PairwiseForce>(dimension, across, times, nu)
+                                      : staticDrop(dimension, across, times, nu);
   std::cout << dimension << "D static drop, " << across << " across (" << result.particles
             << " particles), " << times << " capillary times, nu " << nu
             << ": pressure / Laplace's " << result.pressureRatio
@@ -481,6 +496,7 @@ struct OscillationResult {
   double period = 0, lambPeriod = 0, decay = 0, viscousDecay = 0, seconds = 0;
 };
 
+template <class Tension = ContinuumSurfaceForce>
 OscillationResult oscillatingDrop(int dimension, int across, double periods) {
   const Real radius = 0.01, sigma = 0.07, rho = 1000, nu = 8e-6;
   const Real dx = 2 * radius / across;
@@ -511,7 +527,7 @@ OscillationResult oscillatingDrop(int dimension, int across, double periods) {
     U[i] = dimension == 2 ? Vector(A * x[0], -A * x[1], 0)
                           : Vector(-A * x[0], -A * x[1], 2 * A * x[2]);
   }
-  testing::CapillaryRun<ContinuumSurfaceForce> run(
+  testing::CapillaryRun<Tension> run(
       flow, testing::tensionSettings(dimension, 3 * dx, dx, sigma), fluid, {});
   auto moment = [&] {
     Vector mid = Vector::Zero();
@@ -564,7 +580,10 @@ TEST(ContinuumSurfaceForce, OscillatingDropStudy) {
   double periods = 3;
   std::istringstream(study) >> dimension >> across >> periods;
   std::cout << dimension << "D drop, " << across
-            << " across: " << oscillatingDrop(dimension, across, periods) << std::endl;
+            << " across: "
+            << (pairwiseStudy() ? oscillatingDrop<PairwiseForce>(dimension, across, periods)
+                                : oscillatingDrop(dimension, across, periods))
+            << std::endl;
 }
 
 // A 2D drop on a flat wall (its surface y = 0, three layers below) held by a little gravity
@@ -576,6 +595,7 @@ TEST(ContinuumSurfaceForce, OscillatingDropStudy) {
 // above h from the wall: cos theta = -y_centre / R.
 struct SessileResult {
   double angle = 0, seconds = 0, lowest = 0, closest = 0;
+  double heightAngle = 0;  // 2D: theta of the circular cap of the drop's height and area
   std::size_t particles = 0;
 };
 
@@ -584,6 +604,7 @@ struct SessileResult {
 // of rings round it a spacing apart within the cap's radius of the top; the angle then from the
 // fitted circle and the cylinder's, cos theta = (R^2 + R_c^2 - D^2) / (2 R R_c), D between
 // their centres.
+template <class Tension = ContinuumSurfaceForce>
 SessileResult sessileDrop(double degrees, int layers, double capillaryTimes, double bond,
                           double cylinder = 0) {
   const Real sigma = 0.07, rho = 1000, nu = 1e-4, dx = 5e-4, h = 3 * dx;
@@ -602,12 +623,22 @@ SessileResult sessileDrop(double degrees, int layers, double capillaryTimes, dou
       if (x.norm() < capRadius) rings.push_back(x);
     }
   }
+  // SPHCAST_CSF_START=degrees: on a flat wall, the lattice particles of a cap of that angle
+  // and the half disk's area instead
+  const double startAngle =
+      std::getenv("SPHCAST_CSF_START") ? std::atof(std::getenv("SPHCAST_CSF_START")) : 90.0;
+  const double theta0 = startAngle * std::numbers::pi / 180;
+  const Real startRadius = static_cast<Real>(
+      capRadius * std::sqrt(0.5 * std::numbers::pi / (theta0 - std::sin(theta0) * std::cos(theta0))));
+  const Vector startCentre(0, static_cast<Real>(-startRadius * std::cos(theta0)), 0);
   ParticleCloud fluid =
       cylinder > 0
           ? testing::fluidAtRest(2, dx, rings, rho, rho * nu)
           : testing::latticeFluid(
-                2, dx, Vector(-capRadius - dx, 0, 0), Vector(capRadius + dx, capRadius + dx, 0),
-                [&](const Vector& x) { return x.norm() < capRadius; }, rho, rho * nu);
+                2, dx, Vector(-startRadius - dx, 0, 0),
+                Vector(startRadius + dx, startCentre[1] + startRadius + dx, 0),
+                [&](const Vector& x) { return (x - startCentre).norm() < startRadius; }, rho,
+                rho * nu);
   ParticleCloud wall = testing::emptyWall();
   const int reach = 4 * layers;
   if (cylinder > 0) {
@@ -632,6 +663,7 @@ SessileResult sessileDrop(double degrees, int layers, double capillaryTimes, dou
   }
   const double area = static_cast<double>(fluid.size()) * dx * dx;
   FlowSettings flow;
+  flow.slipWalls = std::getenv("SPHCAST_CSF_SLIP") != nullptr;
   flow.dimension = 2;
   flow.supportRadius = h;
   flow.gravity = Vector(0, static_cast<Real>(-bond * sigma / (rho * area)), 0);
@@ -639,7 +671,7 @@ SessileResult sessileDrop(double degrees, int layers, double capillaryTimes, dou
   flow.soundSpeed = static_cast<Real>(std::sqrt(1000.0 * sigma / (rho * radius)));
   SurfaceTensionSettings tension = testing::tensionSettings(2, h, dx, sigma);
   tension.cosContactAngle = static_cast<Real>(std::cos(degrees * std::numbers::pi / 180));
-  testing::CapillaryRun<ContinuumSurfaceForce> run(flow, tension, fluid, {&wall});
+  testing::CapillaryRun<Tension> run(flow, tension, fluid, {&wall});
   const double end = capillaryTimes * std::sqrt(rho * std::pow(area, 1.5) / sigma);
   const auto start = std::chrono::steady_clock::now();
   long steps = 0;
@@ -654,6 +686,7 @@ SessileResult sessileDrop(double degrees, int layers, double capillaryTimes, dou
       }
       std::cout << "  t " << run.time << " fastest " << fastest << " lowest " << lowest
                 << " dx, largest |kappa| dx " << kmax * dx << std::endl;
+      if constexpr (std::is_same_v<Tension, ContinuumSurfaceForce>) {
       if (std::getenv("SPHCAST_CSF_TRACE_FASTEST")) {
         std::size_t f = 0;
         for (std::size_t i = 0; i < fluid.size(); ++i) {
@@ -670,12 +703,15 @@ SessileResult sessileDrop(double degrees, int layers, double capillaryTimes, dou
                   << int(run.tension.onSurface()[f]) << ", a "
                   << fluid.vectorField("acceleration")[f].transpose() << std::endl;
       }
+      }
     }
   }
   SessileResult result;
   result.particles = fluid.size();
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  run.tension.computeSurface();
+  // the surface read by the continuum surface force's detection, whatever model held the drop
+  ContinuumSurfaceForce probe(tension, fluid, {&wall}, run.neighbourhood);
+  probe.computeSurface();
   const auto& x = fluid.positions();
   Eigen::MatrixXd a(0, 3);
   Eigen::VectorXd b(0);
@@ -686,8 +722,8 @@ SessileResult sessileDrop(double degrees, int layers, double capillaryTimes, dou
     for (std::size_t j = i + 1; j < x.size(); ++j) {
       result.closest = std::min(result.closest, static_cast<double>((x[i] - x[j]).norm() / dx));
     }
-    if (!run.tension.onSurface()[i] || run.tension.depth()[i] > Real(0.8) * dx) continue;
-    const Vector surface = x[i] + run.tension.depth()[i] * run.tension.unitNormal()[i];
+    if (!probe.onSurface()[i] || probe.depth()[i] > Real(0.8) * dx) continue;
+    const Vector surface = x[i] + probe.depth()[i] * probe.unitNormal()[i];
     const Real aboveWall =
         cylinder > 0 ? (surface - cylinderCentre).norm() - cylinderRadius : surface[1];
     if (aboveWall < h) continue;
@@ -697,6 +733,21 @@ SessileResult sessileDrop(double degrees, int layers, double capillaryTimes, dou
     b(b.rows() - 1) = -double(surface.squaredNorm());
   }
   const Eigen::Vector3d fit = a.colPivHouseholderQr().solve(b);
+  {
+    double top = -1e9, bottom = 1e9;
+    for (const Vector& p : x) {
+      top = std::max(top, static_cast<double>(p[1]));
+      bottom = std::min(bottom, static_cast<double>(p[1]));
+    }
+    const double height = top - bottom + dx, ratio = height * height / area;
+    double low = 1e-3, high = std::numbers::pi;  // H^2 / A of a cap grows with theta
+    for (int k = 0; k < 60; ++k) {
+      const double mid = 0.5 * (low + high);
+      const double value = std::pow(1 - std::cos(mid), 2) / (mid - std::sin(mid) * std::cos(mid));
+      (value < ratio ? low : high) = mid;
+    }
+    result.heightAngle = 0.5 * (low + high) * 180 / std::numbers::pi;
+  }
   const Eigen::Vector2d centre(-0.5 * fit(0), -0.5 * fit(1));
   const double fitted = std::sqrt(0.25 * fit(0) * fit(0) + 0.25 * fit(1) * fit(1) - fit(2));
   double cosine = -centre(1) / fitted;
@@ -712,6 +763,7 @@ SessileResult sessileDrop(double degrees, int layers, double capillaryTimes, dou
 // The same in 3D: the lattice particles of a half ball of radius `layers` dx on a floor
 // (floorInZ), Bond rho g V^(2/3) / sigma, capillary times of sqrt(rho V / sigma); the angle from a
 // sphere fitted to the surface more than h above the floor, cos theta = -z_centre / R.
+template <class Tension = ContinuumSurfaceForce>
 SessileResult sessileDrop3D(double degrees, int layers, double capillaryTimes, double bond) {
   const Real sigma = 0.07, rho = 1000, nu = 1e-4, dx = 5e-4, h = 3 * dx;
   const Real ballRadius = layers * dx;
@@ -722,6 +774,7 @@ SessileResult sessileDrop3D(double degrees, int layers, double capillaryTimes, d
   ParticleCloud wall = testing::floorInZ(3 * layers, dx);
   const double volume = static_cast<double>(fluid.size()) * dx * dx * dx;
   FlowSettings flow;
+  flow.slipWalls = std::getenv("SPHCAST_CSF_SLIP") != nullptr;
   flow.dimension = 3;
   flow.supportRadius = h;
   flow.gravity =
@@ -730,7 +783,7 @@ SessileResult sessileDrop3D(double degrees, int layers, double capillaryTimes, d
   flow.soundSpeed = static_cast<Real>(std::sqrt(1000.0 * sigma / (rho * radius)));
   SurfaceTensionSettings tension = testing::tensionSettings(3, h, dx, sigma);
   tension.cosContactAngle = static_cast<Real>(std::cos(degrees * std::numbers::pi / 180));
-  testing::CapillaryRun<ContinuumSurfaceForce> run(flow, tension, fluid, {&wall});
+  testing::CapillaryRun<Tension> run(flow, tension, fluid, {&wall});
   const double end = capillaryTimes * std::sqrt(rho * volume / sigma);
   const auto start = std::chrono::steady_clock::now();
   long steps = 0;
@@ -750,7 +803,8 @@ SessileResult sessileDrop3D(double degrees, int layers, double capillaryTimes, d
   SessileResult result;
   result.particles = fluid.size();
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  run.tension.computeSurface();
+  ContinuumSurfaceForce probe(tension, fluid, {&wall}, run.neighbourhood);
+  probe.computeSurface();
   const auto& x = fluid.positions();
   std::vector<Eigen::Vector4d> rows;
   std::vector<double> right;
@@ -761,8 +815,8 @@ SessileResult sessileDrop3D(double degrees, int layers, double capillaryTimes, d
     for (std::size_t j = i + 1; j < x.size(); ++j) {
       result.closest = std::min(result.closest, static_cast<double>((x[i] - x[j]).norm() / dx));
     }
-    if (!run.tension.onSurface()[i] || run.tension.depth()[i] > Real(0.8) * dx) continue;
-    const Vector surface = x[i] + run.tension.depth()[i] * run.tension.unitNormal()[i];
+    if (!probe.onSurface()[i] || probe.depth()[i] > Real(0.8) * dx) continue;
+    const Vector surface = x[i] + probe.depth()[i] * probe.unitNormal()[i];
     if (surface[2] < h) continue;
     rows.emplace_back(double(surface[0]), double(surface[1]), double(surface[2]), 1.0);
     right.push_back(-double(surface.squaredNorm()));
@@ -780,6 +834,94 @@ SessileResult sessileDrop3D(double degrees, int layers, double capillaryTimes, d
   return result;
 }
 
+// A non-wetting liquid over a gap (2D): a pool 40 dx wide and 10 dx deep in a box of walls,
+// over a slot `gap` dx wide and 12 dx deep in its floor, all walls at `degrees`; gravity sets
+// the pressure at the slot's mouth, rho g H, to `ratio` times the capillary entry pressure
+// 2 sigma |cos theta| / w (Young-Laplace: the meniscus across a slot of width w has the radius
+// w / (2 |cos theta|)). Below 1 the liquid should stay out of the slot, above 1 fill it. Read
+// after `capillaryTimes` of sqrt(rho w^3 / sigma): the slot's filled fraction and the deepest
+// particle.
+struct GapResult {
+  double filled = 0, deepest = 0, seconds = 0;
+  std::size_t particles = 0;
+};
+
+GapResult gapEntry(int gap, double ratio, double capillaryTimes, double degrees) {
+  const Real sigma = 0.07, rho = 1000, nu = 1e-4, dx = 5e-4, h = 3 * dx;
+  const int width = 40, depth = 12, pool = 10, box = 24;
+  const Real halfWidth = width * dx / 2, halfGap = gap * dx / 2;
+  // the fluid's domain: the box above the floor and the slot below it
+  auto nearestInDomain = [&](const Vector& x) {
+    auto clampTo = [&](Real lowX, Real highX, Real lowY, Real highY) {
+      return Vector(std::clamp(x[0], lowX, highX), std::clamp(x[1], lowY, highY), 0);
+    };
+    const Vector inBox = clampTo(-halfWidth, halfWidth, 0, box * dx);
+    const Vector inSlot = clampTo(-halfGap, halfGap, -depth * dx, 0);
+    return (inBox - x).norm() < (inSlot - x).norm() ? inBox : inSlot;
+  };
+  ParticleCloud wall = testing::emptyWall();
+  for (int j = -depth - 3; j < box; ++j) {
+    for (int i = -width / 2 - 3; i < width / 2 + 3; ++i) {
+      const Vector x((i + Real(0.5)) * dx, (j + Real(0.5)) * dx, 0);
+      const Vector nearest = nearestInDomain(x);
+      const Real distance = (nearest - x).norm();
+      if (!(distance > 0) || distance > 3 * dx) continue;  // in the domain, or deeper than 3 dx
+      const std::size_t k = wall.size();
+      wall.resize(k + 1);
+      wall.positions()[k] = x;
+      wall.scalarField("volume")[k] = dx * dx;
+      wall.vectorField("normal")[k] = (nearest - x) / distance;
+      wall.scalarField("wallDistance")[k] = distance;
+    }
+  }
+  ParticleCloud fluid = testing::latticeFluid(
+      2, dx, Vector(-halfWidth, 0, 0), Vector(halfWidth, pool * dx, 0),
+      [](const Vector&) { return true; }, rho, rho * nu);
+  const double cosine = std::cos(degrees * std::numbers::pi / 180);
+  const double entry = 2 * sigma * std::abs(cosine) / (gap * dx);
+  FlowSettings flow;
+  flow.dimension = 2;
+  flow.supportRadius = h;
+  flow.slipWalls = std::getenv("SPHCAST_CSF_SLIP") != nullptr;
+  const double g = ratio * entry / (rho * pool * dx);
+  flow.gravity = Vector(0, static_cast<Real>(-g), 0);
+  flow.soundSpeed = static_cast<Real>(
+      std::max(10 * std::sqrt(2 * g * pool * dx), std::sqrt(1000.0 * entry / rho)));
+  SurfaceTensionSettings tension = testing::tensionSettings(2, h, dx, sigma);
+  tension.cosContactAngle = static_cast<Real>(cosine);
+  testing::CapillaryRun<ContinuumSurfaceForce> run(flow, tension, fluid, {&wall});
+  const double end = capillaryTimes * std::sqrt(rho * std::pow(gap * dx, 3) / sigma);
+  const auto start = std::chrono::steady_clock::now();
+  while (run.time < end) run.step(run.stableDeltaT());
+  GapResult result;
+  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  result.particles = fluid.size();
+  std::size_t inside = 0;
+  for (const Vector& x : fluid.positions()) {
+    result.deepest = std::min(result.deepest, static_cast<double>(x[1] / dx));
+    inside += x[1] < 0 && std::abs(x[0]) < halfGap;
+  }
+  result.filled = static_cast<double>(inside) / (gap * depth);
+  return result;
+}
+
+TEST(ContinuumSurfaceForce, GapEntryStudy) {
+  const char* study = std::getenv("SPHCAST_CSF_GAP");
+  if (study == nullptr) {
+    GTEST_SKIP() << "SPHCAST_CSF_GAP=\"gapSpacings capillaryTimes degrees ratios...\"";
+  }
+  std::istringstream in(study);
+  int gap = 8;
+  double times = 20, degrees = 150;
+  in >> gap >> times >> degrees;
+  for (double ratio = 0; in >> ratio;) {
+    const GapResult r = gapEntry(gap, ratio, times, degrees);
+    std::cout << "gap " << gap << " dx, theta " << degrees << ", pressure / entry " << ratio
+              << ": slot filled " << r.filled << ", deepest " << r.deepest << " dx, "
+              << r.particles << " particles, " << r.seconds << " s" << std::endl;
+  }
+}
+
 TEST(ContinuumSurfaceForce, SessileDropStudy) {
   const char* study = std::getenv("SPHCAST_CSF_SESSILE");
   if (study == nullptr) {
@@ -792,10 +934,15 @@ TEST(ContinuumSurfaceForce, SessileDropStudy) {
   const char* cylinder = std::getenv("SPHCAST_CSF_CYLINDER");  // its radius over the cap's
   const bool threeD = std::getenv("SPHCAST_CSF_3D") != nullptr;
   for (double degrees = 0; in >> degrees;) {
+    const double onCylinder = cylinder ? std::atof(cylinder) : 0.0;
     const SessileResult r =
-        threeD ? sessileDrop3D(degrees, layers, times, bond)
-               : sessileDrop(degrees, layers, times, bond, cylinder ? std::atof(cylinder) : 0.0);
-    std::cout << "theta " << degrees << ": " << r.angle << " degrees, " << r.particles
+        pairwiseStudy()
+            ? (threeD ? sessileDrop3D<PairwiseForce>(degrees, layers, times, bond)
+                      : sessileDrop<PairwiseForce>(degrees, layers, times, bond, onCylinder))
+            : (threeD ? sessileDrop3D(degrees, layers, times, bond)
+                      : sessileDrop(degrees, layers, times, bond, onCylinder));
+    std::cout << "theta " << degrees << ": " << r.angle << " degrees (from height "
+              << r.heightAngle << "), " << r.particles
               << " particles, lowest " << r.lowest << " dx above the wall, nearest pair "
               << r.closest << " dx, " << r.seconds << " s" << std::endl;
   }
