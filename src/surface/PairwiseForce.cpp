@@ -18,9 +18,7 @@ namespace {
 using PairConstants = PairwiseForce::PairConstants;
 
 // psi(r) = cos(3 pi r / (2 h)) for r < h
-Real pairShape(Real r, Real h) {
-  return std::cos(Real(1.5 * std::numbers::pi) * r / h);
-}
+Real pairShape(Real r, Real h) { return std::cos(Real(1.5 * std::numbers::pi) * r / h); }
 
 // The pair function's constants on the lattice of spacing dx (the arrangement a settled liquid
 // keeps near, as the colour's bulk sum in ContinuumSurfaceForce), per unit strength s, V = dx^d:
@@ -32,7 +30,7 @@ Real pairShape(Real r, Real h) {
 //     sigma / s = -(1 / (2 dx^(d-1))) sum_(i below) sum_(j above) V_i V_j u(r_ij),
 //     u(r) = int_r^h psi dt + 2 P W(r) (the pair's potential, 0 at h).
 // The continuum's integrals give 20 (2D) and 22 % (3D) less tension: the held pressure's part
-// nearly cancels two thirds of the cohesion's, and the rest follows the arrangement.
+// cancels about 60 % of the cohesion's, and the rest follows the arrangement.
 template <int Dim>
 PairConstants latticePairConstants(Real h, Real dx) {
   const WendlandC2Kernel<Dim> kernel(h);
@@ -78,8 +76,7 @@ PairConstants latticePairConstants(Real h, Real dx) {
 }  // namespace
 
 PairwiseForce::PairwiseForce(SurfaceTensionSettings settings, ParticleCloud& fluid,
-                             std::vector<const ParticleCloud*> walls,
-                             Neighbourhood& neighbourhood)
+                             std::vector<const ParticleCloud*> walls, Neighbourhood& neighbourhood)
     : settings_(std::move(settings)),
       wallShare_((Real(1) + (settings_.cosContactAngle ? *settings_.cosContactAngle : Real(-1))) /
                  Real(2)),
@@ -104,8 +101,8 @@ std::string PairwiseForce::summary(double soundSpeed) const {
   std::ostringstream text;
   text << "pairwise force (Tartakovsky & Panchenko 2016), sigma " << sigma.description()
        << (sigma.isConstant() ? " = " + std::to_string(sigma(0)) + " N/m" : " (a table in T)")
-       << ", strength s = " << constants_.strengthPerTension() << " sigma/m^" << settings_.dimension + 1
-       << " (Kirkwood-Buff on the lattice), its cohesion's pressure "
+       << ", strength s = " << constants_.strengthPerTension() << " sigma/m^"
+       << settings_.dimension + 1 << " (Kirkwood-Buff on the lattice), its cohesion's pressure "
        << constants_.cohesionPressure * constants_.strengthPerTension()
        << " sigma 1/m held by the model";
   if (!walls_.empty()) {

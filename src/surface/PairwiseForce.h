@@ -27,7 +27,7 @@ namespace sphcast {
 // Young's: a wall attracting with (1 + cos theta) / 2 of the liquid's strength has
 // Gamma_s - Gamma_sl = sigma cos theta; at 180 degrees the wall does not attract at all.
 //
-// Measured, and not the default (doc/validation.md §2.3): P nearly cancels two thirds of the
+// Measured, and not the default (doc/validation.md §2.4): P cancels about 60 % of the
 // cohesion's tension, and the rest follows the arrangement: a settled drop's pressure is 4 (30
 // across) to 9 (60 across) times Laplace's jump in 2D; the n = 2 mode of a 2D drop gives no
 // period; sessile drops read 84.6 / 88.1 / 97.5 / 116.7 / 141.7 degrees at 60 / 90 / 120 / 150 /

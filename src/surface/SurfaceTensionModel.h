@@ -23,7 +23,7 @@ class SurfaceTensionModel : public FluidForceModel {
   }
 };
 
-// What both models need of sigma = Gamma_g(T): the fluid has T when sigma is a table (an error
+// What every model needs of sigma = Gamma_g(T): the fluid has T when sigma is a table (an error
 // naming the table's file and line otherwise), and sigma at every particle's T now.
 void requireTemperatureFor(const TemperatureTable& sigma, const ParticleCloud& fluid);
 void tensionAtParticles(const TemperatureTable& sigma, const ParticleCloud& fluid,

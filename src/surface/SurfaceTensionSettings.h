@@ -7,8 +7,8 @@
 
 namespace sphcast {
 
-// The constants of the surface tension, read by both models (ContinuumSurfaceForce.h,
-// SurfaceEnergyTension.h); each model's own are marked.
+// The constants of the surface tension, read by the models (ContinuumSurfaceForce.h,
+// SurfaceEnergyTension.h, PairwiseForce.h); each model's own are marked.
 struct SurfaceTensionSettings {
   int dimension = 3;
   Real supportRadius = 0;  // h

@@ -625,12 +625,15 @@ SessileResult sessileDrop(double degrees, int layers, double capillaryTimes, dou
   }
   // SPHCAST_CSF_START=degrees: on a flat wall, the lattice particles of a cap of that angle
   // and the half disk's area instead
-  const double startAngle =
-      std::getenv("SPHCAST_CSF_START") ? std::atof(std::getenv("SPHCAST_CSF_START")) : 90.0;
-  const double theta0 = startAngle * std::numbers::pi / 180;
-  const Real startRadius = static_cast<Real>(
-      capRadius * std::sqrt(0.5 * std::numbers::pi / (theta0 - std::sin(theta0) * std::cos(theta0))));
-  const Vector startCentre(0, static_cast<Real>(-startRadius * std::cos(theta0)), 0);
+  Real startRadius = capRadius;
+  Vector startCentre = Vector::Zero();
+  if (const char* start = std::getenv("SPHCAST_CSF_START")) {
+    const double theta0 = std::atof(start) * std::numbers::pi / 180;
+    const double area = 0.5 * std::numbers::pi * capRadius * capRadius;
+    startRadius =
+        static_cast<Real>(std::sqrt(area / (theta0 - std::sin(theta0) * std::cos(theta0))));
+    startCentre[1] = static_cast<Real>(-startRadius * std::cos(theta0));
+  }
   ParticleCloud fluid =
       cylinder > 0
           ? testing::fluidAtRest(2, dx, rings, rho, rho * nu)
@@ -687,22 +690,22 @@ SessileResult sessileDrop(double degrees, int layers, double capillaryTimes, dou
       std::cout << "  t " << run.time << " fastest " << fastest << " lowest " << lowest
                 << " dx, largest |kappa| dx " << kmax * dx << std::endl;
       if constexpr (std::is_same_v<Tension, ContinuumSurfaceForce>) {
-      if (std::getenv("SPHCAST_CSF_TRACE_FASTEST")) {
-        std::size_t f = 0;
-        for (std::size_t i = 0; i < fluid.size(); ++i) {
-          if (fluid.vectorField("U")[i].norm() > fluid.vectorField("U")[f].norm()) f = i;
+        if (std::getenv("SPHCAST_CSF_TRACE_FASTEST")) {
+          std::size_t f = 0;
+          for (std::size_t i = 0; i < fluid.size(); ++i) {
+            if (fluid.vectorField("U")[i].norm() > fluid.vectorField("U")[f].norm()) f = i;
+          }
+          int near = 0;
+          for (std::size_t j = 0; j < fluid.size(); ++j) {
+            near += (fluid.positions()[j] - fluid.positions()[f]).norm() < h;
+          }
+          std::cout << "    fastest at " << (fluid.positions()[f] / dx).transpose() << " dx, U "
+                    << fluid.vectorField("U")[f].transpose() << ", " << near - 1
+                    << " fluid within h, g " << run.tension.colourGradient()[f].transpose() * dx
+                    << " /dx, kappa dx " << fluid.scalarField("curvature")[f] * dx << ", surface "
+                    << int(run.tension.onSurface()[f]) << ", a "
+                    << fluid.vectorField("acceleration")[f].transpose() << std::endl;
         }
-        int near = 0;
-        for (std::size_t j = 0; j < fluid.size(); ++j) {
-          near += (fluid.positions()[j] - fluid.positions()[f]).norm() < h;
-        }
-        std::cout << "    fastest at " << (fluid.positions()[f] / dx).transpose() << " dx, U "
-                  << fluid.vectorField("U")[f].transpose() << ", " << near - 1
-                  << " fluid within h, g " << run.tension.colourGradient()[f].transpose() * dx
-                  << " /dx, kappa dx " << fluid.scalarField("curvature")[f] * dx << ", surface "
-                  << int(run.tension.onSurface()[f]) << ", a "
-                  << fluid.vectorField("acceleration")[f].transpose() << std::endl;
-      }
       }
     }
   }
