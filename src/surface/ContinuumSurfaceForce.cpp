@@ -181,24 +181,8 @@ std::string ContinuumSurfaceForce::summary(double soundSpeed) const {
   return text.str();
 }
 
-double ContinuumSurfaceForce::largestTension() const {
-  const TemperatureTable& table = *settings_.gasTension;
-  if (table.isConstant()) return table(0);
-  if (tension_.size() == fluid_.size() && !tension_.empty()) {  // of the last pass
-    return static_cast<double>(*std::max_element(tension_.begin(), tension_.end()));
-  }
-  double largest = 0;
-  for (const Real t : fluid_.scalarField("T")) largest = std::max(largest, table(t));
-  return largest;
-}
-
 double ContinuumSurfaceForce::stableDeltaT() const {
-  const double sigma = largestTension();
-  const auto& rho = fluid_.scalarField("rho");
-  if (!(sigma > 0) || rho.empty()) return std::numeric_limits<double>::max();
-  const double lightest = *std::min_element(rho.begin(), rho.end());
-  const double dx = settings_.spacing;
-  return 0.25 * std::sqrt(lightest * dx * dx * dx / (2 * std::numbers::pi * sigma));
+  return capillaryStepLimit(*settings_.gasTension, tension_, fluid_, settings_.spacing);
 }
 
 // The colour gradient g_i, then c_i and z_i where i can be a surface particle, then the normal

@@ -115,7 +115,6 @@ class ContinuumSurfaceForce : public SurfaceTensionModel {
   void computeCurvature();
 
   void turnNormalsAtWalls();
-  double largestTension() const;
 
   SurfaceTensionSettings settings_;
   Real cosTheta_, sinTheta_;

@@ -113,24 +113,8 @@ std::string PairwiseForce::summary(double soundSpeed) const {
   return text.str();
 }
 
-double PairwiseForce::largestTension() const {
-  const TemperatureTable& table = *settings_.gasTension;
-  if (table.isConstant()) return table(0);
-  if (tension_.size() == fluid_.size() && !tension_.empty()) {
-    return static_cast<double>(*std::max_element(tension_.begin(), tension_.end()));
-  }
-  double largest = 0;
-  for (const Real t : fluid_.scalarField("T")) largest = std::max(largest, table(t));
-  return largest;
-}
-
 double PairwiseForce::stableDeltaT() const {
-  const double sigma = largestTension();
-  const auto& rho = fluid_.scalarField("rho");
-  if (!(sigma > 0) || rho.empty()) return std::numeric_limits<double>::max();
-  const double lightest = *std::min_element(rho.begin(), rho.end());
-  const double dx = settings_.spacing;
-  return 0.25 * std::sqrt(lightest * dx * dx * dx / (2 * std::numbers::pi * sigma));
+  return capillaryStepLimit(*settings_.gasTension, tension_, fluid_, settings_.spacing);
 }
 
 template <int Dim>

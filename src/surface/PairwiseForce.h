@@ -60,7 +60,6 @@ class PairwiseForce : public SurfaceTensionModel {
  private:
   template <int Dim>
   void addForce();
-  double largestTension() const;
 
   SurfaceTensionSettings settings_;
   Real wallShare_;  // (1 + cos theta) / 2

@@ -4,7 +4,10 @@
 #include "surface/SurfaceTensionModel.h"
 
 #include <algorithm>
+#include <cmath>
 #include <functional>
+#include <limits>
+#include <numbers>
 #include <utility>
 
 #include "core/Error.h"
@@ -59,6 +62,23 @@ void tensionAtParticles(const TemperatureTable& sigma, const ParticleCloud& flui
   for (std::size_t i = 0; i < n; ++i) {
     tension[i] = static_cast<Real>(sigma(static_cast<double>(temperature[i])));
   }
+}
+
+double capillaryStepLimit(const TemperatureTable& sigma, const std::vector<Real>& lastTension,
+                          const ParticleCloud& fluid, double spacing) {
+  double largest = 0;
+  if (sigma.isConstant()) {
+    largest = sigma(0);
+  } else if (lastTension.size() == fluid.size() && !lastTension.empty()) {
+    largest = static_cast<double>(*std::max_element(lastTension.begin(), lastTension.end()));
+  } else {
+    for (const Real t : fluid.scalarField("T")) largest = std::max(largest, sigma(t));
+  }
+  const auto& rho = fluid.scalarField("rho");
+  if (!(largest > 0) || rho.empty()) return std::numeric_limits<double>::max();
+  const double lightest = *std::min_element(rho.begin(), rho.end());
+  return 0.25 *
+         std::sqrt(lightest * spacing * spacing * spacing / (2 * std::numbers::pi * largest));
 }
 
 const std::vector<std::string>& surfaceTensionModelNames() {

@@ -29,6 +29,13 @@ void requireTemperatureFor(const TemperatureTable& sigma, const ParticleCloud& f
 void tensionAtParticles(const TemperatureTable& sigma, const ParticleCloud& fluid,
                         std::vector<Real>& tension);
 
+// The capillary step limit 0.25 sqrt(rho_min dx^3 / (2 pi sigma_max)) (Brackbill, Kothe &
+// Zemach 1992) of the continuum surface force and the pair force: sigma_max from the last
+// pass's tensions at the particles (`lastTension`, when it has one per particle), else from the
+// table over the fluid's T; no limit where sigma is 0 or the fluid is empty.
+double capillaryStepLimit(const TemperatureTable& sigma, const std::vector<Real>& lastTension,
+                          const ParticleCloud& fluid, double spacing);
+
 // The models by the names constant/physicsModels gives them (surfaceTension { model NAME; }),
 // in the order the error for an unknown name lists them; the first is the default.
 const std::vector<std::string>& surfaceTensionModelNames();

@@ -101,32 +101,27 @@ BENCHMARK_CAPTURE(SurfaceTensionPass, allPairs, false)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 
-void ContinuumSurfaceForcePass(benchmark::State& state) {
+// One model's passes alone (addAcceleration), on the ball with a neighbourhood of its own.
+template <class Model>
+void ModelPass(benchmark::State& state) {
   auto fluid = ball(state.range(0));
   sphcast::Neighbourhood neighbourhood(3 * dx, sphcast::PeriodicBox());
   neighbourhood.addCloud(fluid, sphcast::Neighbourhood::Motion::moving);
-  sphcast::ContinuumSurfaceForce tension(tensionSettings(true), fluid, {}, neighbourhood);
+  Model tension(tensionSettings(true), fluid, {}, neighbourhood);
   neighbourhood.update();
   for (auto _ : state) tension.addAcceleration();
   state.SetItemsProcessed(state.iterations() * static_cast<long>(fluid.size()));
   state.counters["particles"] = double(fluid.size());
+}
+void ContinuumSurfaceForcePass(benchmark::State& state) {
+  ModelPass<sphcast::ContinuumSurfaceForce>(state);
 }
 BENCHMARK(ContinuumSurfaceForcePass)
     ->Arg(10'000)
     ->Arg(100'000)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
-
-void PairwiseForcePass(benchmark::State& state) {
-  auto fluid = ball(state.range(0));
-  sphcast::Neighbourhood neighbourhood(3 * dx, sphcast::PeriodicBox());
-  neighbourhood.addCloud(fluid, sphcast::Neighbourhood::Motion::moving);
-  sphcast::PairwiseForce tension(tensionSettings(true), fluid, {}, neighbourhood);
-  neighbourhood.update();
-  for (auto _ : state) tension.addAcceleration();
-  state.SetItemsProcessed(state.iterations() * static_cast<long>(fluid.size()));
-  state.counters["particles"] = double(fluid.size());
-}
+void PairwiseForcePass(benchmark::State& state) { ModelPass<sphcast::PairwiseForce>(state); }
 BENCHMARK(PairwiseForcePass)
     ->Arg(10'000)
     ->Arg(100'000)
