@@ -150,9 +150,11 @@ struct WallParticle {
   Real density;   // from the pressure through the equation of state
 };
 
-// slip in [0, 1] blends towards a free-slip wall (wallSlip slip in system/sphSchemes): the mirror
-// velocity reflects only v_i's normal part, v_k = v_i - 2 ((v_i - v_wall) . n) n, and the wall
-// holds no shear.
+// slip in [0, 1] takes the wall's viscous shear away (wallSlip slip in system/sphSchemes): the
+// fluid slides along the wall held back only by the interface's dissipation along oblique pairs.
+// The mirror velocity stays the full 2 v_wall - v_i: reflecting only its normal part (a free
+// slip) left no resistance along pair lines towards a neighbouring face, and in crossDitchPress's
+// pour a particle went 0.66 dx through the mold at 0.156 s.
 template <int Dim, class Interface, class Viscosity>
 inline void accumulateWallPair(const InterfaceSide& i, Real viscosityI, const WallParticle& k,
                                Real halfSpacing, const Vector& xik, Real r, const Vector& gradW,
@@ -172,12 +174,8 @@ inline void accumulateWallPair(const InterfaceSide& i, Real viscosityI, const Wa
       Interface::fluidTensionAtWalls ? i.pressure : std::max(i.pressure, Real(0));
   const InterfaceSide fluid{i.density, fluidPressure, i.velocity};
   const Vector relative = i.velocity - k.velocity;
-  Vector mirrorVelocity = Real(2) * k.velocity - i.velocity;
-  if (slip > Real(0)) {
-    const Vector slipping = i.velocity - Real(2) * relative.dot(k.normal) * k.normal;
-    mirrorVelocity += slip * (slipping - mirrorVelocity);
-  }
-  const InterfaceSide mirror{k.density, std::max(k.pressure, Real(0)), mirrorVelocity};
+  const InterfaceSide mirror{k.density, std::max(k.pressure, Real(0)),
+                             Real(2) * k.velocity - i.velocity};
   const Real fluidDistance = std::max(xik.dot(k.normal) - k.depth, halfSpacing);
   const Real beta = Real(1) + k.depth / fluidDistance;
   FluidPair<Dim, Interface, Viscosity>::accumulate(

@@ -31,7 +31,7 @@ struct FlowSettings {
   Real deltaSPHViscosity = Real(0.02);
   std::string viscousForm = "Morris";  // Morris | Cleary (FlowRates.h says why Morris)
   // wallSlip in system/sphSchemes: noSlip (false, the default) or slip (true): the walls hold
-  // no shear, the fluid slides along them (FlowRates.h, accumulateWallPair)
+  // no viscous shear, the fluid slides along them (FlowRates.h, accumulateWallPair)
   bool slipWalls = false;
   PeriodicBox periodic;
   // The least distance, in particle spacings, a fluid particle keeps from a wall surface

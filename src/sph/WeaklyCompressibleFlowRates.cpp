@@ -221,7 +221,7 @@ void WeaklyCompressibleFlow::computeRatesFor() {
       pairVolume = pairVolume_.data();
     }
   }
-  // wallSlip slip: the walls hold no shear (FlowRates.h, accumulateWallPair)
+  // wallSlip slip: the walls hold no viscous shear (FlowRates.h, accumulateWallPair)
   const Real slip = settings_.slipWalls ? Real(1) : Real(0);
   auto plainDifference = [](const Vector& a, const Vector& b) { return Vector(a - b); };
   auto ratesWith = [&](auto separation) {

@@ -52,7 +52,7 @@ class SurfaceDepthProfile {
 //   wall, with the weight 1 - s(l_i / h) (s: smoothstep): at the wall the surface meets it at
 //   theta (Young), and the curvature that follows bends it there; theta is at most 150 degrees
 //   (above it a free drop on a wall threw particles out; 150 reads 109 to 114 on a sessile
-//   drop with no-slip walls, which pin the contact line, and 140 to 146 with `wallSlip slip`,
+//   drop with no-slip walls, which pin the contact line, and 140 with `wallSlip slip`,
 //   doc/validation.md §2.2);
 // - curvature: the divergence of n over the surface particles, normalised so that it is exact
 //   for a field that turns only along the surface, whatever part of the kernel is filled:
