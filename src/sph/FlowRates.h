@@ -150,7 +150,7 @@ struct WallParticle {
   Real density;   // from the pressure through the equation of state
 };
 
-// slip in [0, 1] takes the wall's viscous shear away (wallSlip slip in system/sphSchemes): the
+// slip takes the wall's viscous shear away (wallSlip slip in system/sphSchemes): the
 // fluid slides along the wall held back only by the interface's dissipation along oblique pairs.
 // The mirror velocity stays the full 2 v_wall - v_i: reflecting only its normal part (a free
 // slip) left no resistance along pair lines towards a neighbouring face, and in crossDitchPress's
@@ -158,7 +158,7 @@ struct WallParticle {
 template <int Dim, class Interface, class Viscosity>
 inline void accumulateWallPair(const InterfaceSide& i, Real viscosityI, const WallParticle& k,
                                Real halfSpacing, const Vector& xik, Real r, const Vector& gradW,
-                               const FlowConstants& constants, Real slip, Real& densityRate,
+                               const FlowConstants& constants, bool slip, Real& densityRate,
                                Vector& acceleration) {
   // A wall only pushes: with tension (p < 0) on either side the pair would pull a lone fluid
   // particle into the wall (measured: one of a 2D dam break's ended 0.11 dx inside the back
@@ -180,7 +180,8 @@ inline void accumulateWallPair(const InterfaceSide& i, Real viscosityI, const Wa
   const Real beta = Real(1) + k.depth / fluidDistance;
   FluidPair<Dim, Interface, Viscosity>::accumulate(
       fluid, mirror, k.density * k.volume, viscosityI, viscosityI,
-      ((Real(1) - slip) * beta) * relative, xik, r, gradW, constants, densityRate, acceleration);
+      slip ? Vector::Zero() : Vector(beta * relative), xik, r, gradW, constants, densityRate,
+      acceleration);
 }
 
 // Adami et al. (2012) eq. (27), static wall: the pressure of wall particle w from its fluid

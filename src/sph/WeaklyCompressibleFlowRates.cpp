@@ -221,8 +221,6 @@ void WeaklyCompressibleFlow::computeRatesFor() {
       pairVolume = pairVolume_.data();
     }
   }
-  // wallSlip slip: the walls hold no viscous shear (FlowRates.h, accumulateWallPair)
-  const Real slip = settings_.slipWalls ? Real(1) : Real(0);
   auto plainDifference = [](const Vector& a, const Vector& b) { return Vector(a - b); };
   auto ratesWith = [&](auto separation) {
 #pragma omp parallel for schedule(static)
@@ -303,7 +301,8 @@ void WeaklyCompressibleFlow::computeRatesFor() {
           Vector& target = wall.loadForce ? pairAcceleration : accel;
           accumulateWallPair<Dim, Interface, Viscosity>(
               self, muI, particle, halfSpacing, xik, r,
-              corrected ? Vector(correctionI * gradW) : gradW, constants, slip, rate, target);
+              corrected ? Vector(correctionI * gradW) : gradW, constants, settings_.slipWalls, rate,
+              target);
           if (diffusive) {
             // deltaSPH's artificial viscosity against the mirror velocity 2 v_wall - v_i:
             // without it a means interface has no dissipation at an impact on a wall
