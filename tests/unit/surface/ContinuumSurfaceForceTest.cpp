@@ -599,6 +599,93 @@ struct SessileResult {
   std::size_t particles = 0;
 };
 
+// Steps a sessile drop to `end` (s) as the solver steps it, printing under SPHCAST_CSF_TRACE
+// every `traceEvery` steps its fastest particle, its lowest along the axis `up` and its largest
+// curvature (and, with SPHCAST_CSF_TRACE_FASTEST, the fastest particle's state). Then reads the
+// lowest particle and the nearest pair (in spacings) and, by the continuum surface force's
+// detection whatever model held the drop, the surface: each outer particle (depth under 0.8 dx)
+// moved out along its normal by its depth, where aboveWall(point) is at least h.
+template <class Tension, class AboveWall>
+SessileResult settleDrop(testing::CapillaryRun<Tension>& run, ParticleCloud& fluid,
+                         const SurfaceTensionSettings& tension, const ParticleCloud& wall,
+                         double end, int up, long traceEvery, Real h,
+                         std::vector<Vector>& surface, AboveWall aboveWall) {
+  const Real dx = tension.spacing;
+  const auto start = std::chrono::steady_clock::now();
+  long steps = 0;
+  while (run.time < end) {
+    run.step(run.stableDeltaT());
+    if (!std::getenv("SPHCAST_CSF_TRACE") || ++steps % traceEvery != 0) continue;
+    double fastest = 0, lowest = 1e9, kmax = 0;
+    std::size_t f = 0;
+    const auto& U = fluid.vectorField("U");
+    for (std::size_t i = 0; i < fluid.size(); ++i) {
+      fastest = std::max(fastest, static_cast<double>(U[i].norm()));
+      if (U[i].norm() > U[f].norm()) f = i;
+      lowest = std::min(lowest, static_cast<double>(fluid.positions()[i][up] / dx));
+      kmax = std::max(kmax, std::abs(static_cast<double>(fluid.scalarField("curvature")[i])));
+    }
+    std::cout << "  t " << run.time << " fastest " << fastest << " lowest " << lowest
+              << " dx, largest |kappa| dx " << kmax * dx << std::endl;
+    if constexpr (std::is_same_v<Tension, ContinuumSurfaceForce>) {
+      if (std::getenv("SPHCAST_CSF_TRACE_FASTEST")) {
+        int near = 0;
+        for (std::size_t j = 0; j < fluid.size(); ++j) {
+          near += (fluid.positions()[j] - fluid.positions()[f]).norm() < h;
+        }
+        std::cout << "    fastest at " << (fluid.positions()[f] / dx).transpose() << " dx, U "
+                  << U[f].transpose() << ", " << near - 1 << " fluid within h, g "
+                  << run.tension.colourGradient()[f].transpose() * dx << " /dx, kappa dx "
+                  << fluid.scalarField("curvature")[f] * dx << ", surface "
+                  << int(run.tension.onSurface()[f]) << ", a "
+                  << fluid.vectorField("acceleration")[f].transpose() << std::endl;
+      }
+    }
+  }
+  SessileResult result;
+  result.particles = fluid.size();
+  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  ContinuumSurfaceForce probe(tension, fluid, {&wall}, run.neighbourhood);
+  probe.computeSurface();
+  const auto& x = fluid.positions();
+  result.lowest = 1e9;
+  result.closest = 1e9;
+  surface.clear();
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    result.lowest = std::min(result.lowest, static_cast<double>(x[i][up] / dx));
+    for (std::size_t j = i + 1; j < x.size(); ++j) {
+      result.closest = std::min(result.closest, static_cast<double>((x[i] - x[j]).norm() / dx));
+    }
+    if (!probe.onSurface()[i] || probe.depth()[i] > Real(0.8) * dx) continue;
+    const Vector point = x[i] + probe.depth()[i] * probe.unitNormal()[i];
+    if (aboveWall(point) >= h) surface.push_back(point);
+  }
+  return result;
+}
+
+// The circle (dims 2: in x, y) or sphere (3) through the points in the least-squares sense,
+// |x|^2 + a . x + c = 0.
+struct FittedSphere {
+  Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+  double radius = 0;
+};
+
+FittedSphere fitSphere(const std::vector<Vector>& points, int dims) {
+  Eigen::MatrixXd a(static_cast<Eigen::Index>(points.size()), dims + 1);
+  Eigen::VectorXd b(static_cast<Eigen::Index>(points.size()));
+  for (std::size_t k = 0; k < points.size(); ++k) {
+    const auto row = static_cast<Eigen::Index>(k);
+    for (int axis = 0; axis < dims; ++axis) a(row, axis) = double(points[k][axis]);
+    a(row, dims) = 1.0;
+    b(row) = -double(points[k].squaredNorm());
+  }
+  const Eigen::VectorXd fit = a.colPivHouseholderQr().solve(b);
+  FittedSphere sphere;
+  sphere.centre.head(dims) = -0.5 * fit.head(dims);
+  sphere.radius = std::sqrt(sphere.centre.squaredNorm() - fit(dims));
+  return sphere;
+}
+
 // With `cylinder` > 0 the wall is a cylinder (a circle in 2D) of that many times the cap's
 // radius, its top at y = 0 (three rings of particles a spacing apart), and the drop the particles
 // of rings round it a spacing apart within the cap's radius of the top; the angle then from the
@@ -676,66 +763,14 @@ SessileResult sessileDrop(double degrees, int layers, double capillaryTimes, dou
   tension.cosContactAngle = static_cast<Real>(std::cos(degrees * std::numbers::pi / 180));
   testing::CapillaryRun<Tension> run(flow, tension, fluid, {&wall});
   const double end = capillaryTimes * std::sqrt(rho * std::pow(area, 1.5) / sigma);
-  const auto start = std::chrono::steady_clock::now();
-  long steps = 0;
-  while (run.time < end) {
-    run.step(run.stableDeltaT());
-    if (std::getenv("SPHCAST_CSF_TRACE") && ++steps % 200 == 0) {
-      double fastest = 0, lowest = 1e9, kmax = 0;
-      for (std::size_t i = 0; i < fluid.size(); ++i) {
-        fastest = std::max(fastest, static_cast<double>(fluid.vectorField("U")[i].norm()));
-        lowest = std::min(lowest, static_cast<double>(fluid.positions()[i][1] / dx));
-        kmax = std::max(kmax, std::abs(static_cast<double>(fluid.scalarField("curvature")[i])));
-      }
-      std::cout << "  t " << run.time << " fastest " << fastest << " lowest " << lowest
-                << " dx, largest |kappa| dx " << kmax * dx << std::endl;
-      if constexpr (std::is_same_v<Tension, ContinuumSurfaceForce>) {
-        if (std::getenv("SPHCAST_CSF_TRACE_FASTEST")) {
-          std::size_t f = 0;
-          for (std::size_t i = 0; i < fluid.size(); ++i) {
-            if (fluid.vectorField("U")[i].norm() > fluid.vectorField("U")[f].norm()) f = i;
-          }
-          int near = 0;
-          for (std::size_t j = 0; j < fluid.size(); ++j) {
-            near += (fluid.positions()[j] - fluid.positions()[f]).norm() < h;
-          }
-          std::cout << "    fastest at " << (fluid.positions()[f] / dx).transpose() << " dx, U "
-                    << fluid.vectorField("U")[f].transpose() << ", " << near - 1
-                    << " fluid within h, g " << run.tension.colourGradient()[f].transpose() * dx
-                    << " /dx, kappa dx " << fluid.scalarField("curvature")[f] * dx << ", surface "
-                    << int(run.tension.onSurface()[f]) << ", a "
-                    << fluid.vectorField("acceleration")[f].transpose() << std::endl;
-        }
-      }
-    }
-  }
-  SessileResult result;
-  result.particles = fluid.size();
-  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  // the surface read by the continuum surface force's detection, whatever model held the drop
-  ContinuumSurfaceForce probe(tension, fluid, {&wall}, run.neighbourhood);
-  probe.computeSurface();
+  std::vector<Vector> surface;
+  SessileResult result = settleDrop(run, fluid, tension, wall, end, 1, 200, h, surface,
+                                    [&](const Vector& point) {
+                                      return cylinder > 0 ? (point - cylinderCentre).norm() -
+                                                                cylinderRadius
+                                                          : point[1];
+                                    });
   const auto& x = fluid.positions();
-  Eigen::MatrixXd a(0, 3);
-  Eigen::VectorXd b(0);
-  result.lowest = 1e9;
-  result.closest = 1e9;
-  for (std::size_t i = 0; i < x.size(); ++i) {
-    result.lowest = std::min(result.lowest, static_cast<double>(x[i][1] / dx));
-    for (std::size_t j = i + 1; j < x.size(); ++j) {
-      result.closest = std::min(result.closest, static_cast<double>((x[i] - x[j]).norm() / dx));
-    }
-    if (!probe.onSurface()[i] || probe.depth()[i] > Real(0.8) * dx) continue;
-    const Vector surface = x[i] + probe.depth()[i] * probe.unitNormal()[i];
-    const Real aboveWall =
-        cylinder > 0 ? (surface - cylinderCentre).norm() - cylinderRadius : surface[1];
-    if (aboveWall < h) continue;
-    a.conservativeResize(a.rows() + 1, Eigen::NoChange);
-    b.conservativeResize(b.rows() + 1);
-    a.row(a.rows() - 1) << double(surface[0]), double(surface[1]), 1.0;
-    b(b.rows() - 1) = -double(surface.squaredNorm());
-  }
-  const Eigen::Vector3d fit = a.colPivHouseholderQr().solve(b);
   {
     double top = -1e9, bottom = 1e9;
     for (const Vector& p : x) {
@@ -751,8 +786,9 @@ SessileResult sessileDrop(double degrees, int layers, double capillaryTimes, dou
     }
     result.heightAngle = 0.5 * (low + high) * 180 / std::numbers::pi;
   }
-  const Eigen::Vector2d centre(-0.5 * fit(0), -0.5 * fit(1));
-  const double fitted = std::sqrt(0.25 * fit(0) * fit(0) + 0.25 * fit(1) * fit(1) - fit(2));
+  const FittedSphere fit = fitSphere(surface, 2);
+  const Eigen::Vector2d centre = fit.centre.head<2>();
+  const double fitted = fit.radius;
   double cosine = -centre(1) / fitted;
   if (cylinder > 0) {
     const double rc = cylinderRadius;
@@ -788,52 +824,12 @@ SessileResult sessileDrop3D(double degrees, int layers, double capillaryTimes, d
   tension.cosContactAngle = static_cast<Real>(std::cos(degrees * std::numbers::pi / 180));
   testing::CapillaryRun<Tension> run(flow, tension, fluid, {&wall});
   const double end = capillaryTimes * std::sqrt(rho * volume / sigma);
-  const auto start = std::chrono::steady_clock::now();
-  long steps = 0;
-  while (run.time < end) {
-    run.step(run.stableDeltaT());
-    if (std::getenv("SPHCAST_CSF_TRACE") && ++steps % 100 == 0) {
-      double fastest = 0, kmax = 0, lowest = 1e9;
-      for (std::size_t i = 0; i < fluid.size(); ++i) {
-        fastest = std::max(fastest, static_cast<double>(fluid.vectorField("U")[i].norm()));
-        lowest = std::min(lowest, static_cast<double>(fluid.positions()[i][2] / dx));
-        kmax = std::max(kmax, std::abs(static_cast<double>(fluid.scalarField("curvature")[i])));
-      }
-      std::cout << "  t " << run.time << " fastest " << fastest << " lowest " << lowest
-                << " dx, largest |kappa| dx " << kmax * dx << std::endl;
-    }
-  }
-  SessileResult result;
-  result.particles = fluid.size();
-  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  ContinuumSurfaceForce probe(tension, fluid, {&wall}, run.neighbourhood);
-  probe.computeSurface();
-  const auto& x = fluid.positions();
-  std::vector<Eigen::Vector4d> rows;
-  std::vector<double> right;
-  result.lowest = 1e9;
-  result.closest = 1e9;
-  for (std::size_t i = 0; i < x.size(); ++i) {
-    result.lowest = std::min(result.lowest, static_cast<double>(x[i][2] / dx));
-    for (std::size_t j = i + 1; j < x.size(); ++j) {
-      result.closest = std::min(result.closest, static_cast<double>((x[i] - x[j]).norm() / dx));
-    }
-    if (!probe.onSurface()[i] || probe.depth()[i] > Real(0.8) * dx) continue;
-    const Vector surface = x[i] + probe.depth()[i] * probe.unitNormal()[i];
-    if (surface[2] < h) continue;
-    rows.emplace_back(double(surface[0]), double(surface[1]), double(surface[2]), 1.0);
-    right.push_back(-double(surface.squaredNorm()));
-  }
-  Eigen::MatrixXd a(rows.size(), 4);
-  Eigen::VectorXd b(rows.size());
-  for (std::size_t k = 0; k < rows.size(); ++k) {
-    a.row(static_cast<Eigen::Index>(k)) = rows[k].transpose();
-    b(static_cast<Eigen::Index>(k)) = right[k];
-  }
-  const Eigen::Vector4d fit = a.colPivHouseholderQr().solve(b);
-  const Eigen::Vector3d centre = -0.5 * fit.head<3>();
-  const double fitted = std::sqrt(centre.squaredNorm() - fit(3));
-  result.angle = std::acos(std::clamp(-centre(2) / fitted, -1.0, 1.0)) * 180 / std::numbers::pi;
+  std::vector<Vector> surface;
+  SessileResult result = settleDrop(run, fluid, tension, wall, end, 2, 100, h, surface,
+                                    [](const Vector& point) { return point[2]; });
+  const FittedSphere fit = fitSphere(surface, 3);
+  result.angle =
+      std::acos(std::clamp(-fit.centre(2) / fit.radius, -1.0, 1.0)) * 180 / std::numbers::pi;
   return result;
 }
 
