@@ -242,15 +242,8 @@ void NeighbourList::build(const std::vector<Vector>& positionsA,
                 " (rebuild the grid after the cloud changed)");
   }
   const std::size_t count = positionsA.size();
-  // Contiguous blocks of i, several per thread so that clustered particles balance; the result
-  // does not depend on how many there are.
-  const std::size_t blocks = std::max<std::size_t>(
-      1, std::min<std::size_t>(count / 64, 8 * std::size_t(omp_get_max_threads())));
-  if (blockStorage_.size() < blocks) blockStorage_.resize(blocks);
-  blockUsed_.resize(blocks);
-  blockBegin_.resize(blocks + 1);
-  for (std::size_t b = 0; b <= blocks; ++b) blockBegin_[b] = count * b / blocks;
-  counts_.resize(count);
+  cutIntoBlocks(count);
+  const std::size_t blocks = blockBegin_.size() - 1;
   // one search per (periodic images how?, B in cell order?), chosen once, not per pair
   const bool periodic = gridB.periodicBox().anyPeriodic();
   bool imagesByCell = periodic && gridB.imagesByCell();
@@ -281,6 +274,92 @@ void NeighbourList::build(const std::vector<Vector>& positionsA,
   }
   if (failure) std::rethrow_exception(failure);
   gatherBlocks();
+}
+
+void NeighbourList::filterFrom(const NeighbourList& wide, const std::vector<Vector>& positionsA,
+                               const std::vector<Vector>& positionsB, Real radius,
+                               const PeriodicBox& periodic) {
+  const std::size_t count = positionsA.size();
+  if (wide.particleCount() != count) {
+    throw Error("NeighbourList: the wide list holds " + std::to_string(wide.particleCount()) +
+                " particles but the cloud has " + std::to_string(count));
+  }
+  cutIntoBlocks(count);
+  const std::size_t blocks = blockBegin_.size() - 1;
+  const Real radiusSquared = radius * radius;
+  const std::uint64_t* offsets = wide.offsets_.data();
+  const std::uint32_t* neighbours = wide.neighbours_.data();
+  const Vector* xB = positionsB.data();
+  // a block never keeps more than the wide list holds for it: its buffer is grown here, before
+  // the parallel scan (where an allocation failure could not leave)
+  for (std::size_t b = 0; b < blocks; ++b) {
+    const std::size_t room = offsets[blockBegin_[b + 1]] - offsets[blockBegin_[b]];
+    if (blockStorage_[b].size() < room) blockStorage_[b].resize(room + room / 4 + 1024);
+  }
+  // A row's pairs take the plain difference when x_i lies at least the radius inside every
+  // periodic face and all of B lies in the box: then a j closer than the radius by the minimum
+  // image is that close as it is (the ball around x_i lies in the box, where each point has
+  // one image), and any other j is at least as far by the plain difference. The same test as a
+  // search's; the minimum image (three roundings) costs about twice the plain difference.
+  Vector interiorLower = Vector::Constant(-std::numeric_limits<Real>::max());
+  Vector interiorUpper = Vector::Constant(std::numeric_limits<Real>::max());
+  bool plainInside = !periodic.anyPeriodic();
+  if (!plainInside) {
+    plainInside = true;
+    for (const Vector& x : positionsB) plainInside = plainInside && periodic.wrap(x) == x;
+    for (int a = 0; a < 3; ++a) {
+      if (!periodic.isPeriodic(a)) continue;
+      const Real margin = radius * Real(1.000001);  // round-off in x_i +- h
+      interiorLower[a] = periodic.lower(a) + margin;
+      interiorUpper[a] = periodic.lower(a) + periodic.period(a) - margin;
+    }
+  }
+  auto keepCloser = [&](std::size_t i, std::uint32_t* out, std::size_t used, auto separation) {
+    const Vector xi = positionsA[i];
+    for (std::uint64_t n = offsets[i]; n < offsets[i + 1]; ++n) {
+      const std::uint32_t j = neighbours[n];
+      out[used] = j;
+      used += separation(xi, xB[j]) < radiusSquared;
+    }
+    return used;
+  };
+  const auto plain = [](const Vector& xi, const Vector& xj) {
+    const Real dx = xi[0] - xj[0], dy = xi[1] - xj[1], dz = xi[2] - xj[2];
+    return dx * dx + dy * dy + dz * dz;
+  };
+  const auto minimumImage = [&periodic](const Vector& xi, const Vector& xj) {
+    const Real dx = periodic.minimumImage(xi[0] - xj[0], 0),
+               dy = periodic.minimumImage(xi[1] - xj[1], 1),
+               dz = periodic.minimumImage(xi[2] - xj[2], 2);
+    return dx * dx + dy * dy + dz * dz;
+  };
+#pragma omp parallel for schedule(dynamic, 1) if (blocks > 1)
+  for (std::size_t b = 0; b < blocks; ++b) {
+    std::uint32_t* out = blockStorage_[b].data();
+    std::size_t used = 0;
+    for (std::size_t i = blockBegin_[b]; i < blockBegin_[b + 1]; ++i) {
+      const Vector& xi = positionsA[i];
+      const bool inside = plainInside && (xi.array() >= interiorLower.array()).all() &&
+                          (xi.array() <= interiorUpper.array()).all();
+      const std::size_t before = used;
+      used = inside ? keepCloser(i, out, used, plain) : keepCloser(i, out, used, minimumImage);
+      counts_[i] = static_cast<std::uint32_t>(used - before);
+    }
+    blockUsed_[b] = used;
+  }
+  gatherBlocks();
+}
+
+// Contiguous blocks of i, several per thread so that clustered particles balance; the result
+// does not depend on how many there are.
+void NeighbourList::cutIntoBlocks(std::size_t count) {
+  const std::size_t blocks = std::max<std::size_t>(
+      1, std::min<std::size_t>(count / 64, 8 * std::size_t(omp_get_max_threads())));
+  if (blockStorage_.size() < blocks) blockStorage_.resize(blocks);
+  blockUsed_.resize(blocks);
+  blockBegin_.resize(blocks + 1);
+  for (std::size_t b = 0; b <= blocks; ++b) blockBegin_[b] = count * b / blocks;
+  counts_.resize(count);
 }
 
 // Prefix sum of the counts into offsets, then every block's list copied to its place.

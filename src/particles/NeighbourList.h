@@ -56,6 +56,13 @@ class NeighbourList {
   void buildBetween(const std::vector<Vector>& positionsA, const std::vector<Vector>& positionsB,
                     const CellGrid& gridB);
 
+  // The pairs of `wide` (a list of the same clouds built with a larger radius, a skin) that are
+  // closer than `radius` now, in wide's order: the list a search with `radius` would find,
+  // without the search, as long as no pair has closed in by more than the skin since wide was
+  // built (Neighbourhood checks that, and rebuilds instead for a non-finite position).
+  void filterFrom(const NeighbourList& wide, const std::vector<Vector>& positionsA,
+                  const std::vector<Vector>& positionsB, Real radius, const PeriodicBox& periodic);
+
   std::size_t particleCount() const { return offsets_.size() - 1; }
   std::size_t pairCount() const { return offsets_.back(); }
 
@@ -73,6 +80,7 @@ class NeighbourList {
  private:
   void build(const std::vector<Vector>& positionsA, const std::vector<Vector>& positionsB,
              const CellGrid& gridB, bool sameCloud);
+  void cutIntoBlocks(std::size_t count);
   void gatherBlocks();
 
   std::vector<std::uint64_t> offsets_{0};

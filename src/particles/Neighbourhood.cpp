@@ -1,11 +1,49 @@
 #include "particles/Neighbourhood.h"
 
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+
 #include "core/Error.h"
 
 namespace sphcast {
 
-Neighbourhood::Neighbourhood(Real radius, const PeriodicBox& periodic)
-    : radius_(radius), periodic_(periodic) {}
+namespace {
+
+// The skin, cut where a periodic axis could not hold a search with h + s (the grid needs a
+// period above twice its radius; 1 % kept as margin).
+Real fittedSkin(Real radius, const PeriodicBox& periodic, Real skin) {
+  if (!(skin >= 0) || !std::isfinite(skin)) {
+    throw Error("neighbourhood: the skin must be finite and >= 0, not " + std::to_string(skin));
+  }
+  for (int axis = 0; axis < 3; ++axis) {
+    if (periodic.isPeriodic(axis)) {
+      skin = std::min(skin, std::max(Real(0), Real(0.99) * periodic.period(axis) / 2 - radius));
+    }
+  }
+  return skin;
+}
+
+// The largest |x - x0| over a cloud, the minimum image on periodic axes (a particle wrapped
+// across a periodic face has moved by its step, not by the period), infinite when a position is
+// not finite.
+Real largestDisplacement(const std::vector<Vector>& positions, const std::vector<Vector>& from,
+                         const PeriodicBox& periodic) {
+  Real largest = 0;
+  const std::size_t count = positions.size();
+#pragma omp parallel for reduction(max : largest) if (count > 32768)
+  for (std::size_t i = 0; i < count; ++i) {
+    const Real d = periodic.separation(positions[i], from[i]).squaredNorm();
+    largest = std::max(largest, std::isfinite(d) ? d : std::numeric_limits<Real>::infinity());
+  }
+  return std::sqrt(largest);
+}
+
+}  // namespace
+
+Neighbourhood::Neighbourhood(Real radius, const PeriodicBox& periodic, Real skin)
+    : radius_(radius), skin_(fittedSkin(radius, periodic, skin)), periodic_(periodic) {}
 
 void Neighbourhood::addCloud(ParticleCloud& cloud, Motion motion) {
   if (has(cloud)) {
@@ -17,7 +55,7 @@ void Neighbourhood::addCloud(ParticleCloud& cloud, Motion motion) {
   entry.cloud = &cloud;
   entry.movable = motion == Motion::moving ? &cloud : nullptr;
   entry.moves = motion != Motion::fixed;
-  entry.grid = std::make_unique<CellGrid>(radius_, periodic_);
+  entry.grid = std::make_unique<CellGrid>(radius_ + skin_, periodic_);
   entries_.push_back(std::move(entry));
 }
 
@@ -25,7 +63,7 @@ void Neighbourhood::addFixedCloud(const ParticleCloud& cloud) {
   if (has(cloud)) return;
   Entry entry;
   entry.cloud = &cloud;
-  entry.grid = std::make_unique<CellGrid>(radius_, periodic_);
+  entry.grid = std::make_unique<CellGrid>(radius_ + skin_, periodic_);
   entries_.push_back(std::move(entry));
 }
 
@@ -48,22 +86,67 @@ void Neighbourhood::requestPairs(const ParticleCloud& a, const ParticleCloud& b)
   for (const Pairs& pairs : pairs_) {
     if (pairs.a == ea && pairs.b == eb) return;
   }
-  pairs_.push_back({ea, eb, NeighbourList(), false});
+  pairs_.push_back({ea, eb, NeighbourList(), NeighbourList(), false});
 }
 
-void Neighbourhood::update(CloudOrder order) {
+void Neighbourhood::update(CloudOrder order, bool rebuild) {
   for (Entry& entry : entries_) {
-    entry.movedNow = !entry.binned;
-    if (entry.binned && !entry.moves) continue;  // a fixed cloud's grid stays valid
-    if (entry.binned && !entry.movable) {
-      // a rigid cloud: re-binned only when it moved (a body held, resting or at its stop
-      // keeps its grid and lists)
-      if (entry.cloud->positions() == entry.binnedPositions) continue;
-      entry.binnedPositions = entry.cloud->positions();
-    } else if (entry.moves && !entry.movable) {
-      entry.binnedPositions = entry.cloud->positions();
+    entry.movedNow = entry.movable || !entry.binned;
+    if (entry.moves && !entry.movable) {  // a rigid cloud: moved when its positions changed
+      const bool changed = entry.cloud->positions() != entry.seenPositions;
+      if (changed) entry.seenPositions = entry.cloud->positions();
+      entry.movedNow = entry.movedNow || changed;
     }
-    entry.movedNow = true;
+  }
+  if (rebuild || rebuildDue()) {
+    this->rebuild(order);
+    ++rebuilds_;
+  } else {
+    filter();
+    ++reuses_;
+  }
+}
+
+bool Neighbourhood::keptForever(const Pairs& pairs) const {
+  return pairs.built && pairs.a == pairs.b && !entries_[pairs.a].movable;
+}
+
+// Whether a pair of some list may have come closer than h without being in its wide list: it
+// was at least h + s apart at the rebuild and has closed in by at most the displacements.
+bool Neighbourhood::rebuildDue() {
+  if (skin_ == 0) return true;
+  std::vector<Real> displacement(entries_.size(), 0);
+  for (std::size_t e = 0; e < entries_.size(); ++e) {
+    const Entry& entry = entries_[e];
+    if (!entry.binned) return true;
+    if (!entry.moves) continue;
+    if (entry.cloud->layoutVersion() != entry.binnedLayout ||
+        entry.cloud->size() != entry.binnedPositions.size()) {
+      return true;
+    }
+    displacement[e] =
+        largestDisplacement(entry.cloud->positions(), entry.binnedPositions, periodic_);
+  }
+  for (const Pairs& pairs : pairs_) {
+    if (keptForever(pairs)) continue;
+    if (!pairs.built) return true;
+    const Real closing = pairs.a == pairs.b ? 2 * displacement[pairs.a]
+                                            : displacement[pairs.a] + displacement[pairs.b];
+    if (!(closing < skin_)) return true;
+  }
+  return false;
+}
+
+void Neighbourhood::rebuild(CloudOrder order) {
+  std::vector<bool> rebinned(entries_.size(), false);
+  for (std::size_t e = 0; e < entries_.size(); ++e) {
+    Entry& entry = entries_[e];
+    if (entry.binned && !entry.moves) continue;  // a fixed cloud's grid stays valid
+    // a rigid cloud is re-binned only when it moved (a body held, resting or at its stop keeps
+    // its grid and lists)
+    if (entry.binned && !entry.movable && entry.cloud->positions() == entry.binnedPositions) {
+      continue;
+    }
     entry.grid->build(entry.cloud->positions());
     // a cloud still in cell order (no particle changed cell) needs no reorder, which would copy
     // every field
@@ -71,20 +154,45 @@ void Neighbourhood::update(CloudOrder order) {
       entry.movable->reorder(entry.grid->sortPermutation());
       entry.grid->adoptCellOrder();
     }
+    if (entry.moves) {
+      entry.binnedPositions = entry.cloud->positions();
+      entry.binnedLayout = entry.cloud->layoutVersion();
+    }
     entry.binned = true;
+    rebinned[e] = true;
   }
   for (Pairs& pairs : pairs_) {
+    if (keptForever(pairs)) continue;
     const Entry& a = entries_[pairs.a];
     const Entry& b = entries_[pairs.b];
-    if (pairs.built && !a.movedNow && !b.movedNow) continue;
-    // a rigid cloud's own pairs keep their partners as it moves (distances are kept)
-    if (pairs.built && pairs.a == pairs.b && !a.movable) continue;
-    if (pairs.a == pairs.b) {
-      pairs.list.buildWithin(a.cloud->positions(), *a.grid);
-    } else {
-      pairs.list.buildBetween(a.cloud->positions(), b.cloud->positions(), *b.grid);
+    const bool search = !pairs.built || rebinned[pairs.a] || rebinned[pairs.b];
+    if (!search && !a.movedNow && !b.movedNow) continue;
+    // with no skin the list is the search's; with one the search fills the wide list, and a
+    // list whose grids still hold (a rigid cloud back where it was binned) is only filtered
+    NeighbourList& searched = skin_ > 0 ? pairs.wide : pairs.list;
+    if (search || skin_ == 0) {
+      if (pairs.a == pairs.b) {
+        searched.buildWithin(a.cloud->positions(), *a.grid);
+      } else {
+        searched.buildBetween(a.cloud->positions(), b.cloud->positions(), *b.grid);
+      }
+    }
+    if (skin_ > 0) {
+      pairs.list.filterFrom(pairs.wide, a.cloud->positions(), b.cloud->positions(), radius_,
+                            periodic_);
     }
     pairs.built = true;
+  }
+}
+
+void Neighbourhood::filter() {
+  for (Pairs& pairs : pairs_) {
+    if (keptForever(pairs)) continue;
+    const Entry& a = entries_[pairs.a];
+    const Entry& b = entries_[pairs.b];
+    if (!a.movedNow && !b.movedNow) continue;
+    pairs.list.filterFrom(pairs.wide, a.cloud->positions(), b.cloud->positions(), radius_,
+                          periodic_);
   }
 }
 

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <memory>
 #include <string>
 #include <vector>
@@ -17,28 +18,35 @@ enum class CloudOrder {
   keep     // left as it is (a restart: the order it was written in, for bit-identical sums)
 };
 
-// The cell grids and pair lists that every model of a step reads, built once per step for
+// The cell grids and pair lists that every model of a step reads, updated once per step for
 // all the clouds of a case (doc/design.md §3, "the step"). The solver owns it; each model asks,
 // when it is built, for the pairs of clouds it needs (requestPairs), and reads them
 // (pairs(a, b)) when it adds its rates. A list is built once for all the models that share it.
 //
-// A moving cloud (the metal) is re-binned at every update() and reordered along its grid; a
-// rigid cloud (a mold that moves as one body, bodies/RigidBody.h) is re-binned at an update
-// when it has moved, but never reordered (its particles keep their places in the body's frame),
-// and its list with itself is built once (a rigid motion keeps every distance); a fixed cloud (a
-// mold at rest) is binned once and never reordered, and a list between two fixed clouds
-// (mold-mold conduction) is built once. Fields live in the clouds, so
-// a reorder needs no hook in any model.
+// A moving cloud (the metal) is re-binned at a rebuild and reordered along its grid; a rigid
+// cloud (a mold that moves as one body, bodies/RigidBody.h) is re-binned at a rebuild when it
+// has moved, but never reordered (its particles keep their places in the body's frame), and its
+// list with itself is built once (a rigid motion keeps every distance); a fixed cloud (a mold at
+// rest) is binned once and never reordered, and a list between two fixed clouds (mold-mold
+// conduction) is built once. Fields live in the clouds, so a reorder needs no hook in any model.
 //
-// Pair lists hold every pair closer than the search radius (the kernel's support radius h).
-// Reusing lists over several steps (a skin: search radius h + s, rebuilt when a particle has
-// moved s/2) needs only a larger radius here and a test in update(); the pair loops already
-// skip nothing by distance and get W = 0 beyond h from the kernel's own clamp.
+// Every list a model reads holds exactly the pairs closer than the kernel's support radius h,
+// at the positions of the last update(). With a skin s > 0 a rebuild searches the cells with
+// the radius h + s into a wide list, and the updates after it only filter the wide list at the
+// new positions (a pass over its pairs, no cells), until two particles of a list may have closed
+// in by s since the rebuild: the largest displacement of one cloud's particles plus that of the
+// other's (twice the one within a cloud) reaching s. The filtered list is what a search with h
+// would give, in the wide list's order (Verlet's list with a skin; Verlet 1967). A rebuild also
+// comes with any change of a cloud's layout (particles added, removed or reordered by anyone
+// else), a non-finite position, or when the caller asks for one (the solver does before a write,
+// so that a restart, which rebuilds, reproduces the run bit for bit).
 class Neighbourhood {
  public:
   enum class Motion { moving, rigid, fixed };
 
-  Neighbourhood(Real radius, const PeriodicBox& periodic);
+  // radius: the kernel's support radius h; skin: s >= 0 (0: a search at every update); a skin
+  // that would leave a periodic axis's period no more than twice h + s is cut to fit.
+  Neighbourhood(Real radius, const PeriodicBox& periodic, Real skin = 0);
 
   // Registers a cloud (once); its address must stay valid while the neighbourhood lives.
   // A cloud registered fixed and then rigid becomes rigid (a body's mold that a heat or flow
@@ -51,40 +59,56 @@ class Neighbourhood {
   // excluded). Both clouds must be registered. Asking again for the same pair does nothing.
   void requestPairs(const ParticleCloud& a, const ParticleCloud& b);
 
-  // Bins the moving clouds (reordered when order is byCell), then rebuilds every requested list
-  // with a moving end (every list, the first time).
-  void update(CloudOrder order = CloudOrder::byCell);
+  // Brings every requested list to the present positions: a rebuild (the moving clouds
+  // binned, reordered when order is byCell, every list with a moving end searched) when one is
+  // due or `rebuild` is true, else the lists with a moving end filtered from their wide lists.
+  void update(CloudOrder order = CloudOrder::byCell, bool rebuild = false);
 
   // The list requested for (a, b), as of the last update(); throws Error if never requested.
   const NeighbourList& pairs(const ParticleCloud& a, const ParticleCloud& b) const;
   const CellGrid& grid(const ParticleCloud& cloud) const;
 
   Real radius() const { return radius_; }
+  Real skin() const { return skin_; }
   const PeriodicBox& periodicBox() const { return periodic_; }
   // Pairs in all lists of the last update (for the log's throughput figures).
   std::size_t pairCount() const;
+  // Updates so far that searched the cells, and that only filtered.
+  std::size_t rebuildCount() const { return rebuilds_; }
+  std::size_t reuseCount() const { return reuses_; }
 
  private:
   struct Entry {
     const ParticleCloud* cloud = nullptr;
     ParticleCloud* movable = nullptr;  // the cloud to reorder: null for a fixed or rigid cloud
-    bool moves = false;                // re-binned at every update (moving and rigid)
+    bool moves = false;                // moving or rigid
     std::unique_ptr<CellGrid> grid;
     bool binned = false;
-    bool movedNow = false;                 // re-binned in this update
-    std::vector<Vector> binnedPositions;  // a rigid cloud's, when last binned
+    bool movedNow = false;                // moved since the last update (a list to renew)
+    std::vector<Vector> binnedPositions;  // at the last binning (moving and rigid clouds)
+    std::uint64_t binnedLayout = 0;       // the cloud's layoutVersion() then
+    std::vector<Vector> seenPositions;    // a rigid cloud's at the last update
   };
   struct Pairs {
-    std::size_t a, b;  // entries
-    NeighbourList list;
+    std::size_t a, b;     // entries
+    NeighbourList list;   // closer than h
+    NeighbourList wide;   // closer than h + s, at the last rebuild (only with a skin)
     bool built = false;
   };
   std::size_t entryOf(const ParticleCloud& cloud) const;
+  bool rebuildDue();
+  void rebuild(CloudOrder order);
+  void filter();
+  // A rigid cloud's list with itself never changes (a rigid motion keeps every distance).
+  bool keptForever(const Pairs& pairs) const;
 
   Real radius_;
+  Real skin_;
   PeriodicBox periodic_;
   std::vector<Entry> entries_;
   std::vector<Pairs> pairs_;
+  std::size_t rebuilds_ = 0;
+  std::size_t reuses_ = 0;
 };
 
 }  // namespace sphcast

@@ -56,6 +56,7 @@ bool sameNames(const FieldMap& a, const FieldMap& b) {
 ParticleCloud::ParticleCloud(std::string name) : name_(std::move(name)) {}
 
 void ParticleCloud::resize(std::size_t count) {
+  ++layoutVersion_;
   positions_.resize(count, Vector::Zero());
   for (auto& [fieldName, field] : scalars_) field.resize(count, Real(0));
   for (auto& [fieldName, field] : vectors_) field.resize(count, Vector::Zero());
@@ -142,6 +143,7 @@ void ParticleCloud::reorder(const std::vector<std::size_t>& newOrder) {
     throw Error("cloud '" + name_ + "': reorder with " + std::to_string(newOrder.size()) +
                 " indices for " + std::to_string(size()) + " particles");
   }
+  ++layoutVersion_;
   permute(positions_, newOrder, scratch_.vectors);
   for (auto& entry : scalars_) permute(entry.second, newOrder, scratch_.scalars);
   for (auto& entry : vectors_) permute(entry.second, newOrder, scratch_.vectors);
@@ -154,6 +156,7 @@ void ParticleCloud::append(const ParticleCloud& other) {
     throw Error("cannot append cloud '" + other.name_ + "' " + other.fieldList() + " to cloud '" +
                 name_ + "' " + fieldList() + ": their fields differ");
   }
+  ++layoutVersion_;
   positions_.insert(positions_.end(), other.positions_.begin(), other.positions_.end());
   appendFields(scalars_, other.scalars_);
   appendFields(vectors_, other.vectors_);

@@ -64,6 +64,10 @@ class ParticleCloud {
   // Appends the particles of another cloud with the same fields (throws if they differ).
   void append(const ParticleCloud& other);
 
+  // Counts the changes of which particle is where in the arrays (resize, reorder, append), so
+  // that a neighbour list kept over several steps knows when its indices went stale.
+  std::uint64_t layoutVersion() const { return layoutVersion_; }
+
   // Bit-for-bit equality of positions, fields and attributes (restart and I/O checks).
   bool identicalTo(const ParticleCloud& other) const;
 
@@ -77,6 +81,7 @@ class ParticleCloud {
   std::map<std::string, VectorField> vectors_;
   std::map<std::string, IdField> ids_;
   std::map<std::string, double> attributes_;
+  std::uint64_t layoutVersion_ = 0;
   // Buffers reorder() permutes through, kept so that a reorder every step allocates nothing.
   // Not part of the cloud's state: copying a cloud does not copy them.
   struct ReorderScratch {

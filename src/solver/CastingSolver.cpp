@@ -72,7 +72,7 @@ void CastingSolver::evolve(double deltaT) {
   }
   if (heatThisStep) addWallTime(heatSeconds_, [&] { energy_->halfKick(heatDeltaT_); });
   // the search at the new positions (nothing moves without a flow), the quantities models share
-  if (flow_) searchAndKeepClear(deltaT);
+  if (flow_) searchAndKeepClear(deltaT, true);
   if (heatThisStep && flow_ && exposedArea_) {
     addWallTime(heatSeconds_, [&] { exposedArea_->compute(); });
   }
@@ -113,11 +113,18 @@ void CastingSolver::heatStepInPlace(double deltaT) {
 
 // The search at the new positions, the fluid's first wall contacts, the bodies kept out of the
 // other molds, and the wall clearance with its impulse on the bodies.
-void CastingSolver::searchAndKeepClear(double deltaT) {
+// A state that will be written is searched afresh, after the clearance moved what it moves,
+// and without a reorder (the clearance's impulses are per particle): a restart from it searches
+// the same positions in the same order and goes on bit for bit.
+void CastingSolver::searchAndKeepClear(double deltaT, bool lastOfStep) {
+  const bool written = lastOfStep && (time_.writeTime() || time_.progress() >= 1);
   addWallTime(searchSeconds_, [&] { neighbourhood_->update(); });
   if (fillTime_) fillTime_->record(*neighbourhood_, time_.value());
   keepBodiesOutOfMolds();
   flow_->keepClearOfWalls();
+  if (written) {
+    addWallTime(searchSeconds_, [&] { neighbourhood_->update(CloudOrder::keep, true); });
+  }
   pushBodiesByClearance(deltaT);
 }
 
@@ -147,7 +154,7 @@ void CastingSolver::evolveCooling(double deltaT) {
     flow_->kickAndDrift(flowDeltaT);
     driftBodies(flowDeltaT);
     pour();
-    searchAndKeepClear(flowDeltaT);
+    searchAndKeepClear(flowDeltaT, k + 1 == solidificationSetup_.cooling->flowStepsPerHeatStep);
     flow_->computeRatesAndKick(flowDeltaT);
     kickBodies(flowDeltaT);
     holdInletBuffers();

@@ -67,7 +67,7 @@ class CastingSolver {
   ParticleCloud& cloudNamed(const std::string& name);  // throws, listing the clouds present
   double stableDeltaT(std::string& limiter) const;
   void evolve(double deltaT);
-  void searchAndKeepClear(double deltaT);
+  void searchAndKeepClear(double deltaT, bool lastOfStep);
   // The bodies' phases beside the flow's: kick and drift, the clearance's impulse, the loads
   // and the second kick.
   void driftBodies(double deltaT);

@@ -108,7 +108,13 @@ void CastingSolver::logTimeSpent() {
   if (energy_) line << " heat " << heatSeconds_ << ",";
   line << " health checks " << checkSeconds_ << ", function objects " << functionSeconds_
        << ", output " << outputSeconds_;
-  info() << line.str() << '\n' << "Run health: " << warnings_.summary() << '\n';
+  info() << line.str() << '\n';
+  if (neighbourhood_) {
+    info() << "Pair lists: searched in the cells " << neighbourhood_->rebuildCount()
+           << " times, filtered from the last search " << neighbourhood_->reuseCount()
+           << " times (skin " << neighbourhood_->skin() << " m)\n";
+  }
+  info() << "Run health: " << warnings_.summary() << '\n';
 }
 
 void CastingSolver::logRereadMessage() {

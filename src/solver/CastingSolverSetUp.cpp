@@ -148,7 +148,10 @@ void CastingSolver::setUpNeighbourhood() {
       heatSetup_.supportRadius != flowSetup_.settings.supportRadius) {
     throw Error("internal: flow and heat read different supportRadius");
   }
-  neighbourhood_ = std::make_unique<Neighbourhood>(radius, periodic);
+  // pair lists reused over steps only where particles move (a heat-only case has no flow)
+  const Real skin =
+      flowSetup_.enabled ? flowSetup_.settings.neighbourListSkin * radius : Real(0);
+  neighbourhood_ = std::make_unique<Neighbourhood>(radius, periodic, skin);
   if (flowSetup_.enabled) {
     ParticleCloud& fluid = cloudNamed(flowSetup_.fluidCloud);
     neighbourhood_->addCloud(fluid, Neighbourhood::Motion::moving);
@@ -201,6 +204,8 @@ void CastingSolver::setUpFlow() {
          << (settings.kernelCorrection ? "on" : "off") << ", viscousForm " << settings.viscousForm
          << ", wallSlip " << (settings.slipWalls ? "slip" : "noSlip")
          << ", h = " << settings.supportRadius << " m, c = " << settings.soundSpeed << " m/s\n"
+         << "    pair lists: searched with h + " << neighbourhood_->skin()
+         << " m, reused until particles may have closed in by that skin\n"
          << "    fluid " << fluid.name() << ": " << fluid.size() << " particles\n";
   for (const ParticleCloud* wall : walls) {
     info() << "    wall " << wall->name() << ": " << wall->size() << " particles\n";

@@ -88,7 +88,8 @@ FlowSetup readFlowSetup(const CaseFolder& caseFolder, const std::optional<Vector
 
   const Dictionary schemes = Dictionary::read(caseFolder.systemFile("sphSchemes"));
   schemes.checkKeys({"densityScheme", "kernelCorrection", "viscousForm", "wallSlip",
-                     "supportRadius", "soundSpeed", "deltaSPHCoeffs", "wallClearance"});
+                     "supportRadius", "soundSpeed", "deltaSPHCoeffs", "wallClearance",
+                     "neighbourListSkin"});
   FlowSettings& settings = setup.settings;
   settings.densityScheme = schemes.getChoice("densityScheme", {"riemann", "standard", "deltaSPH"});
   settings.kernelCorrection =
@@ -118,6 +119,15 @@ FlowSetup readFlowSetup(const CaseFolder& caseFolder, const std::optional<Vector
     throw DictionaryError(
         schemes.location("wallClearance"),
         "'wallClearance' (in particle spacings) must lie in [0, 0.5] in " + schemes.name());
+  }
+  // a fraction of h: pair lists searched with h (1 + skin) and reused until particles may have
+  // closed in by the skin (particles/Neighbourhood.h)
+  settings.neighbourListSkin =
+      schemes.getOrDefault<Real>("neighbourListSkin", settings.neighbourListSkin);
+  if (!(settings.neighbourListSkin >= 0 && settings.neighbourListSkin <= 1)) {
+    throw DictionaryError(schemes.location("neighbourListSkin"),
+                          "'neighbourListSkin' (a fraction of the supportRadius) must lie in "
+                          "[0, 1] in " + schemes.name());
   }
   settings.gravity = gravity;
   settings.dimension = models.getOrDefault<int>("dimension", 3);

@@ -35,7 +35,8 @@ WeaklyCompressibleFlow::WeaklyCompressibleFlow(FlowSettings settings, ParticleCl
       fluid_(fluid),
       walls_(std::move(walls)),
       ownNeighbourhood_(
-          std::make_unique<Neighbourhood>(settings_.supportRadius, settings_.periodic)),
+          std::make_unique<Neighbourhood>(settings_.supportRadius, settings_.periodic,
+                                          settings_.neighbourListSkin * settings_.supportRadius)),
       neighbourhood_(*ownNeighbourhood_) {
   checkInput();
   // A restarted cloud keeps the order it was written in (the wall clearance may have moved a

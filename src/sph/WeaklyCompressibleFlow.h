@@ -33,6 +33,9 @@ struct FlowSettings {
   // wallSlip in system/sphSchemes: noSlip (false, the default) or slip (true): the walls hold
   // no viscous shear, the fluid slides along them (FlowRates.h, accumulateWallPair)
   bool slipWalls = false;
+  // neighbourListSkin in system/sphSchemes: the skin of the reused pair lists as a fraction of
+  // h (particles/Neighbourhood.h); 0 searches the cells at every step.
+  Real neighbourListSkin = Real(0.1);
   PeriodicBox periodic;
   // The least distance, in particle spacings, a fluid particle keeps from a wall surface
   // (WallClearance.h, WallSurfaceDistance.h).
@@ -142,6 +145,7 @@ class WeaklyCompressibleFlow {
   void computeRatesAndKick(double deltaT);
 
   std::size_t fluidPairCount() const { return fluidPairs().pairCount(); }
+  const Neighbourhood& neighbourhood() const { return neighbourhood_; }
 
   // Measures the load on `wall` (one of the flow's walls) at every evaluation of the rates and
   // wall clearance from now on; until the next rates, the load is zero.

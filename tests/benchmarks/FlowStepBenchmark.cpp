@@ -1,4 +1,4 @@
-// One kick-drift-kick step of the weakly compressible flow (neighbour search, reorder, Riemann
+// One kick-drift-kick step of the weakly compressible flow (neighbour lists, reorder, Riemann
 // interface, Morris viscosity, gravity) on a 3D periodic block of fluid with h = 3 dx
 // (~107 neighbours), at 1e4..1e6 particles. The fluid streams at 1 m/s (a casting's speed) with
 // the acoustic step (maxCo 0.25), so that, as in a real run, some particles change cell every
@@ -43,7 +43,8 @@ sphcast::ParticleCloud periodicBlock(int perSide, Real dx) {
 // One step of the scheme named by densityScheme, with or without the kernel correction (which
 // adds a pass over every pair for the correction matrices; deltaSPH adds that pass for its
 // renormalised density gradient and two terms per pair).
-void FlowStep(benchmark::State& state, const char* densityScheme, bool kernelCorrection) {
+void FlowStep(benchmark::State& state, const char* densityScheme, bool kernelCorrection,
+              Real neighbourListSkin = sphcast::FlowSettings().neighbourListSkin) {
   const int perSide = static_cast<int>(std::lround(std::cbrt(double(state.range(0)))));
   const Real dx = Real(1.25e-3);
   auto fluid = periodicBlock(perSide, dx);
@@ -54,6 +55,7 @@ void FlowStep(benchmark::State& state, const char* densityScheme, bool kernelCor
   settings.gravity = Vector(0, 0, Real(-9.81));
   settings.densityScheme = densityScheme;
   settings.kernelCorrection = kernelCorrection;
+  settings.neighbourListSkin = neighbourListSkin;
   for (int axis = 0; axis < 3; ++axis) settings.periodic.setPeriodic(axis, 0, perSide * dx);
   sphcast::WeaklyCompressibleFlow flow(settings, fluid, {});
   std::string limiter;
@@ -66,6 +68,9 @@ void FlowStep(benchmark::State& state, const char* densityScheme, bool kernelCor
 }
 BENCHMARK_CAPTURE(FlowStep, riemann, "riemann", false)
     ->Arg(10'000)->Arg(100'000)->Arg(1'000'000)->Unit(benchmark::kMillisecond)->UseRealTime();
+// the pair lists searched at every step (no skin), as before issue #25
+BENCHMARK_CAPTURE(FlowStep, riemannSearchEveryStep, "riemann", false, Real(0))
+    ->Arg(10'000)->Arg(100'000)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK_CAPTURE(FlowStep, riemannCorrected, "riemann", true)
     ->Arg(10'000)->Arg(100'000)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK_CAPTURE(FlowStep, deltaSPH, "deltaSPH", false)

@@ -5,6 +5,9 @@
 //  - NeighbourListBuild: the CSR list within the cloud: particles/s and pairs/s, with the
 //    neighbours per particle and the list's bytes per particle as counters.
 //  - NeighbourListBuildPeriodic: the same, the cube periodic on all three axes (minimum image).
+//  - NeighbourListFilter: the list within h filtered from a wide list searched with h (1 + 0.1),
+//    what a step costs while its lists are reused (particles/Neighbourhood.h): pairs/s of the
+//    filtered list.
 #include <benchmark/benchmark.h>
 
 #include <cmath>
@@ -86,6 +89,31 @@ void listBuild(benchmark::State& state, bool periodic) {
   state.counters["CSRBytes/particle"] = (double(list.offsets().size()) * 8 + pairs * 4) / particles;
 }
 
+void NeighbourListFilter(benchmark::State& state) {
+  auto cloud = latticeCloud(state.range(0));
+  const Real h = Real(state.range(1));
+  sphcast::CellGrid grid(h * Real(1.1));
+  grid.build(cloud.positions());
+  cloud.reorder(grid.sortPermutation());
+  grid.adoptCellOrder();
+  sphcast::NeighbourList wide, list;
+  wide.buildWithin(cloud.positions(), grid);
+  const sphcast::PeriodicBox none;
+  list.filterFrom(wide, cloud.positions(), cloud.positions(), h, none);  // buffers sized
+  for (auto _ : state) {
+    list.filterFrom(wide, cloud.positions(), cloud.positions(), h, none);
+    benchmark::DoNotOptimize(list.neighbours().data());
+  }
+  const double particles = double(cloud.size());
+  const double pairs = double(list.pairCount());
+  state.SetItemsProcessed(state.iterations() * std::int64_t(cloud.size()));
+  state.counters["particles"] = particles;
+  state.counters["pairs/s"] =
+      benchmark::Counter(pairs * double(state.iterations()), benchmark::Counter::kIsRate);
+  state.counters["neighbours"] = pairs / particles;
+  state.counters["wideNeighbours"] = double(wide.pairCount()) / particles;
+}
+
 void NeighbourListBuild(benchmark::State& state) { listBuild(state, false); }
 void NeighbourListBuildPeriodic(benchmark::State& state) { listBuild(state, true); }
 
@@ -102,5 +130,6 @@ void latticeSizes(benchmark::internal::Benchmark* benchmark) {
 BENCHMARK(CellGridBuildAndReorder)->Apply(latticeSizes);
 BENCHMARK(NeighbourListBuild)->Apply(latticeSizes);
 BENCHMARK(NeighbourListBuildPeriodic)->Apply(latticeSizes);
+BENCHMARK(NeighbourListFilter)->Apply(latticeSizes);
 
 }  // namespace

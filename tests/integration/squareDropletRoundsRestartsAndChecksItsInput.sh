@@ -83,6 +83,9 @@ grep -q "wallSlip slip" log.pairwise || fail "the log does not say the walls sli
 rm -rf 0.001
 expectError 's/^wallSlip        slip;/wallSlip        slippery;/' system/sphSchemes \
     "sphSchemes:[0-9]*:.*wallSlip"
+# the skin of the reused pair lists: a fraction of h in [0, 1]
+expectError 's/^wallSlip        slip;/neighbourListSkin -0.1;/' system/sphSchemes \
+    "sphSchemes:[0-9]*:.*'neighbourListSkin' (a fraction of the supportRadius) must lie in \[0, 1\]"
 
 # A speed of sound too low for the surface tension: a warning that names the speed to use.
 cp -r "$scratch/case" "$scratch/slow" && cd "$scratch/slow" || exit 1
@@ -91,4 +94,4 @@ setEntry system/controlDict endTime 0.001
 sphCastFoam > log.slow 2>&1 || fail "the slow case: $(tail -3 log.slow)"
 grep -q "compresses the surface layer by .* raise soundSpeed in system/sphSchemes" log.slow ||
     fail "no warning for a speed of sound too low for the surface tension"
-pass "squareDroplet: the square rounds (surfaceEnergy and continuumSurfaceForce), restart bit for bit, clear errors for bad surfaceTension input, pairwiseForce and wallSlip run"
+pass "squareDroplet: the square rounds (surfaceEnergy and continuumSurfaceForce), restart bit for bit, clear errors for bad surfaceTension and sphSchemes input, pairwiseForce and wallSlip run"

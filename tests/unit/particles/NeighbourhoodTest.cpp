@@ -1,11 +1,14 @@
 // The neighbourhood the models of a step share: one list per requested pair of clouds, equal to
 // a brute-force search; a moving cloud re-binned and reordered (its fields with it) at each
-// update, a fixed one never reordered; a list nobody asked for is an error naming the clouds.
+// rebuild, a fixed one never reordered; lists with a skin reused, and still equal to a
+// brute-force search, until particles may have closed in by the skin, or a cloud's layout
+// changed; a list nobody asked for is an error naming the clouds.
 #include "particles/Neighbourhood.h"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <limits>
 #include <random>
 #include <string>
 #include <vector>
@@ -137,6 +140,107 @@ TEST(NeighbourhoodTest, RigidCloudListsFollowItWhenItMoves) {
     EXPECT_EQ(punch.scalarField("label"), labels);  // never reordered
     for (Vector& x : punch.positions()) x += Vector(0.07, -0.05, 0.02);  // a rigid move
   }
+}
+
+// The minimum-image distance on the unit box's periodic axes.
+std::vector<std::uint32_t> bruteForcePeriodic(const ParticleCloud& a, std::size_t i,
+                                              const ParticleCloud& b, Real radius,
+                                              const PeriodicBox& box) {
+  std::vector<std::uint32_t> found;
+  for (std::size_t j = 0; j < b.size(); ++j) {
+    if (&a == &b && i == j) continue;
+    if (box.separation(a.positions()[i], b.positions()[j]).norm() < radius) {
+      found.push_back(static_cast<std::uint32_t>(j));
+    }
+  }
+  return found;
+}
+
+void expectBruteForce(const Neighbourhood& neighbourhood, const ParticleCloud& a,
+                      const ParticleCloud& b, const PeriodicBox& box) {
+  const NeighbourList& list = neighbourhood.pairs(a, b);
+  ASSERT_EQ(list.particleCount(), a.size());
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    std::vector<std::uint32_t> got(list.of(i).begin(), list.of(i).end());
+    std::sort(got.begin(), got.end());
+    ASSERT_EQ(got, bruteForcePeriodic(a, i, b, neighbourhood.radius(), box))
+        << a.name() << " particle " << i << " among " << b.name();
+  }
+}
+
+// Many small steps of a moving cloud beside a fixed and a rigid one, in a box periodic in
+// x: after every update each list is the brute-force one, whether it was searched or filtered;
+// most updates only filter; a particle added (a pour) or a non-finite position rebuilds.
+TEST(NeighbourhoodTest, ListsWithASkinStayExactWhileReused) {
+  ParticleCloud metal = randomCloud("metal", 500, 6);
+  ParticleCloud punch = randomCloud("punch", 150, 7);
+  ParticleCloud mold = randomCloud("mold", 200, 8);
+  for (Vector& x : punch.positions()) x[2] += Real(0.8);  // above, coming down
+  PeriodicBox box;
+  box.setPeriodic(0, 0, 1);
+  const Real h = Real(0.15), skin = Real(0.03);
+  Neighbourhood neighbourhood(h, box, skin);
+  EXPECT_EQ(neighbourhood.skin(), skin);
+  neighbourhood.addCloud(metal, Neighbourhood::Motion::moving);
+  neighbourhood.addCloud(punch, Neighbourhood::Motion::rigid);
+  neighbourhood.addFixedCloud(mold);
+  neighbourhood.requestPairs(metal, metal);
+  neighbourhood.requestPairs(metal, mold);
+  neighbourhood.requestPairs(mold, metal);
+  neighbourhood.requestPairs(metal, punch);
+  neighbourhood.requestPairs(punch, punch);
+  // each metal particle at its own constant velocity: head-on pairs close in as fast as the
+  // displacement test allows for, so a laxer test fails here
+  std::mt19937 random(9);
+  std::normal_distribution<Real> normal;
+  std::vector<Vector> velocity(metal.size());
+  for (Vector& v : velocity) v = Real(0.003) * Vector(normal(random), normal(random), normal(random)).normalized();
+  const auto expectAll = [&](int update) {
+    SCOPED_TRACE("update " + std::to_string(update));
+    expectBruteForce(neighbourhood, metal, metal, box);
+    expectBruteForce(neighbourhood, metal, mold, box);
+    expectBruteForce(neighbourhood, mold, metal, box);
+    expectBruteForce(neighbourhood, metal, punch, box);
+    expectBruteForce(neighbourhood, punch, punch, box);
+  };
+  constexpr int updates = 60;
+  for (int update = 0; update < updates; ++update) {
+    neighbourhood.update();
+    expectAll(update);
+    if (HasFatalFailure()) return;
+    for (std::size_t i = 0; i < metal.size(); ++i) {
+      // across the periodic face: a jump of a whole period
+      metal.positions()[i] = box.wrap(metal.positions()[i] + velocity[i]);
+    }
+    // the punch comes down, then rests (its lists only filtered, then not even that)
+    if (update < updates / 2) {
+      for (Vector& x : punch.positions()) x[2] -= Real(0.004);
+    }
+  }
+  EXPECT_GT(neighbourhood.reuseCount(), neighbourhood.rebuildCount());
+  EXPECT_GT(neighbourhood.rebuildCount(), 1u);
+
+  // a pour: a particle added lands in the lists at once
+  const std::size_t rebuildsBefore = neighbourhood.rebuildCount();
+  ParticleCloud poured = metal;
+  poured.resize(1);
+  poured.positions()[0] = metal.positions()[0] + Vector(Real(0.01), 0, 0);
+  metal.append(poured);
+  neighbourhood.update();
+  EXPECT_EQ(neighbourhood.rebuildCount(), rebuildsBefore + 1);
+  expectAll(updates);
+  // a position gone bad is not filtered away: the rebuild reports it
+  metal.positions()[3][1] = std::numeric_limits<Real>::quiet_NaN();
+  EXPECT_THROW(neighbourhood.update(), Error);
+}
+
+// A skin that a periodic axis cannot hold (period <= 2 (h + s)) is cut to fit.
+TEST(NeighbourhoodTest, ASkinIsCutToFitAPeriodicBox) {
+  PeriodicBox box;
+  box.setPeriodic(1, 0, Real(0.5));
+  const Neighbourhood neighbourhood(Real(0.15), box, Real(0.15));
+  EXPECT_NEAR(neighbourhood.skin(), 0.99 * 0.25 - 0.15, 1e-12);
+  EXPECT_THROW(Neighbourhood(Real(0.15), PeriodicBox(), Real(-0.01)), Error);
 }
 
 }  // namespace
