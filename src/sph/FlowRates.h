@@ -91,6 +91,35 @@ struct FluidPair {
                          Real viscosityI, Real viscosityJ, const Vector& shearVelocity,
                          const Vector& xij, Real r, const Vector& gradW,
                          const FlowConstants& constants, Real& densityRate, Vector& acceleration) {
+    const Shared shared = interfaceOf(i, j, massJ, xij, r, constants);
+    densityRate +=
+        Real(2) * i.density * shared.volumeJ * (i.velocity - shared.star.velocity).dot(gradW);
+    acceleration -= Real(2) * massJ * shared.star.pressure * shared.inverseDensities * gradW;
+    const Real harmonicViscosity = Real(2) * viscosityI * viscosityJ / (viscosityI + viscosityJ);
+    acceleration += Viscosity::template acceleration<Dim>(
+        massJ, harmonicViscosity, shared.inverseDensities, shearVelocity, xij, r, gradW,
+        constants.viscosityRegularisation);
+  }
+
+  // The density rate alone, the same bits as accumulate's: for frozen metal, which is held
+  // (its acceleration would be thrown away) but whose density the melt moving against it, and
+  // the pressure jumps, still change.
+  static void accumulateDensityRate(const InterfaceSide& i, const InterfaceSide& j, Real massJ,
+                                    const Vector& xij, Real r, const Vector& gradW,
+                                    const FlowConstants& constants, Real& densityRate) {
+    const Shared shared = interfaceOf(i, j, massJ, xij, r, constants);
+    densityRate +=
+        Real(2) * i.density * shared.volumeJ * (i.velocity - shared.star.velocity).dot(gradW);
+  }
+
+ private:
+  struct Shared {
+    InterfaceState star;
+    Real inverseDensities;  // 1 / (rho_i rho_j)
+    Real volumeJ;           // m_j / rho_j
+  };
+  static Shared interfaceOf(const InterfaceSide& i, const InterfaceSide& j, Real massJ,
+                            const Vector& xij, Real r, const FlowConstants& constants) {
     // -e_ij = -x_ij / r, one division for the three components
     const Vector towardsJ = r > Real(0) ? Vector((Real(-1) / r) * xij) : Vector::Zero();
     // p_i - p_j of the fluid at rest: rho g . x_ij (hydrostatic)
@@ -98,13 +127,7 @@ struct FluidPair {
     const InterfaceState star = Interface{}(i, j, towardsJ, constants.soundSpeed, restingJump);
     const Real inverseDensities = Real(1) / (i.density * j.density);
     // m_j / rho_j = m_j rho_i / (rho_i rho_j): the division is shared with the momentum terms
-    const Real volumeJ = massJ * i.density * inverseDensities;
-    densityRate += Real(2) * i.density * volumeJ * (i.velocity - star.velocity).dot(gradW);
-    acceleration -= Real(2) * massJ * star.pressure * inverseDensities * gradW;
-    const Real harmonicViscosity = Real(2) * viscosityI * viscosityJ / (viscosityI + viscosityJ);
-    acceleration += Viscosity::template acceleration<Dim>(
-        massJ, harmonicViscosity, inverseDensities, shearVelocity, xij, r, gradW,
-        constants.viscosityRegularisation);
+    return {star, inverseDensities, massJ * i.density * inverseDensities};
   }
 };
 

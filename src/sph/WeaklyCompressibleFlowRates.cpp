@@ -248,6 +248,9 @@ void WeaklyCompressibleFlow::computeRatesFor() {
       const Matrix correctionI = corrected ? correction[i] : Matrix::Identity();
       const Vector densityGradientI = diffusiveDensity ? densityGradient[i] : Vector::Zero();
       const Real viscousScale = artificialViscosity * restDensity[i] / rho[i];
+      // frozen metal near the melt: held, so only its density rate counts among fluid pairs
+      // (its wall pairs stay whole: a body's load includes them)
+      const bool densityOnly = wantsDensityRate && frozen && frozen[i] != 0 && !diffusive;
       Real xijX[chunk], xijY[chunk], xijZ[chunk], distance[chunk], gradientFactor[chunk];
       for (std::uint64_t first = fluidOffsets[i]; first < fluidOffsets[i + 1]; first += chunk) {
         const std::size_t pairs = std::min<std::uint64_t>(chunk, fluidOffsets[i + 1] - first);
@@ -273,9 +276,15 @@ void WeaklyCompressibleFlow::computeRatesFor() {
           // 0.5 (L_i + L_j) grad_i W_ij stays antisymmetric: momentum is conserved exactly
           const Vector pairGradW =
               corrected ? Vector(Real(0.5) * (correctionI * gradW + correction[j] * gradW)) : gradW;
-          FluidPair<Dim, Interface, Viscosity>::accumulate(self, {rho[j], p[j], v[j]}, mass[j], muI,
-                                                           mu[j], vi - v[j], xij, distance[n],
-                                                           pairGradW, constants, rate, accel);
+          if (densityOnly) {
+            FluidPair<Dim, Interface, Viscosity>::accumulateDensityRate(
+                self, {rho[j], p[j], v[j]}, mass[j], xij, distance[n], pairGradW, constants, rate);
+          } else {
+            FluidPair<Dim, Interface, Viscosity>::accumulate(self, {rho[j], p[j], v[j]}, mass[j],
+                                                             muI, mu[j], vi - v[j], xij,
+                                                             distance[n], pairGradW, constants,
+                                                             rate, accel);
+          }
           if (colourGradient) colour -= (pairVolume[j] * gradientFactor[n]) * xij;
           if (diffusive) {
             DeltaSPHPair::accumulate(rho[i], rho[j], densityGradientI,
