@@ -278,12 +278,17 @@ void NeighbourList::build(const std::vector<Vector>& positionsA,
 
 void NeighbourList::filterFrom(const NeighbourList& wide, const std::vector<Vector>& positionsA,
                                const std::vector<Vector>& positionsB, Real radius,
-                               const PeriodicBox& periodic) {
+                               const PeriodicBox& periodic, const std::uint8_t* movedA,
+                               const std::uint8_t* movedB) {
   const std::size_t count = positionsA.size();
   if (wide.particleCount() != count) {
     throw Error("NeighbourList: the wide list holds " + std::to_string(wide.particleCount()) +
                 " particles but the cloud has " + std::to_string(count));
   }
+  // the rows of the last filter, read before gatherBlocks overwrites them
+  const bool keepStill = movedA && movedB && offsets_.size() == count + 1;
+  const std::uint64_t* lastOffsets = offsets_.data();
+  const std::uint32_t* lastNeighbours = neighbours_.data();
   cutIntoBlocks(count);
   const std::size_t blocks = blockBegin_.size() - 1;
   const Real radiusSquared = radius * radius;
@@ -338,6 +343,19 @@ void NeighbourList::filterFrom(const NeighbourList& wide, const std::vector<Vect
     std::uint32_t* out = blockStorage_[b].data();
     std::size_t used = 0;
     for (std::size_t i = blockBegin_[b]; i < blockBegin_[b + 1]; ++i) {
+      if (keepStill && movedA[i] == 0) {
+        std::uint8_t anyMoved = 0;
+        for (std::uint64_t n = offsets[i]; n < offsets[i + 1]; ++n) {
+          anyMoved |= movedB[neighbours[n]];
+        }
+        if (anyMoved == 0) {
+          const std::uint64_t first = lastOffsets[i], last = lastOffsets[i + 1];
+          std::copy(lastNeighbours + first, lastNeighbours + last, out + used);
+          used += last - first;
+          counts_[i] = static_cast<std::uint32_t>(last - first);
+          continue;
+        }
+      }
       const Vector& xi = positionsA[i];
       const bool inside = plainInside && (xi.array() >= interiorLower.array()).all() &&
                           (xi.array() <= interiorUpper.array()).all();

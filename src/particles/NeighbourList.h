@@ -60,8 +60,12 @@ class NeighbourList {
   // closer than `radius` now, in wide's order: the list a search with `radius` would find,
   // without the search, as long as no pair has closed in by more than the skin since wide was
   // built (Neighbourhood checks that, and rebuilds instead for a non-finite position).
+  // With movedA and movedB (per particle, nonzero: moved since this list was last filtered from
+  // the same wide list), a row whose particle and wide neighbours all stayed keeps its pairs
+  // from then, without a distance: frozen metal and molds at rest cost a flag per pair.
   void filterFrom(const NeighbourList& wide, const std::vector<Vector>& positionsA,
-                  const std::vector<Vector>& positionsB, Real radius, const PeriodicBox& periodic);
+                  const std::vector<Vector>& positionsB, Real radius, const PeriodicBox& periodic,
+                  const std::uint8_t* movedA = nullptr, const std::uint8_t* movedB = nullptr);
 
   std::size_t particleCount() const { return offsets_.size() - 1; }
   std::size_t pairCount() const { return offsets_.back(); }

@@ -105,6 +105,11 @@ void Neighbourhood::update(CloudOrder order, bool rebuild) {
     filter();
     ++reuses_;
   }
+  if (skin_ > 0) {
+    for (Entry& entry : entries_) {
+      if (entry.movable) entry.lastPositions = entry.cloud->positions();
+    }
+  }
 }
 
 bool Neighbourhood::keptForever(const Pairs& pairs) const {
@@ -185,14 +190,37 @@ void Neighbourhood::rebuild(CloudOrder order) {
   }
 }
 
+// Between searches a list changes only in the rows where something moved: the rest keep their
+// pairs (NeighbourList::filterFrom), which in a casting's cooling, most of it frozen and held,
+// is most rows.
 void Neighbourhood::filter() {
+  flagMovedParticles();
   for (Pairs& pairs : pairs_) {
     if (keptForever(pairs)) continue;
     const Entry& a = entries_[pairs.a];
     const Entry& b = entries_[pairs.b];
     if (!a.movedNow && !b.movedNow) continue;
     pairs.list.filterFrom(pairs.wide, a.cloud->positions(), b.cloud->positions(), radius_,
-                          periodic_);
+                          periodic_, a.moved.data(), b.moved.data());
+  }
+}
+
+// Per particle, whether it moved since the last update: a moving cloud's compared bit for bit
+// (held frozen metal has exactly its old position), a rigid cloud's all or none, a fixed one's
+// none.
+void Neighbourhood::flagMovedParticles() {
+  for (Entry& entry : entries_) {
+    const std::vector<Vector>& x = entry.cloud->positions();
+    const std::size_t count = x.size();
+    if (!entry.movable || entry.lastPositions.size() != count) {
+      entry.moved.assign(count, entry.movedNow ? 1 : 0);
+      continue;
+    }
+    entry.moved.resize(count);
+    const Vector* last = entry.lastPositions.data();
+    std::uint8_t* moved = entry.moved.data();
+#pragma omp parallel for if (count > 32768)
+    for (std::size_t i = 0; i < count; ++i) moved[i] = x[i] != last[i] ? 1 : 0;
   }
 }
 

@@ -36,7 +36,9 @@ enum class CloudOrder {
 // new positions (a pass over its pairs, no cells), until two particles of a list may have closed
 // in by s since the rebuild: the largest displacement of one cloud's particles plus that of the
 // other's (twice the one within a cloud) reaching s. The filtered list is what a search with h
-// would give, in the wide list's order (Verlet's list with a skin; Verlet 1967). A rebuild also
+// would give, in the wide list's order (Verlet's list with a skin; Verlet 1967); a row whose
+// particle and wide neighbours all kept their positions bit for bit since the last update (held
+// frozen metal, a mold at rest) keeps its pairs without a distance. A rebuild also
 // comes with any change of a cloud's layout (particles added, removed or reordered by anyone
 // else), a non-finite position, or when the caller asks for one (the solver does before a write,
 // so that a restart, which rebuilds, reproduces the run bit for bit).
@@ -88,6 +90,8 @@ class Neighbourhood {
     std::vector<Vector> binnedPositions;  // at the last binning (moving and rigid clouds)
     std::uint64_t binnedLayout = 0;       // the cloud's layoutVersion() then
     std::vector<Vector> seenPositions;    // a rigid cloud's at the last update
+    std::vector<Vector> lastPositions;    // a moving cloud's at the last update
+    std::vector<std::uint8_t> moved;      // per particle: moved since the last update
   };
   struct Pairs {
     std::size_t a, b;     // entries
@@ -99,6 +103,7 @@ class Neighbourhood {
   bool rebuildDue();
   void rebuild(CloudOrder order);
   void filter();
+  void flagMovedParticles();
   // A rigid cloud's list with itself never changes (a rigid motion keeps every distance).
   bool keptForever(const Pairs& pairs) const;
 

@@ -61,6 +61,18 @@ void CellGridBuildAndReorder(benchmark::State& state) {
   state.counters["gridBytes/particle"] = double(grid.memoryBytes()) / double(cloud.size());
 }
 
+// Particles per second (items), pairs per second and neighbours per particle of a list made
+// once per iteration.
+void reportList(benchmark::State& state, const sphcast::NeighbourList& list) {
+  const double particles = double(list.particleCount());
+  const double pairs = double(list.pairCount());
+  state.SetItemsProcessed(state.iterations() * std::int64_t(list.particleCount()));
+  state.counters["particles"] = particles;
+  state.counters["pairs/s"] =
+      benchmark::Counter(pairs * double(state.iterations()), benchmark::Counter::kIsRate);
+  state.counters["neighbours"] = pairs / particles;
+}
+
 void listBuild(benchmark::State& state, bool periodic) {
   auto cloud = latticeCloud(state.range(0));
   sphcast::PeriodicBox box;
@@ -78,13 +90,9 @@ void listBuild(benchmark::State& state, bool periodic) {
     list.buildWithin(cloud.positions(), grid);
     benchmark::DoNotOptimize(list.neighbours().data());
   }
+  reportList(state, list);
   const double particles = double(cloud.size());
   const double pairs = double(list.pairCount());
-  state.SetItemsProcessed(state.iterations() * std::int64_t(cloud.size()));
-  state.counters["particles"] = particles;
-  state.counters["pairs/s"] =
-      benchmark::Counter(pairs * double(state.iterations()), benchmark::Counter::kIsRate);
-  state.counters["neighbours"] = pairs / particles;
   state.counters["listBytes/particle"] = double(list.memoryBytes()) / particles;
   state.counters["CSRBytes/particle"] = (double(list.offsets().size()) * 8 + pairs * 4) / particles;
 }
@@ -104,14 +112,8 @@ void NeighbourListFilter(benchmark::State& state) {
     list.filterFrom(wide, cloud.positions(), cloud.positions(), h, none);
     benchmark::DoNotOptimize(list.neighbours().data());
   }
-  const double particles = double(cloud.size());
-  const double pairs = double(list.pairCount());
-  state.SetItemsProcessed(state.iterations() * std::int64_t(cloud.size()));
-  state.counters["particles"] = particles;
-  state.counters["pairs/s"] =
-      benchmark::Counter(pairs * double(state.iterations()), benchmark::Counter::kIsRate);
-  state.counters["neighbours"] = pairs / particles;
-  state.counters["wideNeighbours"] = double(wide.pairCount()) / particles;
+  reportList(state, list);
+  state.counters["wideNeighbours"] = double(wide.pairCount()) / double(cloud.size());
 }
 
 void NeighbourListBuild(benchmark::State& state) { listBuild(state, false); }
