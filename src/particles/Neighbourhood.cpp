@@ -93,8 +93,8 @@ void Neighbourhood::update(CloudOrder order, bool rebuild) {
   for (Entry& entry : entries_) {
     entry.movedNow = entry.movable || !entry.binned;
     if (entry.moves && !entry.movable) {  // a rigid cloud: moved when its positions changed
-      const bool changed = entry.cloud->positions() != entry.seenPositions;
-      if (changed) entry.seenPositions = entry.cloud->positions();
+      const bool changed = entry.cloud->positions() != entry.lastPositions;
+      if (changed) entry.lastPositions = entry.cloud->positions();
       entry.movedNow = entry.movedNow || changed;
     }
   }

@@ -89,8 +89,9 @@ class Neighbourhood {
     bool movedNow = false;                // moved since the last update (a list to renew)
     std::vector<Vector> binnedPositions;  // at the last binning (moving and rigid clouds)
     std::uint64_t binnedLayout = 0;       // the cloud's layoutVersion() then
-    std::vector<Vector> seenPositions;    // a rigid cloud's at the last update
-    std::vector<Vector> lastPositions;    // a moving cloud's at the last update
+    // at the last update: a rigid cloud's tell whether it moved, a moving cloud's (with a skin)
+    // which of its particles moved
+    std::vector<Vector> lastPositions;
     std::vector<std::uint8_t> moved;      // per particle: moved since the last update
   };
   struct Pairs {
