@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
 #include <cstring>
 #include <exception>
@@ -285,22 +286,21 @@ void NeighbourList::filterFrom(const NeighbourList& wide, const std::vector<Vect
     throw Error("NeighbourList: the wide list holds " + std::to_string(wide.particleCount()) +
                 " particles but the cloud has " + std::to_string(count));
   }
-  // the rows of the last filter, read before gatherBlocks overwrites them
-  const bool keepStill = movedA && movedB && offsets_.size() == count + 1;
-  const std::uint64_t* lastOffsets = offsets_.data();
-  const std::uint32_t* lastNeighbours = neighbours_.data();
-  cutIntoBlocks(count);
-  const std::size_t blocks = blockBegin_.size() - 1;
+  // Each row is filtered into wide's room for it, so a row that stays needs no work at all.
+  // Rows kept from the last filter must be that filter's, from this same wide list (a search
+  // filters every row afresh: it passes no moved flags).
+  const bool keepStill = movedA && movedB && filteredRooms_ && offsets_.size() == count + 1 &&
+                         ends_.size() == count;
+  if (!keepStill) {
+    offsets_ = wide.offsets_;
+    ends_.resize(count);
+    neighbours_.resize(wide.pairCount());
+    filteredRooms_ = true;
+  }
   const Real radiusSquared = radius * radius;
   const std::uint64_t* offsets = wide.offsets_.data();
-  const std::uint32_t* neighbours = wide.neighbours_.data();
+  const std::uint32_t* wideNeighbours = wide.neighbours_.data();
   const Vector* xB = positionsB.data();
-  // a block never keeps more than the wide list holds for it: its buffer is grown here, before
-  // the parallel scan (where an allocation failure could not leave)
-  for (std::size_t b = 0; b < blocks; ++b) {
-    const std::size_t room = offsets[blockBegin_[b + 1]] - offsets[blockBegin_[b]];
-    if (blockStorage_[b].size() < room) blockStorage_[b].resize(room + room / 4 + 1024);
-  }
   // A row's pairs take the plain difference when x_i lies at least the radius inside every
   // periodic face and all of B lies in the box: then a j closer than the radius by the minimum
   // image is that close as it is (the ball around x_i lies in the box, where each point has
@@ -319,10 +319,12 @@ void NeighbourList::filterFrom(const NeighbourList& wide, const std::vector<Vect
       interiorUpper[a] = periodic.lower(a) + periodic.period(a) - margin;
     }
   }
-  auto keepCloser = [&](std::size_t i, std::uint32_t* out, std::size_t used, auto separation) {
+  std::uint32_t* out = neighbours_.data();
+  auto keepCloser = [&](std::size_t i, auto separation) {
     const Vector xi = positionsA[i];
+    std::uint64_t used = offsets[i];
     for (std::uint64_t n = offsets[i]; n < offsets[i + 1]; ++n) {
-      const std::uint32_t j = neighbours[n];
+      const std::uint32_t j = wideNeighbours[n];
       out[used] = j;
       used += separation(xi, xB[j]) < radiusSquared;
     }
@@ -338,34 +340,47 @@ void NeighbourList::filterFrom(const NeighbourList& wide, const std::vector<Vect
                dz = periodic.minimumImage(xi[2] - xj[2], 2);
     return dx * dx + dy * dy + dz * dz;
   };
-#pragma omp parallel for schedule(dynamic, 1) if (blocks > 1)
-  for (std::size_t b = 0; b < blocks; ++b) {
-    std::uint32_t* out = blockStorage_[b].data();
-    std::size_t used = 0;
-    for (std::size_t i = blockBegin_[b]; i < blockBegin_[b + 1]; ++i) {
-      if (keepStill && movedA[i] == 0) {
-        std::uint8_t anyMoved = 0;
-        for (std::uint64_t n = offsets[i]; n < offsets[i + 1]; ++n) {
-          anyMoved |= movedB[neighbours[n]];
-        }
-        if (anyMoved == 0) {
-          const std::uint64_t first = lastOffsets[i], last = lastOffsets[i + 1];
-          std::copy(lastNeighbours + first, lastNeighbours + last, out + used);
-          used += last - first;
-          counts_[i] = static_cast<std::uint32_t>(last - first);
-          continue;
-        }
+  // Which rows changed. Within one cloud without periodic axes the wide list is symmetric (j is
+  // i's wide neighbour exactly when i is j's: the same squared distance both ways), so the
+  // particles that moved mark their own rows and their wide neighbours' rows, at a cost of the
+  // rows that move; otherwise each still particle's row reads its wide neighbours' flags.
+  const bool byScatter = keepStill && &positionsA == &positionsB && !periodic.anyPeriodic();
+  if (byScatter) {
+    changedRows_.assign(count, 0);
+    std::uint8_t* changed = changedRows_.data();
+#pragma omp parallel for schedule(dynamic, 1024) if (count > 1024)
+    for (std::size_t i = 0; i < count; ++i) {
+      if (movedA[i] == 0) continue;
+      std::atomic_ref<std::uint8_t>(changed[i]).store(1, std::memory_order_relaxed);
+      for (std::uint64_t n = offsets[i]; n < offsets[i + 1]; ++n) {
+        std::atomic_ref<std::uint8_t>(changed[wideNeighbours[n]])
+            .store(1, std::memory_order_relaxed);
       }
-      const Vector& xi = positionsA[i];
-      const bool inside = plainInside && (xi.array() >= interiorLower.array()).all() &&
-                          (xi.array() <= interiorUpper.array()).all();
-      const std::size_t before = used;
-      used = inside ? keepCloser(i, out, used, plain) : keepCloser(i, out, used, minimumImage);
-      counts_[i] = static_cast<std::uint32_t>(used - before);
     }
-    blockUsed_[b] = used;
   }
-  gatherBlocks();
+  auto rowStill = [&](std::size_t i) {
+    if (!keepStill || movedA[i] != 0) return false;
+    if (byScatter) return changedRows_[i] == 0;
+    std::uint8_t anyMoved = 0;
+    for (std::uint64_t n = offsets[i]; n < offsets[i + 1]; ++n) {
+      anyMoved |= movedB[wideNeighbours[n]];
+    }
+    return anyMoved == 0;
+  };
+  std::uint64_t pairs = 0;
+#pragma omp parallel for schedule(dynamic, 1024) reduction(+ : pairs) if (count > 1024)
+  for (std::size_t i = 0; i < count; ++i) {
+    if (rowStill(i)) {
+      pairs += ends_[i] - offsets_[i];
+      continue;
+    }
+    const Vector& xi = positionsA[i];
+    const bool inside = plainInside && (xi.array() >= interiorLower.array()).all() &&
+                        (xi.array() <= interiorUpper.array()).all();
+    ends_[i] = inside ? keepCloser(i, plain) : keepCloser(i, minimumImage);
+    pairs += ends_[i] - offsets_[i];
+  }
+  pairCount_ = pairs;
 }
 
 // Contiguous blocks of i, several per thread so that clustered particles balance; the result
@@ -386,6 +401,9 @@ void NeighbourList::gatherBlocks() {
   offsets_.resize(count + 1);
   offsets_[0] = 0;
   for (std::size_t i = 0; i < count; ++i) offsets_[i + 1] = offsets_[i] + counts_[i];
+  ends_.assign(offsets_.begin() + 1, offsets_.end());
+  pairCount_ = offsets_[count];
+  filteredRooms_ = false;
   neighbours_.resize(offsets_[count]);
   const std::size_t blocks = blockBegin_.size() - 1;
 #pragma omp parallel for schedule(dynamic, 1) if (count > parallelThreshold)
@@ -398,9 +416,9 @@ void NeighbourList::gatherBlocks() {
 }
 
 std::size_t NeighbourList::memoryBytes() const {
-  std::size_t bytes = offsets_.capacity() * sizeof(std::uint64_t) +
+  std::size_t bytes = (offsets_.capacity() + ends_.capacity()) * sizeof(std::uint64_t) +
                       neighbours_.capacity() * sizeof(std::uint32_t) +
-                      counts_.capacity() * sizeof(std::uint32_t) +
+                      counts_.capacity() * sizeof(std::uint32_t) + changedRows_.capacity() +
                       (blockBegin_.capacity() + blockUsed_.capacity()) * sizeof(std::size_t);
   for (const auto& block : blockStorage_) bytes += block.capacity() * sizeof(std::uint32_t);
   return bytes;

@@ -16,10 +16,14 @@ namespace sphcast {
 // nothing to any kernel sum or gradient, since W and dW/dr vanish there. A is B for fluid-fluid
 // pairs (i itself left out), or another cloud, e.g. fluid A among wall B.
 //
-// Layout: compressed sparse rows.
-//   offsets()   : A.size() + 1 entries (uint64), offsets()[0] = 0,
-//   neighbours(): pairCount() entries (uint32 indices into B);
-//   the neighbours of i are neighbours()[offsets()[i] .. offsets()[i + 1]).
+// Layout: rows of uint32 indices into B, each in its own range of one array:
+//   offsets()   : A.size() + 1 entries (uint64), where each row's range begins,
+//   ends()      : A.size() entries (uint64), where each row ends,
+//   neighbours(): the indices; the neighbours of i are neighbours()[offsets()[i] .. ends()[i]).
+// A searched list is compressed sparse rows (ends()[i] == offsets()[i + 1]); a list filtered
+// from a wide one keeps the wide list's ranges, each row filling the start of its own, so that
+// a row that stays between filters is not touched (filterFrom). pairCount() counts the pairs in
+// the rows, not the room.
 // Within one i they come in B's cell order (ascending j once B is reordered by its grid), so the
 // pair loop reads B's fields almost sequentially. Each i owns its own range: a pair loop over i
 // under OpenMP writes only to i (gather), no atomics.
@@ -34,11 +38,12 @@ namespace sphcast {
 //
 // A pair loop (gather: each i writes only to itself, so it runs under OpenMP as it is):
 //   const auto& x = cloud.positions();
-//   const std::uint64_t* offsets = list.offsets().data();
+//   const std::uint64_t* begins = list.offsets().data();
+//   const std::uint64_t* ends = list.ends().data();
 //   const std::uint32_t* neighbours = list.neighbours().data();
 //   #pragma omp parallel for
 //   for (std::size_t i = 0; i < x.size(); ++i) {
-//     for (std::uint64_t n = offsets[i]; n < offsets[i + 1]; ++n) {
+//     for (std::uint64_t n = begins[i]; n < ends[i]; ++n) {
 //       const std::uint32_t j = neighbours[n];
 //       const Vector xij = periodic.separation(x[i], x[j]);  // minimum image
 //       const Real r = xij.norm();                          // 0 <= r < h
@@ -62,20 +67,22 @@ class NeighbourList {
   // built (Neighbourhood checks that, and rebuilds instead for a non-finite position).
   // With movedA and movedB (per particle, nonzero: moved since this list was last filtered from
   // the same wide list), a row whose particle and wide neighbours all stayed keeps its pairs
-  // from then, without a distance: frozen metal and molds at rest cost a flag per pair.
+  // from then where they are: frozen metal and molds at rest cost nothing within a cloud and a
+  // flag per wide pair between two.
   void filterFrom(const NeighbourList& wide, const std::vector<Vector>& positionsA,
                   const std::vector<Vector>& positionsB, Real radius, const PeriodicBox& periodic,
                   const std::uint8_t* movedA = nullptr, const std::uint8_t* movedB = nullptr);
 
   std::size_t particleCount() const { return offsets_.size() - 1; }
-  std::size_t pairCount() const { return offsets_.back(); }
+  std::size_t pairCount() const { return pairCount_; }
 
   const std::vector<std::uint64_t>& offsets() const { return offsets_; }
+  const std::vector<std::uint64_t>& ends() const { return ends_; }
   const std::vector<std::uint32_t>& neighbours() const { return neighbours_; }
 
   // The neighbours of particle i of A.
   std::span<const std::uint32_t> of(std::size_t i) const {
-    return {neighbours_.data() + offsets_[i], neighbours_.data() + offsets_[i + 1]};
+    return {neighbours_.data() + offsets_[i], neighbours_.data() + ends_[i]};
   }
 
   // Bytes the list holds now (capacity of offsets and neighbours plus the build buffers).
@@ -88,7 +95,11 @@ class NeighbourList {
   void gatherBlocks();
 
   std::vector<std::uint64_t> offsets_{0};
+  std::vector<std::uint64_t> ends_;
   std::vector<std::uint32_t> neighbours_;
+  std::size_t pairCount_ = 0;
+  bool filteredRooms_ = false;  // the rows lie in a wide list's ranges (filterFrom)
+  std::vector<std::uint8_t> changedRows_;  // filterFrom's rows to filter again, within a cloud
   std::vector<std::uint32_t> counts_;                     // per particle of A
   std::vector<std::vector<std::uint32_t>> blockStorage_;  // per block of i, only grows
   std::vector<std::size_t> blockUsed_;                    // entries of blockStorage_ in use

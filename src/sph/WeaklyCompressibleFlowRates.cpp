@@ -170,7 +170,8 @@ void WeaklyCompressibleFlow::computeRatesFor() {
   const Real artificialViscosity =
       diffusive ? settings_.deltaSPHViscosity * smoothingLength * settings_.soundSpeed : Real(0);
   const Vector* densityGradient = densityGradient_.data();
-  const std::uint64_t* fluidOffsets = fluidPairs().offsets().data();
+  const std::uint64_t* fluidBegins = fluidPairs().offsets().data();
+  const std::uint64_t* fluidEnds = fluidPairs().ends().data();
   const std::uint32_t* fluidNeighbours = fluidPairs().neighbours().data();
   // Frozen particles with no melt within two neighbour hops (solidified metal away from the
   // melt) have nothing to compute: no acceleration (they are held), and a density that only the
@@ -252,8 +253,8 @@ void WeaklyCompressibleFlow::computeRatesFor() {
       // (its wall pairs stay whole: a body's load includes them)
       const bool densityOnly = wantsDensityRate && frozen && frozen[i] != 0 && !diffusive;
       Real xijX[chunk], xijY[chunk], xijZ[chunk], distance[chunk], gradientFactor[chunk];
-      for (std::uint64_t first = fluidOffsets[i]; first < fluidOffsets[i + 1]; first += chunk) {
-        const std::size_t pairs = std::min<std::uint64_t>(chunk, fluidOffsets[i + 1] - first);
+      for (std::uint64_t first = fluidBegins[i]; first < fluidEnds[i]; first += chunk) {
+        const std::size_t pairs = std::min<std::uint64_t>(chunk, fluidEnds[i] - first);
         const std::uint32_t* neighbourJ = fluidNeighbours + first;
         auto geometryWith = [&](auto pairSeparation) {
           for (std::size_t n = 0; n < pairs; ++n) {
@@ -404,7 +405,8 @@ void WeaklyCompressibleFlow::computeRates(RatePart part) {
 // 1 for melt and the frozen particles it reaches that way (computeRatesFor skips the others).
 void WeaklyCompressibleFlow::markFrozenNearMelt() {
   const auto& frozen = fluid_.scalarField("frozen");
-  const std::uint64_t* offsets = fluidPairs().offsets().data();
+  const std::uint64_t* begins = fluidPairs().offsets().data();
+  const std::uint64_t* ends = fluidPairs().ends().data();
   const std::uint32_t* neighbours = fluidPairs().neighbours().data();
   const std::size_t count = frozen.size();
   frozenTouchesMelt_.assign(count, 0);
@@ -412,7 +414,7 @@ void WeaklyCompressibleFlow::markFrozenNearMelt() {
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < count; ++i) {
     bool touches = frozen[i] == 0;
-    for (std::uint64_t k = offsets[i]; k < offsets[i + 1] && !touches; ++k) {
+    for (std::uint64_t k = begins[i]; k < ends[i] && !touches; ++k) {
       touches = frozen[neighbours[k]] == 0;
     }
     frozenTouchesMelt_[i] = touches ? 1 : 0;
@@ -420,7 +422,7 @@ void WeaklyCompressibleFlow::markFrozenNearMelt() {
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < count; ++i) {
     bool near = frozenTouchesMelt_[i] != 0;
-    for (std::uint64_t k = offsets[i]; k < offsets[i + 1] && !near; ++k) {
+    for (std::uint64_t k = begins[i]; k < ends[i] && !near; ++k) {
       near = frozenTouchesMelt_[neighbours[k]] != 0;
     }
     frozenNearMelt_[i] = near ? 1 : 0;
