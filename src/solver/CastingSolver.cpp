@@ -145,7 +145,7 @@ void CastingSolver::evolveCooling(double deltaT) {
   heatStepInPlace(deltaT);
   for (int k = 0; k < solidificationSetup_.cooling->flowStepsPerHeatStep; ++k) {
     std::string limiter;
-    const double flowDeltaT = flow_->stepLimits(time_.settings().maxCo).smallest(limiter);
+    const double flowDeltaT = flow_->stepLimits(coolingMaxCo()).smallest(limiter);
     if (!(flowDeltaT > 0) || !std::isfinite(flowDeltaT)) {
       std::ostringstream problem;
       problem << "the flow's stable step (" << limiter << ") is " << flowDeltaT;
@@ -161,6 +161,11 @@ void CastingSolver::evolveCooling(double deltaT) {
     ++flowSubSteps_;
     lastFlowSubStep_ = flowDeltaT;
   }
+}
+
+double CastingSolver::coolingMaxCo() const {
+  const double own = solidificationSetup_.cooling ? solidificationSetup_.cooling->maxCo : 0;
+  return own > 0 ? own : time_.settings().maxCo;
 }
 
 // Enters the cooling mode when the melt is still (max|U| below stillSpeed), leaves it when the
@@ -206,7 +211,8 @@ void CastingSolver::updateCoolingMode() {
     flushPendingHeat();
     info() << "Cooling from time " << time_.timeName() << ": the melt is still (max|U| "
            << fastest << " m/s < " << cooling.stillSpeed << "): steps of the heat's length, each "
-           << "followed by " << cooling.flowStepsPerHeatStep << " acoustic flow steps\n\n";
+           << "followed by " << cooling.flowStepsPerHeatStep << " acoustic flow steps (maxCo "
+           << coolingMaxCo() << ")\n\n";
   } else {
     info() << "Cooling paused at time " << time_.timeName() << ": ";
     if (!bodyMoves.empty()) {

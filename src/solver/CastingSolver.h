@@ -85,6 +85,7 @@ class CastingSolver {
   void writeBodyHistory();
   void logBodies();
   void updateCoolingMode();
+  double coolingMaxCo() const;  // the cooling mode's flow steps' Courant number
   void evolveCooling(double deltaT);
   bool heatStepsWithFlow(double deltaT);
   void flushPendingHeat();

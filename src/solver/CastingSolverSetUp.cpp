@@ -326,10 +326,11 @@ void CastingSolver::setUpSolidification() {
     const FlowSettings& flow = flowSetup_.settings;
     const double spacing = fluid_->attributes().at("spacing");
     // 0.9 of the viscosity whose explicit limit 0.125 dx^2 rho / mu is the acoustic step
-    // maxCo dx / c (SolidificationSetup.h)
+    // maxCo dx / c, the longer of controlDict's and the cooling mode's (SolidificationSetup.h)
     const double liquidDensity = (*material.density)(material.freezingRange->liquidus);
-    settings.viscosityLimit = static_cast<Real>(0.9 * 0.125 * liquidDensity * spacing *
-                                                flow.soundSpeed / time_.settings().maxCo);
+    const double maxCo = std::max(time_.settings().maxCo, coolingMaxCo());
+    settings.viscosityLimit =
+        static_cast<Real>(0.9 * 0.125 * liquidDensity * spacing * flow.soundSpeed / maxCo);
   }
   solidification_ = std::make_unique<Solidification>(settings, material, metal);
   neighbourhood_->requestPairs(metal, metal);  // for G at T_c (recordCriticalGradients)

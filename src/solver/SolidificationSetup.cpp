@@ -79,13 +79,20 @@ SolidificationSetup readSolidificationSetup(const CaseFolder& caseFolder, const 
   setup.endWhenSolid = dict.getChoiceOrDefault("endWhenSolid", {"yes", "no"}, "no") == "yes";
   if (dict.found("cooling")) {
     const Dictionary& cooling = dict.subDict("cooling");
-    cooling.checkKeys({"flowStepsPerHeatStep", "stillSpeed", "movingSpeed"});
+    cooling.checkKeys({"flowStepsPerHeatStep", "maxCo", "stillSpeed", "movingSpeed"});
     CoolingAcceleration acceleration;
     acceleration.flowStepsPerHeatStep =
         cooling.getOrDefault<int>("flowStepsPerHeatStep", acceleration.flowStepsPerHeatStep);
     if (acceleration.flowStepsPerHeatStep < 1) {
       throw DictionaryError(cooling.location("flowStepsPerHeatStep"),
                             "'flowStepsPerHeatStep' must be at least 1 in " + cooling.name());
+    }
+    if (cooling.found("maxCo")) {
+      acceleration.maxCo = cooling.get<double>("maxCo", dimensionless);
+      if (!(acceleration.maxCo > 0 && acceleration.maxCo <= 1)) {
+        throw DictionaryError(cooling.location("maxCo"),
+                              "'maxCo' must be in (0, 1] in " + cooling.name());
+      }
     }
     if (cooling.found("stillSpeed")) {
       acceleration.stillSpeed = cooling.get<double>("stillSpeed", speed);

@@ -26,6 +26,8 @@ namespace sphcast {
 //       cooling                           // optional: once the melt is still, steps of the
 //       {                                 // heat's stable length, each followed by
 //           flowStepsPerHeatStep 10;      // this many flow steps of the acoustic length
+//           maxCo                0.25;    // their Courant number c dt / dx, in (0, 1];
+//                                         // controlDict's maxCo by default
 //           stillSpeed           0.02;    // m/s: cooling starts once max|U| of the melt is
 //                                         // below this
 //           movingSpeed          0.5;     // m/s: back to every acoustic step above this (a
@@ -39,11 +41,16 @@ namespace sphcast {
 // plates, cooling curves) it computes f_s, rho_s and the solidification history, and cooling and
 // cavitationPressure are errors. The solver caps the mush's viscosity at 0.9 times the
 // acoustic step's viscous limit, 0.9 x 0.125 rho_s(T_liq) dx c / maxCo (0.9: melt a few per cent
-// lighter than rho_s(T_liq), in a cavity, still steps at the acoustic limit).
+// lighter than rho_s(T_liq), in a cavity, still steps at the acoustic limit), with the larger of
+// controlDict's maxCo and the cooling mode's.
 // Cooling to the end in fewer steps (CastingSolver::evolveCooling): the flow's time runs
-// slower than the heat's by heat step / (flowStepsPerHeatStep acoustic steps).
+// slower than the heat's by heat step / (flowStepsPerHeatStep acoustic steps). What feeds the
+// shrinkage is the flow time per heat step, flowStepsPerHeatStep x maxCo dx / c: a still melt
+// takes it in fewer, longer steps with the same result (doc/physics.md §10.5), where a moving
+// one (pouring, an impact) needs controlDict's shorter steps.
 struct CoolingAcceleration {
   int flowStepsPerHeatStep = 10;
+  double maxCo = 0;          // 0: controlDict's maxCo
   double stillSpeed = 0.02;  // m/s
   double movingSpeed = 0.5;  // m/s
 };

@@ -4,7 +4,8 @@
 # cooled to the end in the cooling mode (heat steps with ten flow steps each) and stopped by
 # endWhenSolid (the log's ETA following the solid fraction). T stays within [300, 970] K, nothing passes the mold, frozen particles do not
 # move, a restart in the cooling mode reproduces the uninterrupted run bit for bit, and bad
-# solidification input stops with file, line and key.
+# solidification input (a frozen fraction, the cooling mode's maxCo, a material without a
+# freezing range) stops with file, line and key.
 . "$SPHCAST_TEST_TOOLS"
 
 makeCup() {  # DIR
@@ -86,6 +87,11 @@ if sphCastFoam > log.bad 2>&1; then fail "frozenSolidFraction 1.5 ran"; fi
 grep -q "physicsModels:[0-9]*:[0-9]*: 'frozenSolidFraction' must lie in (0, 1]" log.bad ||
     { cat log.bad >&2; fail "no clear error for frozenSolidFraction 1.5"; }
 sed -i 's/frozenSolidFraction 1.5;/frozenSolidFraction 0.5;/' constant/physicsModels
+sed -i 's/flowStepsPerHeatStep 10;/flowStepsPerHeatStep 10; maxCo 1.5;/' constant/physicsModels
+if sphCastFoam > log.bad 2>&1; then fail "the cooling mode's maxCo 1.5 ran"; fi
+grep -q "physicsModels:[0-9]*:[0-9]*: 'maxCo' must be in (0, 1]" log.bad ||
+    { cat log.bad >&2; fail "no clear error for the cooling mode's maxCo 1.5"; }
+sed -i 's/ maxCo 1.5;//' constant/physicsModels
 sed -i 's/^metal .*/metal { density 2400; viscosity 1e-3; conductivity 90; specificHeat 900; }/' \
     constant/physicalProperties
 if sphCastFoam > log.bad 2>&1; then fail "a material without a freezing range ran"; fi
