@@ -15,5 +15,12 @@ copyTutorial conicalMold
 PYTHON=$python ./Allrun > log.Allrun 2>&1 || { cat log.Allrun >&2; fail "conicalMold: Allrun"; }
 cat log.compareWithReference
 grep -q "^Run health: no warnings" log.sphCastFoam || fail "health warnings in the cone"
+# the cooling mode's flow steps take its own maxCo (0.625), not controlDict's (0.25): at most
+# 0.625 dx / c = 5.625e-05 s at c = 50 m/s and dx = 4.5 mm (less by the melt's |U| / c, below
+# 1 % in the mode, where |U| < movingSpeed = 0.5 m/s), on every log line of the mode
+awk '/cooling: heat steps of/ { n++; step = $0; sub(/.*\(the last /, "", step); sub(/ s\).*/, "", step); step += 0
+                                if (step < 5.625e-5 * 0.99 || step > 5.625e-5 * 1.000001) bad = step }
+     END { if (bad != "") print "a flow step of " bad " s"; exit (n == 0 || bad != "") }' \
+    log.sphCastFoam || fail "the cooling mode's flow steps are not 0.625 dx / c"
 "$python" compareWithReference --check > /dev/null || fail "the cone against the reference"
 pass "conicalMold solidifies, feeds its shrinkage and leaves its sink as the reference does"
