@@ -6,7 +6,8 @@
 # 10 % of the share the reference's feeding draws (4.9 % and 4.9 %), the sink's mean distance
 # from the reference's funnel, r = 0 to 40 mm, below 0.5 mm (0.34 mm), the last particles to
 # freeze within a quarter of the top's radius of the axis and a tenth of the height of the top
-# there. With the cavitation floor at 0 instead of -5,000 Pa the melt feeds by gravity alone and
+# there; the cooling mode's flow steps are of its own maxCo (0.625, not controlDict's 0.25).
+# With the cavitation floor at 0 instead of -5,000 Pa the melt feeds by gravity alone and
 # fails: 2.9 % lost, the sink 0.92 mm off.
 . "$SPHCAST_TEST_TOOLS"
 findVtkPython
