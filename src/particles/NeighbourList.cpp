@@ -289,8 +289,7 @@ void NeighbourList::filterFrom(const NeighbourList& wide, const std::vector<Vect
   // Each row is filtered into wide's room for it, so a row that stays needs no work at all.
   // Rows kept from the last filter must be that filter's, from this same wide list (a search
   // filters every row afresh: it passes no moved flags).
-  const bool keepStill = movedA && movedB && filteredRooms_ && offsets_.size() == count + 1 &&
-                         ends_.size() == count;
+  const bool keepStill = movedA && movedB && filteredRooms_ && offsets_.size() == count + 1;
   if (!keepStill) {
     offsets_ = wide.offsets_;
     ends_.resize(count);

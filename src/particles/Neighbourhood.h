@@ -38,7 +38,7 @@ enum class CloudOrder {
 // other's (twice the one within a cloud) reaching s. The filtered list is what a search with h
 // would give, in the wide list's order (Verlet's list with a skin; Verlet 1967); a row whose
 // particle and wide neighbours all kept their positions bit for bit since the last update (held
-// frozen metal, a mold at rest) keeps its pairs without a distance. A rebuild also
+// frozen metal, a mold at rest) keeps its pairs where they are, untouched. A rebuild also
 // comes with any change of a cloud's layout (particles added, removed or reordered by anyone
 // else), a non-finite position, or when the caller asks for one (the solver does before a write,
 // so that a restart, which rebuilds, reproduces the run bit for bit).
