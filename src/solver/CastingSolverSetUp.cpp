@@ -202,7 +202,8 @@ void CastingSolver::setUpFlow() {
   info() << "Flow: weakly compressible SPH (" << settings.dimension << "D), densityScheme "
          << settings.densityScheme << ", kernelCorrection "
          << (settings.kernelCorrection ? "on" : "off") << ", viscousForm " << settings.viscousForm
-         << ", wallSlip " << (settings.slipWalls ? "slip" : "noSlip")
+         << ", wallSlip " << (settings.slipWalls ? "slip" : "noSlip") << ", wallDissipation "
+         << (settings.wallDissipationNormalApproach ? "normalApproach" : "relativeVelocity")
          << ", h = " << settings.supportRadius << " m, c = " << settings.soundSpeed << " m/s\n"
          << "    pair lists: searched with h + " << neighbourhood_->skin()
          << " m, reused until particles may have closed in by that skin\n"

@@ -88,7 +88,7 @@ FlowSetup readFlowSetup(const CaseFolder& caseFolder, const std::optional<Vector
 
   const Dictionary schemes = Dictionary::read(caseFolder.systemFile("sphSchemes"));
   schemes.checkKeys({"densityScheme", "kernelCorrection", "viscousForm", "wallSlip",
-                     "supportRadius", "soundSpeed", "deltaSPHCoeffs", "wallClearance",
+                     "wallDissipation", "supportRadius", "soundSpeed", "deltaSPHCoeffs", "wallClearance",
                      "neighbourListSkin"});
   FlowSettings& settings = setup.settings;
   settings.densityScheme = schemes.getChoice("densityScheme", {"riemann", "standard", "deltaSPH"});
@@ -97,6 +97,9 @@ FlowSetup readFlowSetup(const CaseFolder& caseFolder, const std::optional<Vector
   settings.viscousForm = schemes.getChoice("viscousForm", {"Morris", "Cleary"});
   settings.slipWalls =
       schemes.getChoiceOrDefault("wallSlip", {"noSlip", "slip"}, "noSlip") == "slip";
+  settings.wallDissipationNormalApproach =
+      schemes.getChoiceOrDefault("wallDissipation", {"relativeVelocity", "normalApproach"},
+                                 "relativeVelocity") == "normalApproach";
   settings.supportRadius = positive<Real>(schemes, "supportRadius", length);
   setup.supportRadiusAt = schemes.location("supportRadius");
   settings.soundSpeed = positive<Real>(schemes, "soundSpeed", speed);

@@ -28,8 +28,14 @@ struct ArithmeticMeanInterface {
   // (accumulateWallPair says why deltaSPH does and the others do not)
   static constexpr bool fluidTensionAtWalls = false;
   InterfaceState operator()(const InterfaceSide& left, const InterfaceSide& right,
-                            const Vector& /*towardsRight*/, Real /*soundSpeed*/,
-                            Real /*restingJump*/ = 0) const {
+                            const Vector& towardsRight, Real soundSpeed,
+                            Real restingJump = 0) const {
+    return withCompression(left, right, towardsRight, 0, soundSpeed, restingJump);
+  }
+  // the same with the compression given (no dissipation here to take it)
+  InterfaceState withCompression(const InterfaceSide& left, const InterfaceSide& right,
+                                 const Vector& /*towardsRight*/, Real /*compression*/,
+                                 Real /*soundSpeed*/, Real /*restingJump*/ = 0) const {
     return {Real(0.5) * (left.pressure + right.pressure),
             Real(0.5) * (left.velocity + right.velocity)};
   }
@@ -63,10 +69,18 @@ struct AcousticRiemannInterface {
   InterfaceState operator()(const InterfaceSide& left, const InterfaceSide& right,
                             const Vector& towardsRight, Real soundSpeed,
                             Real restingJump = 0) const {
-    const Real uLeft = left.velocity.dot(towardsRight);
-    const Real uRight = right.velocity.dot(towardsRight);
+    // U_L - U_R, > 0 when the pair closes in
+    const Real compression =
+        left.velocity.dot(towardsRight) - right.velocity.dot(towardsRight);
+    return withCompression(left, right, towardsRight, compression, soundSpeed, restingJump);
+  }
+
+  // The same with U_L - U_R given: at a wall it is the approach along the wall's normal
+  // (FlowRates.h, accumulateWallPair), not along the pair line.
+  InterfaceState withCompression(const InterfaceSide& left, const InterfaceSide& right,
+                                 const Vector& towardsRight, Real compression, Real soundSpeed,
+                                 Real restingJump = 0) const {
     const Real meanDensity = Real(0.5) * (left.density + right.density);
-    const Real compression = uLeft - uRight;  // > 0 when the pair closes in
     // beta rho_mean c, with beta = min(eta max(U_L - U_R, 0) / c, 1)
     const Real limitedImpedance =
         meanDensity * std::min(limiterSlope * std::max(compression, Real(0)), soundSpeed);

@@ -33,6 +33,10 @@ struct FlowSettings {
   // wallSlip in system/sphSchemes: noSlip (false, the default) or slip (true): the walls hold
   // no viscous shear, the fluid slides along them (FlowRates.h, accumulateWallPair)
   bool slipWalls = false;
+  // wallDissipation in system/sphSchemes: relativeVelocity (false, the default) or
+  // normalApproach (true): the wall pairs' dissipation sees only the fluid's approach to the
+  // wall, not its sliding along it (FlowRates.h, accumulateWallPair)
+  bool wallDissipationNormalApproach = false;
   // neighbourListSkin in system/sphSchemes: the skin of the reused pair lists as a fraction of
   // h (particles/Neighbourhood.h); 0 searches the cells at every step.
   Real neighbourListSkin = Real(0.1);

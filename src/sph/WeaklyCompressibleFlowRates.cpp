@@ -311,15 +311,17 @@ void WeaklyCompressibleFlow::computeRatesFor() {
           Vector& target = wall.loadForce ? pairAcceleration : accel;
           accumulateWallPair<Dim, Interface, Viscosity>(
               self, muI, particle, halfSpacing, xik, r,
-              corrected ? Vector(correctionI * gradW) : gradW, constants, settings_.slipWalls, rate,
-              target);
+              corrected ? Vector(correctionI * gradW) : gradW, constants, settings_.slipWalls,
+              settings_.wallDissipationNormalApproach, rate, target);
           if (diffusive) {
             // deltaSPH's artificial viscosity against the mirror velocity 2 v_wall - v_i:
             // without it a means interface has no dissipation at an impact on a wall
             const Real etaSquared = constants.viscosityRegularisation;
-            // (a slip wall: against the normal part of the relative velocity only)
+            // (a slip wall, or wallDissipation normalApproach: against the normal part of the
+            // relative velocity only; against the whole of it this is a shear viscosity of
+            // order alpha h c / 10, hundreds of times water's, held at the wall)
             const Vector relative =
-                settings_.slipWalls
+                settings_.slipWalls || settings_.wallDissipationNormalApproach
                     ? Vector((vi - wallVelocity).dot(wall.normal[k]) * wall.normal[k])
                     : Vector(vi - wallVelocity);
             target += (viscousScale * wall.volume[k] * Real(2) * relative.dot(xik) /

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include "sph/EquationOfState.h"
 
 namespace sphcast {
@@ -79,6 +81,31 @@ TEST(AcousticRiemannInterface, SwappingTheSidesGivesTheSameInterface) {
   const auto ba = AcousticRiemannInterface{}(b, a, -towardsRight, c);
   EXPECT_DOUBLE_EQ(ab.pressure, ba.pressure);
   EXPECT_NEAR((ab.velocity - ba.velocity).norm(), 0, 1e-15);
+}
+
+// A wall pair's dissipation takes the compression it is given (the normal approach) in place of
+// the pair line's: a fluid particle sliding along a wall at 2 m/s against its mirror (2 v_wall
+// - v_i = -v_i) along an oblique pair line at 45 degrees compresses that line by 2 sqrt(2) m/s,
+// and the limiter adds rho min(3 U, c) U / 2 to the pressure, a drag; given the normal
+// approach, 0, it adds nothing, and given an approach U it adds rho min(3 U, c) U / 2.
+TEST(AcousticRiemannInterface, AGivenCompressionReplacesThePairLines) {
+  const Vector slide(2, 0, 0);
+  const InterfaceSide fluid{2400, 1000, slide};
+  const InterfaceSide mirror{2400, 1000, -slide};
+  const Vector oblique = Vector(1, 0, -1).normalized();
+  const Real alongLine = 2 * slide.dot(oblique);
+  const auto fromLine = AcousticRiemannInterface{}(fluid, mirror, oblique, c);
+  EXPECT_NEAR(fromLine.pressure, 1000 + 0.5 * 2400 * std::min(3 * alongLine, c) * alongLine,
+              1e-9);
+  const auto sliding =
+      AcousticRiemannInterface{}.withCompression(fluid, mirror, oblique, 0, c);
+  EXPECT_DOUBLE_EQ(sliding.pressure, 1000);
+  const Real approach = 0.4;
+  const auto approaching =
+      AcousticRiemannInterface{}.withCompression(fluid, mirror, oblique, approach, c);
+  EXPECT_NEAR(approaching.pressure, 1000 + 0.5 * 2400 * (3 * approach) * approach, 1e-9);
+  // the velocity does not depend on it
+  EXPECT_NEAR((sliding.velocity - fromLine.velocity).norm(), 0, 1e-15);
 }
 
 TEST(ArithmeticMeanInterface, IsStandardSph) {
