@@ -88,8 +88,8 @@ FlowSetup readFlowSetup(const CaseFolder& caseFolder, const std::optional<Vector
 
   const Dictionary schemes = Dictionary::read(caseFolder.systemFile("sphSchemes"));
   schemes.checkKeys({"densityScheme", "kernelCorrection", "viscousForm", "wallSlip",
-                     "wallDissipation", "supportRadius", "soundSpeed", "deltaSPHCoeffs", "wallClearance",
-                     "neighbourListSkin"});
+                     "wallDissipation", "supportRadius", "soundSpeed", "deltaSPHCoeffs",
+                     "wallClearance", "neighbourListSkin"});
   FlowSettings& settings = setup.settings;
   settings.densityScheme = schemes.getChoice("densityScheme", {"riemann", "standard", "deltaSPH"});
   settings.kernelCorrection =

@@ -107,7 +107,6 @@ struct FluidPair {
                    acceleration);
   }
 
-
   // The density rate alone, the same bits as accumulate's: for frozen metal, which is held
   // (its acceleration would be thrown away) but whose density the melt moving against it, and
   // the pressure jumps, still change.
@@ -200,9 +199,9 @@ struct WallParticle {
 
 // slip takes the wall's viscous shear away (wallSlip slip in system/sphSchemes): the
 // fluid slides along the wall held back only by the interface's dissipation along oblique pairs
-// (none with normalApproach). The mirror velocity stays the full 2 v_wall - v_i: reflecting only its normal part (a free
-// slip) left no resistance along pair lines towards a neighbouring face, and in crossDitchPress's
-// pour a particle went 0.66 dx through the mold at 0.156 s.
+// (none with normalApproach). The mirror velocity stays the full 2 v_wall - v_i: reflecting
+// only its normal part (a free slip) left no resistance along pair lines towards a neighbouring
+// face, and in crossDitchPress's pour a particle went 0.66 dx through the mold at 0.156 s.
 // normalApproach (wallDissipation normalApproach in system/sphSchemes): the interface's
 // dissipation sees only the fluid's approach to the wall, below.
 template <int Dim, class Interface, class Viscosity>
@@ -242,11 +241,11 @@ inline void accumulateWallPair(const InterfaceSide& i, Real viscosityI, const Wa
   // normalApproach: U_L - U_R along the pair line from the normal part of the relative velocity,
   // 2 ((v_i - v_wall) . n)(n . (-e_ik)), the compression a free-slip mirror would give (its sign
   // does not depend on n's); continuity keeps the whole mirror velocity. The dam break's front
-  // is then 2.3 / 0.6 / 0.7 % RMS from the converged one at a/dx = 10 / 20 / 40. Zhang, Hu & Adams (2017) §3.3 and
-  // SPHinXsys take 2 (v_i - v_wall) . n for every pair: the same fronts, but a splash into a
-  // box's concave edge reached 20 % density deviation (12 % with this form, 10 % with
-  // relativeVelocity) and a particle went 0.52 dx into a small lid's corner, whose corner
-  // particles carry a side face's normal (tests/integration/curvedWallsHoldTheMetal.sh,
+  // is then 2.3 / 0.6 / 0.7 % RMS from the converged one at a/dx = 10 / 20 / 40. Zhang, Hu &
+  // Adams (2017) §3.3 and SPHinXsys take 2 (v_i - v_wall) . n for every pair: the same fronts,
+  // but a splash into a box's concave edge reached 20 % density deviation (12 % with this form,
+  // 10 % with relativeVelocity) and a particle went 0.52 dx into a small lid's corner, whose
+  // corner particles carry a side face's normal (tests/integration/curvedWallsHoldTheMetal.sh,
   // coolingModeWaitsForABodysRelease.sh).
   const Real wallCompression =
       r > Real(0) ? Real(-2) * relative.dot(k.normal) * k.normal.dot(xik) / r : Real(0);

@@ -75,8 +75,9 @@ struct AcousticRiemannInterface {
     return withCompression(left, right, towardsRight, compression, soundSpeed, restingJump);
   }
 
-  // The same with U_L - U_R given: at a wall it is the approach along the wall's normal
-  // (FlowRates.h, accumulateWallPair), not along the pair line.
+  // The same with U_L - U_R given: a wall pair with wallDissipation normalApproach gives the
+  // compression of the normal part of the relative velocity only (FlowRates.h,
+  // accumulateWallPair).
   InterfaceState withCompression(const InterfaceSide& left, const InterfaceSide& right,
                                  const Vector& towardsRight, Real compression, Real soundSpeed,
                                  Real restingJump = 0) const {
