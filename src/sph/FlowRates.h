@@ -86,25 +86,22 @@ struct MorrisViscosity {
 template <int Dim, class Interface, class Viscosity>
 struct FluidPair {
   // shearVelocity is v_ij of the viscous term: v_i - v_j between fluid particles, and the
-  // wall's extrapolated difference for a wall particle (accumulateWallPair).
+  // wall's extrapolated difference for a wall particle (accumulateWallPair). wallCompression,
+  // when given, is the U_L - U_R a wall pair's interface dissipates in place of the pair line's
+  // (wallDissipation normalApproach, accumulateWallPair).
   static void accumulate(const InterfaceSide& i, const InterfaceSide& j, Real massJ,
                          Real viscosityI, Real viscosityJ, const Vector& shearVelocity,
                          const Vector& xij, Real r, const Vector& gradW,
-                         const FlowConstants& constants, Real& densityRate, Vector& acceleration) {
-    accumulateWith(interfaceOf(i, j, massJ, xij, r, constants, nullptr), i, massJ, viscosityI,
-                   viscosityJ, shearVelocity, xij, r, gradW, constants, densityRate, acceleration);
-  }
-
-  // The same for a wall's mirror particle j, whose interface dissipates what the fluid's
-  // approach to the wall compresses, `wallCompression` (accumulateWallPair).
-  static void accumulateAgainstWall(const InterfaceSide& i, const InterfaceSide& j,
-                                    Real wallCompression, Real massJ, Real viscosityI,
-                                    const Vector& shearVelocity, const Vector& xij, Real r,
-                                    const Vector& gradW, const FlowConstants& constants,
-                                    Real& densityRate, Vector& acceleration) {
-    accumulateWith(interfaceOf(i, j, massJ, xij, r, constants, &wallCompression), i, massJ,
-                   viscosityI, viscosityI, shearVelocity, xij, r, gradW, constants, densityRate,
-                   acceleration);
+                         const FlowConstants& constants, Real& densityRate, Vector& acceleration,
+                         const Real* wallCompression = nullptr) {
+    const Shared shared = interfaceOf(i, j, massJ, xij, r, constants, wallCompression);
+    densityRate +=
+        Real(2) * i.density * shared.volumeJ * (i.velocity - shared.star.velocity).dot(gradW);
+    acceleration -= Real(2) * massJ * shared.star.pressure * shared.inverseDensities * gradW;
+    const Real harmonicViscosity = Real(2) * viscosityI * viscosityJ / (viscosityI + viscosityJ);
+    acceleration += Viscosity::template acceleration<Dim>(
+        massJ, harmonicViscosity, shared.inverseDensities, shearVelocity, xij, r, gradW,
+        constants.viscosityRegularisation);
   }
 
   // The density rate alone, the same bits as accumulate's: for frozen metal, which is held
@@ -124,19 +121,6 @@ struct FluidPair {
     Real inverseDensities;  // 1 / (rho_i rho_j)
     Real volumeJ;           // m_j / rho_j
   };
-  static void accumulateWith(const Shared& shared, const InterfaceSide& i, Real massJ,
-                             Real viscosityI, Real viscosityJ, const Vector& shearVelocity,
-                             const Vector& xij, Real r, const Vector& gradW,
-                             const FlowConstants& constants, Real& densityRate,
-                             Vector& acceleration) {
-    densityRate +=
-        Real(2) * i.density * shared.volumeJ * (i.velocity - shared.star.velocity).dot(gradW);
-    acceleration -= Real(2) * massJ * shared.star.pressure * shared.inverseDensities * gradW;
-    const Real harmonicViscosity = Real(2) * viscosityI * viscosityJ / (viscosityI + viscosityJ);
-    acceleration += Viscosity::template acceleration<Dim>(
-        massJ, harmonicViscosity, shared.inverseDensities, shearVelocity, xij, r, gradW,
-        constants.viscosityRegularisation);
-  }
   // wallCompression: U_L - U_R given by a wall pair; null for a fluid pair (along its line)
   static Shared interfaceOf(const InterfaceSide& i, const InterfaceSide& j, Real massJ,
                             const Vector& xij, Real r, const FlowConstants& constants,
@@ -227,31 +211,27 @@ inline void accumulateWallPair(const InterfaceSide& i, Real viscosityI, const Wa
                              Real(2) * k.velocity - i.velocity};
   const Real fluidDistance = std::max(xik.dot(k.normal) - k.depth, halfSpacing);
   const Real beta = Real(1) + k.depth / fluidDistance;
-  const Vector shear = slip ? Vector::Zero() : Vector(beta * relative);
-  if (!normalApproach) {
-    // relativeVelocity (the default): U_L - U_R along the pair line from the whole relative
-    // velocity. A particle sliding past the wall compresses the oblique pairs ahead of it, and
-    // the limiter's pressure there is a drag: the 2D dam break's front runs 8.6 / 5.8 / 3.7 %
-    // RMS behind the converged inviscid one at a/dx = 10 / 20 / 40 (doc/physics.md §7).
-    FluidPair<Dim, Interface, Viscosity>::accumulate(fluid, mirror, k.density * k.volume,
-                                                     viscosityI, viscosityI, shear, xik, r,
-                                                     gradW, constants, densityRate, acceleration);
-    return;
-  }
-  // normalApproach: U_L - U_R along the pair line from the normal part of the relative velocity,
-  // 2 ((v_i - v_wall) . n)(n . (-e_ik)), the compression a free-slip mirror would give (its sign
-  // does not depend on n's); continuity keeps the whole mirror velocity. The dam break's front
-  // is then 2.3 / 0.6 / 0.7 % RMS from the converged one at a/dx = 10 / 20 / 40. Zhang, Hu &
-  // Adams (2017) §3.3 and SPHinXsys take 2 (v_i - v_wall) . n for every pair: the same fronts,
-  // but a splash into a box's concave edge reached 20 % density deviation (12 % with this form,
-  // 10 % with relativeVelocity) and a particle went 0.52 dx into a small lid's corner, whose
-  // corner particles carry a side face's normal (tests/integration/curvedWallsHoldTheMetal.sh,
-  // coolingModeWaitsForABodysRelease.sh).
+  // The interface's dissipation, U_L - U_R along the pair line:
+  // - relativeVelocity (the default) takes it from the whole relative velocity. A particle
+  //   sliding past the wall compresses the oblique pairs ahead of it, and the limiter's pressure
+  //   there is a drag: the 2D dam break's front runs 8.6 / 5.8 / 3.7 % RMS behind the converged
+  //   inviscid one at a/dx = 10 / 20 / 40 (doc/physics.md §7).
+  // - normalApproach takes it from the normal part only, 2 ((v_i - v_wall) . n)(n . (-e_ik)),
+  //   the compression a free-slip mirror would give (its sign does not depend on n's);
+  //   continuity keeps the whole mirror velocity. The front is then 2.3 / 0.6 / 0.7 % RMS from
+  //   the converged one. Zhang, Hu & Adams (2017) §3.3 and SPHinXsys take 2 (v_i - v_wall) . n
+  //   for every pair: the same fronts, but a splash into a box's concave edge reached 20 %
+  //   density deviation (12 % with this form, 10 % with relativeVelocity) and a particle went
+  //   0.52 dx into a small lid's corner, whose corner particles carry a side face's normal
+  //   (tests/integration/curvedWallsHoldTheMetal.sh, coolingModeWaitsForABodysRelease.sh).
   const Real wallCompression =
-      r > Real(0) ? Real(-2) * relative.dot(k.normal) * k.normal.dot(xik) / r : Real(0);
-  FluidPair<Dim, Interface, Viscosity>::accumulateAgainstWall(
-      fluid, mirror, wallCompression, k.density * k.volume, viscosityI, shear, xik, r, gradW,
-      constants, densityRate, acceleration);
+      normalApproach && r > Real(0)
+          ? Real(-2) * relative.dot(k.normal) * k.normal.dot(xik) / r
+          : Real(0);
+  FluidPair<Dim, Interface, Viscosity>::accumulate(
+      fluid, mirror, k.density * k.volume, viscosityI, viscosityI,
+      slip ? Vector::Zero() : Vector(beta * relative), xik, r, gradW, constants, densityRate,
+      acceleration, normalApproach ? &wallCompression : nullptr);
 }
 
 // Adami et al. (2012) eq. (27), static wall: the pressure of wall particle w from its fluid
