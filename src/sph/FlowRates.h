@@ -89,11 +89,15 @@ struct FluidPair {
   // wall's extrapolated difference for a wall particle (accumulateWallPair). wallCompression,
   // when given, is the U_L - U_R a wall pair's interface dissipates in place of the pair line's
   // (wallDissipation normalApproach, accumulateWallPair).
-  static void accumulate(const InterfaceSide& i, const InterfaceSide& j, Real massJ,
-                         Real viscosityI, Real viscosityJ, const Vector& shearVelocity,
-                         const Vector& xij, Real r, const Vector& gradW,
-                         const FlowConstants& constants, Real& densityRate, Vector& acceleration,
-                         const Real* wallCompression = nullptr) {
+  // Forced inline, as the interfaces' functions: g++ 12 -O3 left them out of line in the rate
+  // loop, a call per pair (perf on conicalMold, tests/benchmarks/README.md).
+  [[gnu::always_inline]] static void accumulate(const InterfaceSide& i, const InterfaceSide& j,
+                                                Real massJ, Real viscosityI, Real viscosityJ,
+                                                const Vector& shearVelocity, const Vector& xij,
+                                                Real r, const Vector& gradW,
+                                                const FlowConstants& constants, Real& densityRate,
+                                                Vector& acceleration,
+                                                const Real* wallCompression = nullptr) {
     const Shared shared = interfaceOf(i, j, massJ, xij, r, constants, wallCompression);
     densityRate +=
         Real(2) * i.density * shared.volumeJ * (i.velocity - shared.star.velocity).dot(gradW);
@@ -107,9 +111,9 @@ struct FluidPair {
   // The density rate alone, the same bits as accumulate's: for frozen metal, which is held
   // (its acceleration would be thrown away) but whose density the melt moving against it, and
   // the pressure jumps, still change.
-  static void accumulateDensityRate(const InterfaceSide& i, const InterfaceSide& j, Real massJ,
-                                    const Vector& xij, Real r, const Vector& gradW,
-                                    const FlowConstants& constants, Real& densityRate) {
+  [[gnu::always_inline]] static void accumulateDensityRate(
+      const InterfaceSide& i, const InterfaceSide& j, Real massJ, const Vector& xij, Real r,
+      const Vector& gradW, const FlowConstants& constants, Real& densityRate) {
     const Shared shared = interfaceOf(i, j, massJ, xij, r, constants, nullptr);
     densityRate +=
         Real(2) * i.density * shared.volumeJ * (i.velocity - shared.star.velocity).dot(gradW);
@@ -122,9 +126,10 @@ struct FluidPair {
     Real volumeJ;           // m_j / rho_j
   };
   // wallCompression: U_L - U_R given by a wall pair; null for a fluid pair (along its line)
-  static Shared interfaceOf(const InterfaceSide& i, const InterfaceSide& j, Real massJ,
-                            const Vector& xij, Real r, const FlowConstants& constants,
-                            const Real* wallCompression) {
+  [[gnu::always_inline]] static Shared interfaceOf(const InterfaceSide& i, const InterfaceSide& j,
+                                                   Real massJ, const Vector& xij, Real r,
+                                                   const FlowConstants& constants,
+                                                   const Real* wallCompression) {
     // -e_ij = -x_ij / r, one division for the three components
     const Vector towardsJ = r > Real(0) ? Vector((Real(-1) / r) * xij) : Vector::Zero();
     // p_i - p_j of the fluid at rest: rho g . x_ij (hydrostatic)
@@ -224,10 +229,9 @@ inline void accumulateWallPair(const InterfaceSide& i, Real viscosityI, const Wa
   //   density deviation (12 % with this form, 10 % with relativeVelocity) and a particle went
   //   0.52 dx into a small lid's corner, whose corner particles carry a side face's normal
   //   (tests/integration/curvedWallsHoldTheMetal.sh, coolingModeWaitsForABodysRelease.sh).
-  const Real wallCompression =
-      normalApproach && r > Real(0)
-          ? Real(-2) * relative.dot(k.normal) * k.normal.dot(xik) / r
-          : Real(0);
+  const Real wallCompression = normalApproach && r > Real(0)
+                                   ? Real(-2) * relative.dot(k.normal) * k.normal.dot(xik) / r
+                                   : Real(0);
   FluidPair<Dim, Interface, Viscosity>::accumulate(
       fluid, mirror, k.density * k.volume, viscosityI, viscosityI,
       slip ? Vector::Zero() : Vector(beta * relative), xik, r, gradW, constants, densityRate,

@@ -27,15 +27,18 @@ struct ArithmeticMeanInterface {
   // whether a wall pair takes the fluid particle's own pressure as it is, tension included
   // (accumulateWallPair says why deltaSPH does and the others do not)
   static constexpr bool fluidTensionAtWalls = false;
-  InterfaceState operator()(const InterfaceSide& left, const InterfaceSide& right,
-                            const Vector& towardsRight, Real soundSpeed,
-                            Real restingJump = 0) const {
+  [[gnu::always_inline]] InterfaceState operator()(const InterfaceSide& left,
+                                                   const InterfaceSide& right,
+                                                   const Vector& towardsRight, Real soundSpeed,
+                                                   Real restingJump = 0) const {
     return withCompression(left, right, towardsRight, 0, soundSpeed, restingJump);
   }
   // the same with the compression given (no dissipation here to take it)
-  InterfaceState withCompression(const InterfaceSide& left, const InterfaceSide& right,
-                                 const Vector& /*towardsRight*/, Real /*compression*/,
-                                 Real /*soundSpeed*/, Real /*restingJump*/ = 0) const {
+  [[gnu::always_inline]] InterfaceState withCompression(const InterfaceSide& left,
+                                                        const InterfaceSide& right,
+                                                        const Vector& /*towardsRight*/,
+                                                        Real /*compression*/, Real /*soundSpeed*/,
+                                                        Real /*restingJump*/ = 0) const {
     return {Real(0.5) * (left.pressure + right.pressure),
             Real(0.5) * (left.velocity + right.velocity)};
   }
@@ -66,21 +69,23 @@ struct AcousticRiemannInterface {
   static constexpr bool fluidTensionAtWalls = false;
   static constexpr Real limiterSlope = 3;
 
-  InterfaceState operator()(const InterfaceSide& left, const InterfaceSide& right,
-                            const Vector& towardsRight, Real soundSpeed,
-                            Real restingJump = 0) const {
+  [[gnu::always_inline]] InterfaceState operator()(const InterfaceSide& left,
+                                                   const InterfaceSide& right,
+                                                   const Vector& towardsRight, Real soundSpeed,
+                                                   Real restingJump = 0) const {
     // U_L - U_R, > 0 when the pair closes in
-    const Real compression =
-        left.velocity.dot(towardsRight) - right.velocity.dot(towardsRight);
+    const Real compression = left.velocity.dot(towardsRight) - right.velocity.dot(towardsRight);
     return withCompression(left, right, towardsRight, compression, soundSpeed, restingJump);
   }
 
   // The same with U_L - U_R given: a wall pair with wallDissipation normalApproach gives the
   // compression of the normal part of the relative velocity only (FlowRates.h,
   // accumulateWallPair).
-  InterfaceState withCompression(const InterfaceSide& left, const InterfaceSide& right,
-                                 const Vector& towardsRight, Real compression, Real soundSpeed,
-                                 Real restingJump = 0) const {
+  [[gnu::always_inline]] InterfaceState withCompression(const InterfaceSide& left,
+                                                        const InterfaceSide& right,
+                                                        const Vector& towardsRight,
+                                                        Real compression, Real soundSpeed,
+                                                        Real restingJump = 0) const {
     const Real meanDensity = Real(0.5) * (left.density + right.density);
     // beta rho_mean c, with beta = min(eta max(U_L - U_R, 0) / c, 1)
     const Real limitedImpedance =
