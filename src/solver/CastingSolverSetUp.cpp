@@ -384,7 +384,9 @@ void CastingSolver::startModels() {
   if (flow_) flow_->start();
   if (!restarted) kickBodies(0.0);  // their acceleration under the start state's loads
   setUpInlets();
-  if (energy_) energy_->start();
+  if (energy_) {
+    for (const std::string& line : energy_->start()) info() << "    " << line << "\n";
+  }
   info() << "    neighbourhood: " << neighbourhood_->pairCount() << " pairs\n";
 }
 

@@ -119,9 +119,15 @@ void EnergyEquation::prepareFields(HeatCloud& heat) {
   cloud.addScalarField("conductivity");
 }
 
-void EnergyEquation::start() {
+std::vector<std::string> EnergyEquation::start() {
+  std::vector<std::string> lines;
+  for (auto& path : paths_) {
+    std::string line = path->start();
+    if (!line.empty()) lines.push_back(std::move(line));
+  }
   updateTemperatures();
   if (!restarted_) computeRates();
+  return lines;
 }
 
 void EnergyEquation::halfKick(double deltaT) {

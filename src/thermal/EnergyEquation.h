@@ -45,9 +45,10 @@ class EnergyEquation {
   EnergyEquation(HeatTransferContext context, const Dictionary& heatTransfer);
   ~EnergyEquation();
 
-  // The rates of the start state (after the first neighbourhood update and exposed area),
-  // unless the clouds came with them (a restart).
-  void start();
+  // The paths' preparations (HeatTransferModel::start) and the rates of the start state (after
+  // the first neighbourhood update and exposed area), unless the clouds came with them (a
+  // restart). Returns the paths' lines for the log.
+  std::vector<std::string> start();
   bool restarted() const { return restarted_; }
   // The fields of a heat cloud a restart reads back instead of computing: T, conductivity,
   // rho and mass follow from them or from the start (the accounts are cloud attributes).

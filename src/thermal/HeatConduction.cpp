@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 #include "particles/WendlandKernel.h"
@@ -63,6 +64,82 @@ std::string HeatConduction::description() const {
   return line.str();
 }
 
+std::string HeatConduction::start() {
+  std::ostringstream line;
+  for (std::size_t a = 0; a < context_.clouds.size(); ++a) {
+    const HeatCloud& heat = context_.clouds[a];
+    const ParticleCloud& cloud = *heat.cloud;
+    if (!heat.holdsAny() || cloud.hasVectorField("normal") || cloud.hasScalarField("wallDistance"))
+      continue;
+    const std::size_t placed =
+        context_.dimension == 2 ? placeHeldSurface<2>(a) : placeHeldSurface<3>(a);
+    if (!line.str().empty()) line << "; ";
+    line << "held surface of cloud '" << cloud.name() << "' placed midway to the free particles"
+         << " for " << placed << " of its " << cloud.size() << " particles (normal, wallDistance)";
+  }
+  return line.str();
+}
+
+// The surface of held cloud `a` from the start state, for each held particle k with free
+// particles j of the clouds it conducts with within h: its normal n_k the direction of
+// sum_j (x_j - x_k) W_kj, its depth d_k = min_j (x_j - x_k) . n_k - dx/2, the surface half a
+// spacing in front of the free particles nearest along n_k (where the lattices of a held box and
+// the metal beside it meet, exactly their common face). A particle with no free neighbour gets
+// n = 0, d = 0: its surface on its centre. Returns the count of particles given a surface.
+template <int Dim>
+std::size_t HeatConduction::placeHeldSurface(std::size_t a) {
+  const WendlandC2Kernel<Dim> kernel(context_.supportRadius);
+  const PeriodicBox periodic = context_.neighbourhood->periodicBox();
+  const Real halfSpacing = Real(0.5) * context_.spacing;
+  ParticleCloud& cloud = *context_.clouds[a].cloud;
+  const Real* held = heldTemperatures(context_.clouds[a]);
+  struct Free {
+    const NeighbourList* list;
+    const Vector* x;
+    const Real* held;  // null: none held
+  };
+  std::vector<Free> frees;
+  for (std::size_t b = 0; b < context_.clouds.size(); ++b) {
+    const HeatCloud& other = context_.clouds[b];
+    if (b == a || other.fixedTemperature || !conducts(a, b)) continue;
+    frees.push_back({&context_.neighbourhood->pairs(cloud, *other.cloud),
+                     other.cloud->positions().data(), heldTemperatures(other)});
+  }
+  auto& normal = cloud.addVectorField("normal");
+  auto& depth = cloud.addScalarField("wallDistance");
+  const Vector* x = cloud.positions().data();
+  std::size_t placed = 0;
+  withSeparation(periodic, [&](auto separation) {
+#pragma omp parallel for schedule(static) reduction(+ : placed)
+    for (std::size_t k = 0; k < cloud.size(); ++k) {
+      if (held[k] == Real(0)) continue;
+      Vector direction = Vector::Zero();
+      for (const Free& free : frees) {
+        for (const std::uint32_t j : free.list->of(k)) {
+          if (free.held && free.held[j] > Real(0)) continue;
+          const Vector xjk = separation(free.x[j], x[k]);
+          direction += kernel.value(xjk.norm()) * xjk;
+        }
+      }
+      if (!(direction.norm() > Real(0))) continue;
+      const Vector n = direction.normalized();
+      Real nearest = std::numeric_limits<Real>::max();
+      for (const Free& free : frees) {
+        for (const std::uint32_t j : free.list->of(k)) {
+          if (free.held && free.held[j] > Real(0)) continue;
+          const Real along = separation(free.x[j], x[k]).dot(n);
+          if (along > Real(0)) nearest = std::min(nearest, along);
+        }
+      }
+      if (nearest == std::numeric_limits<Real>::max()) continue;
+      normal[k] = n;
+      depth[k] = std::max(nearest - halfSpacing, Real(0));
+      ++placed;
+    }
+  });
+  return placed;
+}
+
 void HeatConduction::addEnergyRates() {
   if (context_.dimension == 2) {
     addRatesIn<2>();
@@ -71,30 +148,59 @@ void HeatConduction::addEnergyRates() {
   }
 }
 
+namespace {
+
+// A free particle f against a held particle k of a mold with a surface (normal n_k out of the
+// mold, depth d_k behind the surface): k stands for the surface held at T_k. The free side's
+// temperature is extended linearly through the surface, T_k' = T_k - (T_f - T_k) d_k / d_f, with
+// d_f = max(x_fk . n_k - d_k, dx/4) the free particle's distance in front of it (the flow's
+// wall clearance keeps a fluid particle a quarter spacing off a surface), so the pair's
+// difference is beta (T_f - T_k), beta = 1 + d_k / d_f, and both sides conduct with kappa_f (the
+// held surface takes the mold's place). Returns 2 kappa_f beta: the pair's 4 kappa_i kappa_j /
+// (kappa_i + kappa_j) with the ghost's kappa.
+inline Real ghostConductance(Real kappaFree, Real freeDistance, Real heldDepth, Real closest) {
+  return Real(2) * kappaFree * (Real(1) + heldDepth / std::max(freeDistance, closest));
+}
+
+}  // namespace
+
 template <int Dim>
 void HeatConduction::addRatesIn() {
   const WendlandC2Kernel<Dim> kernel(context_.supportRadius);
   const PeriodicBox periodic = context_.neighbourhood->periodicBox();
   const Real etaSquared = Real(0.01) * context_.spacing * context_.spacing;
+  const Real closest = Real(0.25) * context_.spacing;  // the least d_f of ghostConductance
   struct Source {
     const Vector* x;
     const Real* T;
     const Real* kappa;
     const Real* volume;
+    // The held temperature (0: free) of a cloud that holds any and has a surface (a mold from
+    // particleizeMold: normal, wallDistance); null otherwise: its held particles then carry
+    // the surface on their own centres.
+    const Real* heldOnSurface;
+    const Vector* normal;
+    const Real* depth;
   };
   // V = m / rho once per particle, not once per pair
   volumes_.resize(context_.clouds.size());
   std::vector<Source> sources;
   for (std::size_t c = 0; c < context_.clouds.size(); ++c) {
-    const ParticleCloud& cloud = *context_.clouds[c].cloud;
+    const HeatCloud& heat = context_.clouds[c];
+    const ParticleCloud& cloud = *heat.cloud;
     const auto& mass = cloud.scalarField("mass");
     const auto& rho = cloud.scalarField("rho");
     std::vector<Real>& volume = volumes_[c];
     volume.resize(cloud.size());
 #pragma omp parallel for schedule(static)
     for (std::size_t i = 0; i < volume.size(); ++i) volume[i] = mass[i] / rho[i];
+    const bool surface =
+        heat.holdsAny() && cloud.hasVectorField("normal") && cloud.hasScalarField("wallDistance");
     sources.push_back({cloud.positions().data(), cloud.scalarField("T").data(),
-                       cloud.scalarField("conductivity").data(), volume.data()});
+                       cloud.scalarField("conductivity").data(), volume.data(),
+                       surface ? heldTemperatures(heat) : nullptr,
+                       surface ? cloud.vectorField("normal").data() : nullptr,
+                       surface ? cloud.scalarField("wallDistance").data() : nullptr});
   }
   auto passWith = [&](auto separation) {
     for (std::size_t a = 0; a < context_.clouds.size(); ++a) {
@@ -114,6 +220,7 @@ void HeatConduction::addRatesIn() {
         const Vector xi = self.x[i];
         const Real Ti = self.T[i];
         const Real kappaI = self.kappa[i];
+        const bool iOnSurface = self.heldOnSurface && self.heldOnSurface[i] > Real(0);
         Real sum = 0;
         for (const auto& [list, source] : lists) {
           for (const std::uint32_t j : list->of(i)) {
@@ -122,10 +229,21 @@ void HeatConduction::addRatesIn() {
             const Real kappaJ = source->kappa[j];
             // V_j 4 kappa_i kappa_j / (kappa_i + kappa_j) (T_i - T_j) (x_ij . grad_i W) /
             // (r^2 + eta^2) with x_ij . grad_i W = r^2 (dW/dr) / r, one division per pair
-            const Real numerator = source->volume[j] * Real(4) * kappaI * kappaJ *
-                                   (Ti - source->T[j]) *
+            const Real numerator = source->volume[j] * (Ti - source->T[j]) *
                                    kernel.derivativeOverDistance(std::sqrt(rSquared)) * rSquared;
-            sum += numerator / ((kappaI + kappaJ) * (rSquared + etaSquared));
+            const bool jOnSurface = source->heldOnSurface && source->heldOnSurface[j] > Real(0);
+            if (jOnSurface == iOnSurface) {
+              sum += numerator * Real(4) * kappaI * kappaJ /
+                     ((kappaI + kappaJ) * (rSquared + etaSquared));
+            } else if (jOnSurface) {  // j stands for the held surface in front of i
+              const Real distance = xij.dot(source->normal[j]) - source->depth[j];
+              sum += numerator * ghostConductance(kappaI, distance, source->depth[j], closest) /
+                     (rSquared + etaSquared);
+            } else {  // the same pair from the held side: the heat the surface takes in
+              const Real distance = -xij.dot(self.normal[i]) - self.depth[i];
+              sum += numerator * ghostConductance(kappaJ, distance, self.depth[i], closest) /
+                     (rSquared + etaSquared);
+            }
           }
         }
         energyRate[i] += sum / rho[i];

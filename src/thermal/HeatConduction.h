@@ -21,6 +21,19 @@ namespace sphcast {
 // jump of kappa (metal against mold). The pair term is antisymmetric: heat moves between
 // particles, sum_i m_i du_i/dt = 0 to round-off.
 //
+// A held particle of a mold with a surface (particleizeMold's `normal` and `wallDistance`, its
+// depth d_k behind the surface) stands for the surface held at its T, not for a particle at T:
+// the free particle f in front of it, at d_f, sees the temperature extended linearly through the
+// surface, T_k' = T_k - (T_f - T_k) d_k / d_f, and conducts with its own kappa on both sides:
+//   (T_f - T_k') = (1 + d_k / d_f) (T_f - T_k),   4 kappa_f kappa_k / (kappa_f + kappa_k) -> 2 kappa_f
+// (as the flow's no-slip wall extends the velocity, Morris, Fox & Zhu 1997), so the held surface
+// lies where the mold's surface is. Without it a held surface lay on the first held layer's
+// centres, half a spacing behind particleizeMold's wall, and further back for the layers behind
+// (doc/physics.md §10.2.1). A held cloud without those fields (a box of setCastFields) gets them
+// at the start: its surface midway between its particles and the free particles it holds
+// against (placeHeldSurface). The pair stays antisymmetric: what the surface takes in is what
+// the free particle gives up.
+//
 // Between two clouds whose materials have a contact coefficient (moldContact), this model
 // leaves the exchange to MoldContactTransfer: the coefficient is the interface's conductance.
 //
@@ -36,6 +49,9 @@ class HeatConduction : public HeatTransferModel {
 
   const char* name() const override { return "conduction"; }
   std::string description() const override;
+  // Gives each held cloud without a surface (normal, wallDistance) one from the start state:
+  // placeHeldSurface.
+  std::string start() override;
   void addEnergyRates() override;
   double stableDeltaT() const override { return stableDeltaT_; }
 
@@ -45,6 +61,8 @@ class HeatConduction : public HeatTransferModel {
  private:
   template <int Dim>
   void addRatesIn();
+  template <int Dim>
+  std::size_t placeHeldSurface(std::size_t cloud);
   bool conducts(std::size_t a, std::size_t b) const;
 
   const HeatTransferContext& context_;

@@ -64,6 +64,10 @@ class HeatTransferModel {
   // One line for the log: the equation and the coefficients it runs with.
   virtual std::string description() const = 0;
 
+  // Once, after the first neighbourhood update and before the first rates: what the path
+  // prepares from the start state. Returns a line for the log, or "".
+  virtual std::string start() { return ""; }
+
   // Adds this path's du/dt to every heat cloud's energyRate.
   virtual void addEnergyRates() = 0;
 

@@ -42,12 +42,13 @@ double neumannLambda() {
 }
 
 // Where T first reaches T_m, from the wall (x = 0) into the liquid: linear between the
-// column means of the two lattice columns (at x = k dx) that bracket it.
-double frontPosition(const ParticleCloud& cloud, double dx) {
+// column means of the two lattice columns (at x = first + k dx) that bracket it.
+double frontPosition(const ParticleCloud& cloud, double dx, double first) {
   std::vector<double> sum, count;
   const auto& T = cloud.scalarField("T");
   for (std::size_t i = 0; i < T.size(); ++i) {
-    const auto column = static_cast<std::size_t>(std::lround(cloud.positions()[i][0] / dx));
+    const auto column =
+        static_cast<std::size_t>(std::lround((cloud.positions()[i][0] - first) / dx));
     if (column >= sum.size()) sum.resize(column + 1, 0), count.resize(column + 1, 0);
     sum[column] += T[i];
     count[column] += 1;
@@ -55,7 +56,7 @@ double frontPosition(const ParticleCloud& cloud, double dx) {
   for (std::size_t k = 1; k < sum.size(); ++k) {
     const double before = sum[k - 1] / count[k - 1], after = sum[k] / count[k];
     if (before < Tm && after >= Tm) {
-      return (double(k) - 1 + (Tm - before) / (after - before)) * dx;
+      return first + (double(k) - 1 + (Tm - before) / (after - before)) * dx;
     }
   }
   return 0;
@@ -65,13 +66,18 @@ double frontError(double dx, int length, double& wallSeconds) {
   const int across = 8;
   ThermalRun run(2, Real(3 * dx), Real(dx), materials(alloy));
   run.periodic.setPeriodic(1, 0, Real(across * dx));
-  // the wall's first held layer on x = 0, the melt from x = dx (ConductionValidationTest says
-  // why)
-  run.add(
-      latticeBlock("melt", Vector(Real(dx / 2), 0, 0), length, across, 1, Real(dx), 2, Real(Ti)),
-      "alloy");
-  run.add(latticeBlock("wall", Vector(Real(-3.5 * dx), 0, 0), 4, across, 1, Real(dx), 2, Real(Tw)),
-          "alloy", true, Tw);
+  // the melt from dx/2 in front of the wall's surface x = 0, the wall's held layers from dx/2
+  // behind it, with their depth and normal (as particleizeMold writes a mold)
+  run.add(latticeBlock("melt", Vector(0, 0, 0), length, across, 1, Real(dx), 2, Real(Ti)), "alloy");
+  ParticleCloud held =
+      latticeBlock("wall", Vector(Real(-4 * dx), 0, 0), 4, across, 1, Real(dx), 2, Real(Tw));
+  auto& depth = held.addScalarField("wallDistance");
+  auto& normal = held.addVectorField("normal");
+  for (std::size_t i = 0; i < held.size(); ++i) {
+    depth[i] = -held.positions()[i][0];
+    normal[i] = Vector(1, 0, 0);
+  }
+  run.add(std::move(held), "alloy", true, Tw);
   run.start("clouds (melt wall); conduction on;");
   const double lambda = neumannLambda();
   const double alphaS = kSolid / (rho * c);
@@ -82,7 +88,8 @@ double frontError(double dx, int length, double& wallSeconds) {
   for (const double fraction : {0.25, 0.5, 1.0}) {
     run.advanceTo(fraction * end);
     const double exact = 2 * lambda * std::sqrt(alphaS * run.time);
-    worst = std::max(worst, std::abs(frontPosition(run.clouds.front(), dx) - exact) / exact);
+    worst =
+        std::max(worst, std::abs(frontPosition(run.clouds.front(), dx, dx / 2) - exact) / exact);
   }
   wallSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   // the books close: what the held wall took in is what the melt lost
@@ -95,7 +102,10 @@ double frontError(double dx, int length, double& wallSeconds) {
 }
 
 TEST(StefanProblemTest, FreezingFrontFollowsNeumannsSolution) {
-  // the front crosses length/4 particles: 12.5, 25 and 50 across the frozen layer
+  // the front crosses length/4 particles: 12.5, 25 and 50 across the frozen layer; measured
+  // 4.8 / 1.4 / 1.3 % (the worst of the three times: the front moves by whole lattice columns
+  // through the 4 K mushy range), 4.3 / 3.6 / 1.8 % with the held surface on the first held
+  // layer's centres
   double seconds[3];
   const double coarse = frontError(2e-3, 50, seconds[0]);
   const double medium = frontError(1e-3, 100, seconds[1]);
