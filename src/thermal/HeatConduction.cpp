@@ -223,12 +223,24 @@ void HeatConduction::addRatesIn() {
         const bool iOnSurface = self.heldOnSurface && self.heldOnSurface[i] > Real(0);
         Real sum = 0;
         for (const auto& [list, source] : lists) {
+          // V_j 4 kappa_i kappa_j / (kappa_i + kappa_j) (T_i - T_j) (x_ij . grad_i W) /
+          // (r^2 + eta^2) with x_ij . grad_i W = r^2 (dW/dr) / r, one division per pair
+          if (!iOnSurface && !source->heldOnSurface) {  // no held surface: the plain loop
+            for (const std::uint32_t j : list->of(i)) {
+              const Vector xij = separation(xi, source->x[j]);
+              const Real rSquared = xij.squaredNorm();
+              const Real kappaJ = source->kappa[j];
+              const Real numerator = source->volume[j] * Real(4) * kappaI * kappaJ *
+                                     (Ti - source->T[j]) *
+                                     kernel.derivativeOverDistance(std::sqrt(rSquared)) * rSquared;
+              sum += numerator / ((kappaI + kappaJ) * (rSquared + etaSquared));
+            }
+            continue;
+          }
           for (const std::uint32_t j : list->of(i)) {
             const Vector xij = separation(xi, source->x[j]);
             const Real rSquared = xij.squaredNorm();
             const Real kappaJ = source->kappa[j];
-            // V_j 4 kappa_i kappa_j / (kappa_i + kappa_j) (T_i - T_j) (x_ij . grad_i W) /
-            // (r^2 + eta^2) with x_ij . grad_i W = r^2 (dW/dr) / r, one division per pair
             const Real numerator = source->volume[j] * (Ti - source->T[j]) *
                                    kernel.derivativeOverDistance(std::sqrt(rSquared)) * rSquared;
             const bool jOnSurface = source->heldOnSurface && source->heldOnSurface[j] > Real(0);
