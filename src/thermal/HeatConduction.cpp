@@ -162,6 +162,20 @@ inline Real ghostConductance(Real kappaFree, Real freeDistance, Real heldDepth, 
   return Real(2) * kappaFree * (Real(1) + heldDepth / std::max(freeDistance, closest));
 }
 
+// A particle f of another cloud against a particle k of a mold with a surface that conducts
+// (not held): the two conductivities in series over the pair's two sides of the surface, d_f in
+// front of it and d_k behind, kappa = kappa_f kappa_k (d_f + d_k) / (d_f kappa_k + d_k kappa_f),
+// so that the jump of kappa lies on the mold's wall (the harmonic mean puts it midway between the
+// two particles: the same where d_f = d_k, as on a lattice parallel to the wall). Returns twice
+// that: the pair's 4 kappa_f kappa_k / (kappa_f + kappa_k) in series.
+inline Real seriesConductance(Real kappaFree, Real kappaMold, Real freeDistance, Real moldDepth,
+                              Real closest) {
+  const Real front = std::max(freeDistance, closest);
+  const Real behind = std::max(moldDepth, closest);
+  return Real(2) * kappaFree * kappaMold * (front + behind) /
+         (front * kappaMold + behind * kappaFree);
+}
+
 }  // namespace
 
 template <int Dim>
@@ -175,12 +189,12 @@ void HeatConduction::addRatesIn() {
     const Real* T;
     const Real* kappa;
     const Real* volume;
-    // The held temperature (0: free) of a cloud that holds any and has a surface (a mold from
-    // particleizeMold: normal, wallDistance); null otherwise: its held particles then carry
-    // the surface on their own centres.
-    const Real* heldOnSurface;
+    // A mold with a surface (particleizeMold's normal and wallDistance, or placeHeldSurface's):
+    // null without. heldOnSurface: the held temperature (0: free) where it holds any; null
+    // otherwise (a held particle without a surface carries it on its centre).
     const Vector* normal;
     const Real* depth;
+    const Real* heldOnSurface;
   };
   // V = m / rho once per particle, not once per pair
   volumes_.resize(context_.clouds.size());
@@ -194,24 +208,28 @@ void HeatConduction::addRatesIn() {
     volume.resize(cloud.size());
 #pragma omp parallel for schedule(static)
     for (std::size_t i = 0; i < volume.size(); ++i) volume[i] = mass[i] / rho[i];
-    const bool surface =
-        heat.holdsAny() && cloud.hasVectorField("normal") && cloud.hasScalarField("wallDistance");
+    const bool surface = cloud.hasVectorField("normal") && cloud.hasScalarField("wallDistance");
     sources.push_back({cloud.positions().data(), cloud.scalarField("T").data(),
                        cloud.scalarField("conductivity").data(), volume.data(),
-                       surface ? heldTemperatures(heat) : nullptr,
                        surface ? cloud.vectorField("normal").data() : nullptr,
-                       surface ? cloud.scalarField("wallDistance").data() : nullptr});
+                       surface ? cloud.scalarField("wallDistance").data() : nullptr,
+                       surface && heat.holdsAny() ? heldTemperatures(heat) : nullptr});
   }
   auto passWith = [&](auto separation) {
     for (std::size_t a = 0; a < context_.clouds.size(); ++a) {
       ParticleCloud& target = *context_.clouds[a].cloud;
       Real* energyRate = target.scalarField("energyRate").data();
       const Real* rho = target.scalarField("rho").data();
-      std::vector<std::pair<const NeighbourList*, const Source*>> lists;
+      struct List {
+        const NeighbourList* pairs;
+        const Source* source;
+        bool acrossASurface;  // another cloud, and either has a surface
+      };
+      std::vector<List> lists;
       for (std::size_t b = 0; b < context_.clouds.size(); ++b) {
         if (!conducts(a, b)) continue;
-        lists.emplace_back(&context_.neighbourhood->pairs(target, *context_.clouds[b].cloud),
-                           &sources[b]);
+        lists.push_back({&context_.neighbourhood->pairs(target, *context_.clouds[b].cloud),
+                         &sources[b], b != a && (sources[a].normal || sources[b].normal)});
       }
       const Source self = sources[a];
       const std::size_t count = target.size();
@@ -220,12 +238,12 @@ void HeatConduction::addRatesIn() {
         const Vector xi = self.x[i];
         const Real Ti = self.T[i];
         const Real kappaI = self.kappa[i];
-        const bool iOnSurface = self.heldOnSurface && self.heldOnSurface[i] > Real(0);
+        const bool iHeldOnSurface = self.heldOnSurface && self.heldOnSurface[i] > Real(0);
         Real sum = 0;
-        for (const auto& [list, source] : lists) {
+        for (const auto& [list, source, acrossASurface] : lists) {
           // V_j 4 kappa_i kappa_j / (kappa_i + kappa_j) (T_i - T_j) (x_ij . grad_i W) /
           // (r^2 + eta^2) with x_ij . grad_i W = r^2 (dW/dr) / r, one division per pair
-          if (!iOnSurface && !source->heldOnSurface) {  // no held surface: the plain loop
+          if (!acrossASurface) {  // within a cloud, or no surface: the plain loop
             for (const std::uint32_t j : list->of(i)) {
               const Vector xij = separation(xi, source->x[j]);
               const Real rSquared = xij.squaredNorm();
@@ -243,19 +261,25 @@ void HeatConduction::addRatesIn() {
             const Real kappaJ = source->kappa[j];
             const Real numerator = source->volume[j] * (Ti - source->T[j]) *
                                    kernel.derivativeOverDistance(std::sqrt(rSquared)) * rSquared;
-            const bool jOnSurface = source->heldOnSurface && source->heldOnSurface[j] > Real(0);
-            if (jOnSurface == iOnSurface) {
-              sum += numerator * Real(4) * kappaI * kappaJ /
-                     ((kappaI + kappaJ) * (rSquared + etaSquared));
-            } else if (jOnSurface) {  // j stands for the held surface in front of i
-              const Real distance = xij.dot(source->normal[j]) - source->depth[j];
-              sum += numerator * ghostConductance(kappaI, distance, source->depth[j], closest) /
-                     (rSquared + etaSquared);
-            } else {  // the same pair from the held side: the heat the surface takes in
-              const Real distance = -xij.dot(self.normal[i]) - self.depth[i];
-              sum += numerator * ghostConductance(kappaJ, distance, self.depth[i], closest) /
-                     (rSquared + etaSquared);
+            const bool jHeldOnSurface = source->heldOnSurface && source->heldOnSurface[j] > 0;
+            Real conductance;  // the pair's 4 kappa_i kappa_j / (kappa_i + kappa_j)
+            if (jHeldOnSurface && !iHeldOnSurface) {  // j stands for the held surface before i
+              conductance = ghostConductance(kappaI, xij.dot(source->normal[j]) - source->depth[j],
+                                             source->depth[j], closest);
+            } else if (iHeldOnSurface && !jHeldOnSurface) {  // the same pair from the held side
+              conductance = ghostConductance(kappaJ, -xij.dot(self.normal[i]) - self.depth[i],
+                                             self.depth[i], closest);
+            } else if (source->normal && !self.normal) {  // j a conducting mold's
+              conductance =
+                  seriesConductance(kappaI, kappaJ, xij.dot(source->normal[j]) - source->depth[j],
+                                    source->depth[j], closest);
+            } else if (self.normal && !source->normal) {  // i a conducting mold's
+              conductance = seriesConductance(
+                  kappaJ, kappaI, -xij.dot(self.normal[i]) - self.depth[i], self.depth[i], closest);
+            } else {
+              conductance = Real(4) * kappaI * kappaJ / (kappaI + kappaJ);
             }
+            sum += numerator * conductance / (rSquared + etaSquared);
           }
         }
         energyRate[i] += sum / rho[i];

@@ -33,6 +33,11 @@ namespace sphcast {
 // at the start: its surface midway between its particles and the free particles it holds
 // against (placeHeldSurface). The pair stays antisymmetric: what the surface takes in is what
 // the free particle gives up.
+// A mold with a surface that conducts (not held) meets another cloud's particle f across its
+// wall: the pair takes the two conductivities in series over its two sides of the wall, d_f in
+// front and d_k behind, kappa = kappa_f kappa_k (d_f + d_k) / (d_f kappa_k + d_k kappa_f), where
+// the harmonic mean would put the jump of kappa midway between the particles (the same where
+// d_f = d_k). Measured, aluminium on iron: the contact temperature 0.26 % off against 0.99 %.
 //
 // Between two clouds whose materials have a contact coefficient (moldContact), this model
 // leaves the exchange to MoldContactTransfer: the coefficient is the interface's conductance.

@@ -231,15 +231,30 @@ TEST(ConductionValidationTest, SlabBetweenTwoHeldFacesFollowsTheSeriesSolution) 
 
 // Aluminium against iron: the interface temperature of two semi-infinite bodies,
 // T_c = (e_1 T_1 + e_2 T_2) / (e_1 + e_2), e = sqrt(kappa rho c), with each side an erf
-// profile. The harmonic-mean conductivity carries the flux across the jump of kappa.
-TEST(ConductionValidationTest, ContactOfTwoMaterialsReachesTheEffusivityTemperature) {
+// profile. The harmonic-mean conductivity carries the flux across the jump of kappa; with the
+// iron a mold with a surface (normal, wallDistance, as particleizeMold writes one) the pairs
+// across it take the two conductivities in series over their sides of it.
+struct ContactErrors {
+  double contact;  // |T_c estimated - T_c| / (T_1 - T_2)
+  double profile;  // the worse side's L2 / (T_1 - T_2)
+};
+ContactErrors contactOfAluminiumAndIron(bool ironSurface) {
   const char* properties =
       "aluminium { density 2700; conductivity 237; specificHeat 900; }"
       "iron { density 7874; conductivity 26; specificHeat 700; }";
   ThermalRun run = strip(properties);
   const int n = 60;
   run.add(latticeBlock("aluminium", Vector(-n * dx, 0, 0), n, across, 1, dx, 2, 900), "aluminium");
-  run.add(latticeBlock("iron", Vector(0, 0, 0), n, across, 1, dx, 2, 300), "iron");
+  ParticleCloud iron = latticeBlock("iron", Vector(0, 0, 0), n, across, 1, dx, 2, 300);
+  if (ironSurface) {
+    auto& depth = iron.addScalarField("wallDistance");
+    auto& normal = iron.addVectorField("normal");
+    for (std::size_t k = 0; k < iron.size(); ++k) {
+      depth[k] = iron.positions()[k][0];
+      normal[k] = Vector(-1, 0, 0);
+    }
+  }
+  run.add(std::move(iron), "iron");
   run.start("clouds (aluminium iron); conduction on;");
   const double alphaAl = 237.0 / (2700 * 900), alphaFe = 26.0 / (7874 * 700);
   const double eAl = std::sqrt(237.0 * 2700 * 900), eFe = std::sqrt(26.0 * 7874 * 700);
@@ -268,15 +283,26 @@ TEST(ConductionValidationTest, ContactOfTwoMaterialsReachesTheEffusivityTemperat
   };
   const double estimated = 0.5 * (interfaceEstimate(run.clouds[0], 900, alphaAl) +
                                   interfaceEstimate(run.clouds[1], 300, alphaFe));
-  const double contactError = std::abs(estimated - contact) / (900 - 300);
   double profileError = 0;
   for (const ParticleCloud& cloud : run.clouds) {
     profileError = std::max(profileError, relativeL2(cloud, exact, 1e9, 600));
   }
-  RecordProperty("contactError", std::to_string(contactError));
-  RecordProperty("profileL2", std::to_string(profileError));
-  EXPECT_LT(contactError, 0.01) << "T_c " << estimated << " K against " << contact << " K";
-  EXPECT_LT(profileError, 0.01);
+  return {std::abs(estimated - contact) / (900 - 300), profileError};
+}
+
+TEST(ConductionValidationTest, ContactOfTwoMaterialsReachesTheEffusivityTemperature) {
+  for (const bool ironSurface : {false, true}) {
+    const ContactErrors errors = contactOfAluminiumAndIron(ironSurface);
+    std::printf("aluminium on iron%s: T_c off by %.3g %%, profile L2 %.3g %%\n",
+                ironSurface ? " (a mold with a surface)" : "", 100 * errors.contact,
+                100 * errors.profile);
+    RecordProperty(ironSurface ? "contactErrorSurface" : "contactError",
+                   std::to_string(errors.contact));
+    RecordProperty(ironSurface ? "profileL2Surface" : "profileL2", std::to_string(errors.profile));
+    // measured 0.99 % with the harmonic mean, 0.26 % in series over the surface
+    EXPECT_LT(errors.contact, ironSurface ? 0.005 : 0.01);
+    EXPECT_LT(errors.profile, 0.01);
+  }
 }
 
 // Conduction and contact only, nothing held: the internal energy of the whole stays what it
