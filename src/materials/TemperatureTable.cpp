@@ -58,6 +58,29 @@ double TemperatureTable::operator()(double temperature) const {
   return values_[i - 1] + fraction * (values_[i] - values_[i - 1]);
 }
 
+double TemperatureTable::integral(double temperature) const {
+  const double lowest = temperatures_.front();
+  if (temperature <= lowest || isConstant()) return values_.front() * (temperature - lowest);
+  double sum = 0;
+  for (std::size_t i = 1; i < temperatures_.size(); ++i) {
+    const double t0 = temperatures_[i - 1], t1 = temperatures_[i];
+    const double end = std::min(temperature, t1);
+    const double v0 = values_[i - 1];
+    if (interpolation_ == Interpolation::logLinear && logValues_[i] != logValues_[i - 1]) {
+      // exp(l0 + (l1 - l0) s), s = (T - t0) / (t1 - t0): its integral is (v(end) - v0) over
+      // the slope of l in T
+      sum += ((*this)(end) - v0) * (t1 - t0) / (logValues_[i] - logValues_[i - 1]);
+    } else {
+      const double slope = interpolation_ == Interpolation::logLinear
+                               ? 0.0
+                               : (values_[i] - v0) / (t1 - t0);
+      sum += (end - t0) * (v0 + 0.5 * slope * (end - t0));
+    }
+    if (temperature <= t1) return sum;
+  }
+  return sum + values_.back() * (temperature - temperatures_.back());
+}
+
 void TemperatureTable::checkCovers(double temperature, const SourceLocation& where) const {
   if (isConstant()) return;
   if (temperature >= lowestTemperature() && temperature <= highestTemperature()) return;

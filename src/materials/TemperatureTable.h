@@ -44,6 +44,10 @@ class TemperatureTable {
 
   // The value at temperature T (K), clamped at the ends of the table.
   double operator()(double temperature) const;
+  // The integral of the value over temperature from the table's lowest temperature to T (value
+  // times K; negative below it), exact for the interpolation and the clamped ends: the
+  // conductivity's Kirchhoff transform, phi(T) = int kappa dT (thermal/HeatConduction.h).
+  double integral(double temperature) const;
 
   bool isConstant() const { return temperatures_.size() == 1; }
   double lowestTemperature() const { return temperatures_.front(); }

@@ -11,6 +11,7 @@
 #include "core/Error.h"
 #include "post/EnergyBalance.h"
 #include "post/FieldMinMax.h"
+#include "post/MassAverage.h"
 #include "post/SamplingFunctionObjects.h"
 
 namespace fs = std::filesystem;
@@ -140,8 +141,8 @@ FunctionObjectList::FunctionObjectList(const Dictionary& controlDict,
                                        const FunctionObjectContext& context) {
   if (!controlDict.found("functions")) return;
   const Dictionary& functions = controlDict.subDict("functions");
-  const std::vector<std::string> types = {"probes", "surfaceHeights", "front", "fieldMinMax",
-                                          "energyBalance"};
+  const std::vector<std::string> types = {"probes",      "surfaceHeights", "front",
+                                          "fieldMinMax", "massAverage",    "energyBalance"};
   for (const std::string& name : functions.keys()) {
     const Dictionary& dict = functions.subDict(name);
     // Explicit registration: one line per type.
@@ -154,6 +155,8 @@ FunctionObjectList::FunctionObjectList(const Dictionary& controlDict,
       objects_.push_back(std::make_unique<FluidFront>(name, dict, context));
     } else if (type == "energyBalance") {
       objects_.push_back(std::make_unique<EnergyBalance>(name, dict, context));
+    } else if (type == "massAverage") {
+      objects_.push_back(std::make_unique<MassAverage>(name, dict, context));
     } else {
       objects_.push_back(std::make_unique<FieldMinMax>(name, dict, context));
     }

@@ -195,9 +195,11 @@ void HeatConduction::addRatesIn() {
     const Vector* normal;
     const Real* depth;
     const Real* heldOnSurface;
+    const Real* kirchhoff;  // phi(T) = int kappa dT of the cloud's material
   };
   // V = m / rho once per particle, not once per pair
   volumes_.resize(context_.clouds.size());
+  kirchhoff_.resize(context_.clouds.size());
   std::vector<Source> sources;
   for (std::size_t c = 0; c < context_.clouds.size(); ++c) {
     const HeatCloud& heat = context_.clouds[c];
@@ -208,12 +210,21 @@ void HeatConduction::addRatesIn() {
     volume.resize(cloud.size());
 #pragma omp parallel for schedule(static)
     for (std::size_t i = 0; i < volume.size(); ++i) volume[i] = mass[i] / rho[i];
+    const TemperatureTable& kappa = heat.material->requireConductivity("heatTransfer conduction");
+    const auto& T = cloud.scalarField("T");
+    std::vector<Real>& phi = kirchhoff_[c];
+    phi.resize(cloud.size());
+#pragma omp parallel for schedule(static)
+    for (std::size_t i = 0; i < phi.size(); ++i) {
+      phi[i] = static_cast<Real>(kappa.integral(static_cast<double>(T[i])));
+    }
     const bool surface = cloud.hasVectorField("normal") && cloud.hasScalarField("wallDistance");
     sources.push_back({cloud.positions().data(), cloud.scalarField("T").data(),
                        cloud.scalarField("conductivity").data(), volume.data(),
                        surface ? cloud.vectorField("normal").data() : nullptr,
                        surface ? cloud.scalarField("wallDistance").data() : nullptr,
-                       surface && heat.holdsAny() ? heldTemperatures(heat) : nullptr});
+                       surface && heat.holdsAny() ? heldTemperatures(heat) : nullptr,
+                       phi.data()});
   }
   auto passWith = [&](auto separation) {
     for (std::size_t a = 0; a < context_.clouds.size(); ++a) {
@@ -224,12 +235,14 @@ void HeatConduction::addRatesIn() {
         const NeighbourList* pairs;
         const Source* source;
         bool acrossASurface;  // another cloud, and either has a surface
+        bool oneMaterial;     // the two clouds' material is the same
       };
       std::vector<List> lists;
       for (std::size_t b = 0; b < context_.clouds.size(); ++b) {
         if (!conducts(a, b)) continue;
         lists.push_back({&context_.neighbourhood->pairs(target, *context_.clouds[b].cloud),
-                         &sources[b], b != a && (sources[a].normal || sources[b].normal)});
+                         &sources[b], b != a && (sources[a].normal || sources[b].normal),
+                         context_.clouds[a].material == context_.clouds[b].material});
       }
       const Source self = sources[a];
       const std::size_t count = target.size();
@@ -240,10 +253,23 @@ void HeatConduction::addRatesIn() {
         const Real kappaI = self.kappa[i];
         const bool iHeldOnSurface = self.heldOnSurface && self.heldOnSurface[i] > Real(0);
         Real sum = 0;
-        for (const auto& [list, source, acrossASurface] : lists) {
+        for (const auto& [list, source, acrossASurface, oneMaterial] : lists) {
+          if (!acrossASurface && oneMaterial) {
+            // within one material (no surface between): 2 V_j (phi_i - phi_j) (x_ij . grad_i W)
+            // / (r^2 + eta^2), x_ij . grad_i W = r^2 (dW/dr) / r, one division per pair
+            const Real phiI = self.kirchhoff[i];
+            for (const std::uint32_t j : list->of(i)) {
+              const Vector xij = separation(xi, source->x[j]);
+              const Real rSquared = xij.squaredNorm();
+              const Real numerator = source->volume[j] * Real(2) * (phiI - source->kirchhoff[j]) *
+                                     kernel.derivativeOverDistance(std::sqrt(rSquared)) * rSquared;
+              sum += numerator / (rSquared + etaSquared);
+            }
+            continue;
+          }
           // V_j 4 kappa_i kappa_j / (kappa_i + kappa_j) (T_i - T_j) (x_ij . grad_i W) /
           // (r^2 + eta^2) with x_ij . grad_i W = r^2 (dW/dr) / r, one division per pair
-          if (!acrossASurface) {  // within a cloud, or no surface: the plain loop
+          if (!acrossASurface) {  // two materials, no surface: the harmonic mean
             for (const std::uint32_t j : list->of(i)) {
               const Vector xij = separation(xi, source->x[j]);
               const Real rSquared = xij.squaredNorm();

@@ -45,7 +45,7 @@ class FunctionObjectTest : public testing::TemporaryFolderTest {
 TEST_F(FunctionObjectTest, BadEntriesAreErrorsAtTheirKey) {
   EXPECT_EQ(errorOf("P1 { type probe; cloud fluid; }"),
             "controlDict:1:22: unknown type 'probe'; did you mean 'probes'? valid type are: "
-            "(probes surfaceHeights front fieldMinMax energyBalance)");
+            "(probes surfaceHeights front fieldMinMax massAverage energyBalance)");
   // energyBalance spans clouds: `clouds`, each carrying heat
   const std::string noHeat = errorOf("E { type energyBalance; clouds (fluid); }");
   EXPECT_NE(noHeat.find("controlDict:1:36: cloud 'fluid'"), std::string::npos) << noHeat;
@@ -142,6 +142,29 @@ TEST_F(FunctionObjectTest, FieldMinMaxGivesTheExtremesAndWhereTheyAre) {
   EXPECT_NE(unknownField.find("controlDict:1:"), std::string::npos) << unknownField;
   EXPECT_NE(unknownField.find("unknown field 'T' of cloud 'fluid'"), std::string::npos)
       << unknownField;
+}
+
+// massAverage: sum m f / sum m, here of p with two heavy particles: the mean moves toward them
+// as their mass says; a vector field is an error at its key.
+TEST_F(FunctionObjectTest, MassAverageWeighsByMass) {
+  auto& mass = water_.scalarField("mass");
+  auto& p = water_.scalarField("p");
+  for (std::size_t i = 0; i < mass.size(); ++i) mass[i] = 1;
+  mass[3] = mass[5] = 10;
+  p[3] = p[5] = 1000;  // the rest stay at 100
+  const double n = double(mass.size());
+  const double expected = (100 * (n - 2) + 2 * 10 * 1000) / (n - 2 + 20);
+  FunctionObjectList list(
+      Dictionary::parse("functions { A { type massAverage; cloud fluid; fields (p); } }",
+                        "controlDict"),
+      context("0"));
+  list.execute(TimeState{0, "", 0, 0.1}, false);
+  const auto rows = readFunctionObjectSeries(folder_, "A", "p");
+  ASSERT_EQ(rows.size(), 1u);
+  ASSERT_EQ(rows[0].size(), 2u);  // time, mean
+  EXPECT_NEAR(rows[0][1], expected, 1e-9 * expected);
+  const std::string vector = errorOf("A { type massAverage; cloud fluid; fields (U); }");
+  EXPECT_NE(vector.find("unknown scalar field 'U'"), std::string::npos) << vector;
 }
 
 TEST_F(FunctionObjectTest, ARestartedRunContinuesWithoutDuplicatedRows) {
