@@ -59,7 +59,9 @@ bool HeatConduction::conducts(std::size_t a, std::size_t b) const {
 
 std::string HeatConduction::description() const {
   std::ostringstream line;
-  line << "conduction (eq. 13, Cleary & Monaghan form, harmonic-mean kappa): diffusion limit "
+  line << "conduction (eq. 13, Cleary & Monaghan form; within a material through phi = int "
+          "kappa dT, between materials the harmonic-mean kappa; held surfaces at the mold's "
+          "wall): diffusion limit "
        << stableDeltaT_ << " s";
   return line.str();
 }
