@@ -8,9 +8,9 @@
 #   surface on the first held layer's centres it was 0.99 % (and 1.88 %), a held surface dx/2
 #   off the body's particles gives 6.0 %. Bounds: 0.6 % and 1.8 %.
 # - stefanProblem at 12.5 particles across the frozen layer: the worst front error over four
-#   writes against Neumann's solution. StefanProblemTest measures 4.8 % there (the front moves
-#   by whole lattice columns through a 4 K mushy range, 1.3 % at 50 across); the tools give the
-#   same. Bound: 6 %. The energyBalance books close to round-off, about 1e-16 of the heat
+#   writes against Neumann's solution: 2.9 % (the front moves by whole lattice columns through a
+#   4 K mushy range; 0.62 % at 50 across). With the harmonic mean of kappa across that range it
+#   was 4.8 %, with the held surface on the held layer's centres too 4.3 %. Bound: 4 %. The energyBalance books close to round-off, about 1e-16 of the heat
 #   content a step (2.7e-15 measured over 2,136 steps); bound 1e-12.
 # About 5 s on one thread.
 . "$SPHCAST_TEST_TOOLS"
@@ -33,6 +33,6 @@ below 0.018 "$(awk '/^t = 25 s:/ { print $NF }' "$log")" "semi-infinite body, er
 runTutorial stefanProblem 12.5
 log=$scratch/tutorials/validation/stefanProblem/log.compareWithNeumann
 [ "$(grep -c '^t = ' "$log")" -eq 4 ] || fail "stefanProblem: not four written times"
-below 0.06 "$(awk '/^worst front error/ { print $NF }' "$log")" "Neumann front, worst error"
+below 0.04 "$(awk '/^worst front error/ { print $NF }' "$log")" "Neumann front, worst error"
 below 1e-12 "$(awk '/^energyBalance:/ { print $NF }' "$log")" "energyBalance relative imbalance"
-pass "heat tutorials through the tools: erf profile within 0.6 %, Neumann front within 6 %, books closed"
+pass "heat tutorials through the tools: erf profile within 0.6 %, Neumann front within 4 %, books closed"

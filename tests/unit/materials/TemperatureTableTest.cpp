@@ -53,6 +53,38 @@ TEST(TemperatureTable, LogLinearInterpolatesTheLogarithmAndLinearTheValue) {
   EXPECT_EQ(logLinear.interpolation(), Interpolation::logLinear);
 }
 
+// integral(T) = int from the lowest temperature to T (the Kirchhoff transform of a
+// conductivity): against the trapezoid rule on a fine grid (exact for the linear table, and to
+// 1e-9 for the log-linear one), below the table (negative, the first value) and above it (the
+// last value), and a constant.
+TEST(TemperatureTable, IntegralIsTheAreaUnderTheTableClampedAtTheEnds) {
+  const Dimensions conductivity{{1, 1, -3, -1, 0, 0, 0}};
+  const std::string text =
+      "metal { conductivity table ((803 174.35) (830.44 175.34) (848 114.78) (888.64 83.3)); "
+      "viscosity table ((873 186) (888.64 1.57e-3)); c 20; }";
+  const auto kappa = readProperty(text, "conductivity", conductivity, Interpolation::linear);
+  const auto mu = readProperty(text, "viscosity", viscosityDimensions, Interpolation::logLinear);
+  auto trapezoid = [](const TemperatureTable& table, double from, double to) {
+    const int steps = 200000;
+    double sum = 0;
+    for (int k = 0; k < steps; ++k) {
+      const double a = from + (to - from) * k / steps, b = from + (to - from) * (k + 1) / steps;
+      sum += 0.5 * (table(a) + table(b)) * (b - a);
+    }
+    return sum;
+  };
+  for (const double T : {803.0, 820.0, 830.44, 840.0, 870.0, 888.64, 950.0}) {
+    EXPECT_NEAR(kappa.integral(T), trapezoid(kappa, 803, T), 1e-6) << T;
+  }
+  EXPECT_DOUBLE_EQ(kappa.integral(300), 174.35 * (300 - 803));
+  EXPECT_NEAR(kappa.integral(1000) - kappa.integral(888.64), 83.3 * (1000 - 888.64), 1e-8);
+  for (const double T : {873.0, 875.0, 880.0, 888.64, 900.0}) {
+    EXPECT_NEAR(mu.integral(T), trapezoid(mu, 873, T), 1e-9 * 186 * 16) << T;
+  }
+  const auto constant = readProperty(text, "c", conductivity, Interpolation::linear);
+  EXPECT_NEAR(constant.integral(500) - constant.integral(300), 20 * 200, 1e-9);
+}
+
 TEST(TemperatureTable, ColumnsReadBesideTheMaterialsTemperatures) {
   const auto density =
       readProperty("metal { temperatures (300 900 1000); density (2700 2400 2350); }", "density",

@@ -103,9 +103,10 @@ double frontError(double dx, int length, double& wallSeconds) {
 
 TEST(StefanProblemTest, FreezingFrontFollowsNeumannsSolution) {
   // the front crosses length/4 particles: 12.5, 25 and 50 across the frozen layer; measured
-  // 4.8 / 1.4 / 1.3 % (the worst of the three times: the front moves by whole lattice columns
-  // through the 4 K mushy range), 4.3 / 3.6 / 1.8 % with the held surface on the first held
-  // layer's centres
+  // 2.9 / 0.92 / 0.62 % (the worst of the three times: the front moves by whole lattice columns
+  // through the 4 K mushy range); 4.8 / 1.4 / 1.3 % with the harmonic mean of kappa across that
+  // range (it halves there), 4.3 / 3.6 / 1.8 % with the held surface on the first held layer's
+  // centres too
   double seconds[3];
   const double coarse = frontError(2e-3, 50, seconds[0]);
   const double medium = frontError(1e-3, 100, seconds[1]);
@@ -114,7 +115,8 @@ TEST(StefanProblemTest, FreezingFrontFollowsNeumannsSolution) {
   RecordProperty("error_25", std::to_string(medium));
   RecordProperty("error_50", std::to_string(fine));
   RecordProperty("lambda", std::to_string(neumannLambda()));
-  EXPECT_LT(fine, 0.03);
+  EXPECT_LT(coarse, 0.04);
+  EXPECT_LT(fine, 0.012);
   EXPECT_LT(fine, coarse);
 }
 
