@@ -143,6 +143,11 @@ void CastingSolver::flushPendingHeat() {
 // right for a melt that creeps, wrong for one that moves (updateCoolingMode leaves the mode then).
 void CastingSolver::evolveCooling(double deltaT) {
   heatStepInPlace(deltaT);
+  {  // what the run would have taken without the mode, for the log (logWorkSkipped)
+    std::string limiter;
+    flowStepsWithoutCooling_ +=
+        deltaT / flow_->stepLimits(time_.settings().maxCo).smallest(limiter);
+  }
   for (int k = 0; k < solidificationSetup_.cooling->flowStepsPerHeatStep; ++k) {
     std::string limiter;
     const double flowDeltaT = flow_->stepLimits(coolingMaxCo()).smallest(limiter);
@@ -209,8 +214,8 @@ void CastingSolver::updateCoolingMode() {
   meanStableDeltaT_ = 0;  // the steps change length by design
   if (cooling_) {
     flushPendingHeat();
-    info() << "Cooling from time " << time_.timeName() << ": the melt is still (max|U| "
-           << fastest << " m/s < " << cooling.stillSpeed << "): steps of the heat's length, each "
+    info() << "Cooling from time " << time_.timeName() << ": the melt is still (max|U| " << fastest
+           << " m/s < " << cooling.stillSpeed << "): steps of the heat's length, each "
            << "followed by " << cooling.flowStepsPerHeatStep << " acoustic flow steps (maxCo "
            << coolingMaxCo() << ")\n\n";
   } else {
@@ -331,6 +336,7 @@ void CastingSolver::run() {
     addWallTime(outputSeconds_, [&] { writeResults(); });
   }
   logTimeSpent();
+  logWorkSkipped();
   info() << clock_.timesLine() << "\n\nEnd\n\n";
 }
 

@@ -95,6 +95,7 @@ class CastingSolver {
   void logStep(bool printBlock);
   void logRereadMessage();
   void logTimeSpent();
+  void logWorkSkipped();
   void logHeat();
   void logSolidification();
   // "cloud" and "cloud.field" of every cloud, sorted: what a time folder of them holds.
@@ -136,17 +137,17 @@ class CastingSolver {
   ParticleCloud* fluid_ = nullptr;
   std::unique_ptr<EnergyEquation> energy_;
   std::unique_ptr<Solidification> solidification_;  // follows the fluid's T after heat steps
-  std::unique_ptr<ExposedArea> exposedArea_;      // A_i, when a model reads it
-  std::unique_ptr<FillTime> fillTime_;            // the fluid's first wall contact
+  std::unique_ptr<ExposedArea> exposedArea_;        // A_i, when a model reads it
+  std::unique_ptr<FillTime> fillTime_;              // the fluid's first wall contact
   std::vector<std::unique_ptr<RigidBody>> bodies_;  // moving walls of the flow
   std::vector<std::vector<const ParticleCloud*>> bodyMolds_;  // the other walls, per body
   std::vector<BodyContact> bodyContacts_;                     // of the last step
-  std::vector<std::string> lastGoodBodies_;         // their state before the step
+  std::vector<std::string> lastGoodBodies_;                   // their state before the step
   std::vector<std::unique_ptr<std::ofstream>> bodyHistory_;
   std::vector<std::unique_ptr<PouringInlet>> inlets_;  // feed the fluid
-  std::vector<std::string> lastGoodInlets_;             // their state before the step
-  bool exposedAreaRestored_ = false;              // read with a restart's clouds
-  std::vector<const ParticleCloud*> wallClouds_;  // the flow's walls
+  std::vector<std::string> lastGoodInlets_;            // their state before the step
+  bool exposedAreaRestored_ = false;                   // read with a restart's clouds
+  std::vector<const ParticleCloud*> wallClouds_;       // the flow's walls
   Domain domain_;
   // The clouds before the step being taken (those that change: the fluid, the heat clouds)
   std::vector<ParticleCloud> lastGood_;
@@ -162,6 +163,8 @@ class CastingSolver {
   CompletionEstimate solidEstimate_;  // the wall time to all solid, for the ETA (endWhenSolid)
   long flowSubSteps_ = 0;
   double lastFlowSubStep_ = 0;
+  // the flow steps controlDict's maxCo would have taken over the cooling mode's heat steps
+  double flowStepsWithoutCooling_ = 0;
   HealthSettings health_;
   HealthWarnings warnings_;
   double meanStableDeltaT_ = 0;  // running mean of the models' stable step

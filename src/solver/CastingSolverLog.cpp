@@ -47,9 +47,10 @@ void CastingSolver::logHeat() {
     std::string limiter;
     const double limit = energy_->stableDeltaT(limiter);
     line << "Heat: " << heatSteps_ << " heat steps in " << stepsTaken_ << " steps ("
-         << (cooling_ ? "cooling" : heatSetup_.heatEveryFlowStep ? "every flow step" : "interval auto")
-         << ", the last "
-         << heatDeltaT_ << " s long; " << limiter << " limit " << limit << " s)\n";
+         << (cooling_                       ? "cooling"
+             : heatSetup_.heatEveryFlowStep ? "every flow step"
+                                            : "interval auto")
+         << ", the last " << heatDeltaT_ << " s long; " << limiter << " limit " << limit << " s)\n";
   }
   for (const HeatCloud& heat : energy_->context().clouds) {
     if (heat.fixedTemperature) continue;
@@ -79,9 +80,9 @@ void CastingSolver::logSolidification() {
   const SolidificationSummary s = solidification_->summary();
   std::ostringstream line;
   line.precision(4);
-  line << "Solidification: solid fraction " << s.solidFraction << " (by mass); of "
-       << s.particles << " particles " << s.liquid << " liquid, " << s.frozen << " frozen ("
-       << s.solid << " fully solid), " << s.particles - s.frozen << " flowing";
+  line << "Solidification: solid fraction " << s.solidFraction << " (by mass); of " << s.particles
+       << " particles " << s.liquid << " liquid, " << s.frozen << " frozen (" << s.solid
+       << " fully solid), " << s.particles - s.frozen << " flowing";
   if (s.viscosityCapped > 0) line << " (" << s.viscosityCapped << " with mu capped)";
   // with endWhenSolid the run ends with the last liquid, not at endTime: the progress line's
   // ETA follows the rise of the solid fraction (CompletionEstimate)
@@ -115,6 +116,43 @@ void CastingSolver::logTimeSpent() {
            << " times (skin " << neighbourhood_->skin() << " m)\n";
   }
   info() << "Run health: " << warnings_.summary() << '\n';
+}
+
+// What the run left out, and about what it saved at its own measured cost per unit of work (an
+// estimate: the skipped work would have cost about what the same work cost where it was done).
+void CastingSolver::logWorkSkipped() {
+  if (!flow_) return;
+  const FlowWork& work = flow_->work();
+  const FlowTimings& t = flow_->timings();
+  std::ostringstream line;
+  line.precision(3);
+  line << "Work skipped since this start (estimates at this run's own cost):";
+  const std::uint64_t computed = work.particleSteps - work.skippedFrozen;
+  if (work.skippedFrozen > 0 && computed > 0) {
+    const double perParticleStep = t.rates / double(computed);
+    line << "\n    flow rates of frozen metal with no melt within two neighbour hops: "
+         << work.skippedFrozen << " of " << work.particleSteps << " particle-steps ("
+         << 100.0 * double(work.skippedFrozen) / double(work.particleSteps) << " %), about "
+         << perParticleStep * double(work.skippedFrozen) << " s at " << 1e6 * perParticleStep
+         << " us per computed particle-step";
+  }
+  if (flowSubSteps_ > 0 && flowStepsWithoutCooling_ > double(flowSubSteps_)) {
+    const double perFlowStep =
+        work.flowSteps > 0
+            ? (searchSeconds_ + t.wallClearance + t.rates + t.integration) / double(work.flowSteps)
+            : 0.0;
+    line << "\n    the cooling mode: " << flowSubSteps_ << " flow steps where controlDict's maxCo "
+         << time_.settings().maxCo << " would have taken about "
+         << std::llround(flowStepsWithoutCooling_) << ", about "
+         << perFlowStep * (flowStepsWithoutCooling_ - double(flowSubSteps_)) << " s at "
+         << perFlowStep << " s per flow step";
+  }
+  if (energy_ && work.flowSteps > std::uint64_t(heatSteps_)) {
+    line << "\n    heat: " << heatSteps_ << " heat steps for " << work.flowSteps
+         << " flow steps (each of the heat's own stable length)";
+  }
+  // the searches the pair lists' skin saved: the "Pair lists" line above
+  info() << line.str() << '\n';
 }
 
 void CastingSolver::logRereadMessage() {

@@ -52,6 +52,14 @@ struct FlowSettings {
 };
 
 // Wall time spent in each part of the flow's steps, seconds since construction.
+// The work the rate passes did and left out since the start, in particle-steps (one particle's
+// rates in one flow step), for the log's account of what the run skipped.
+struct FlowWork {
+  std::uint64_t flowSteps = 0;      // acceleration passes
+  std::uint64_t particleSteps = 0;  // every fluid particle at every acceleration pass
+  std::uint64_t skippedFrozen = 0;  // frozen with no melt within two neighbour hops
+};
+
 struct FlowTimings {
   double neighbourSearch = 0;  // grids, reorder, pair lists (a flow with its own neighbourhood)
   double wallClearance = 0;    // keepClearOfWalls
@@ -77,8 +85,8 @@ struct FlowStepLimits {
 // conserve momentum pair by pair; and the momentum the last wall clearance took out of the fluid
 // particles it stopped at this wall.
 struct WallLoad {
-  Vector force = Vector::Zero();   // N, at the last evaluation of the rates
-  Vector torque = Vector::Zero();  // N m about the origin, likewise
+  Vector force = Vector::Zero();                    // N, at the last evaluation of the rates
+  Vector torque = Vector::Zero();                   // N m about the origin, likewise
   Vector clearanceImpulse = Vector::Zero();         // N s, of the last keepClearOfWalls
   Vector clearanceAngularImpulse = Vector::Zero();  // N m s about the origin, likewise
 };
@@ -160,6 +168,7 @@ class WeaklyCompressibleFlow {
   const WallClearanceReport& lastWallClearance() const { return lastClearance_; }
 
   const FlowTimings& timings() const { return timings_; }
+  const FlowWork& work() const { return work_; }
 
  private:
   // Which rates a pass computes: both at once (riemann, standard), or, for deltaSPH's
@@ -215,8 +224,8 @@ class WeaklyCompressibleFlow {
   std::vector<std::vector<Vector>> loadForce_, loadTorque_;
   std::vector<Vector> clearanceVelocityChange_;  // of the last keepClearOfWalls, with loads
   std::vector<int> clearanceWall_;
-  std::vector<Matrix> correction_;               // L_i, with kernelCorrection or deltaSPH
-  std::vector<Vector> densityGradient_;          // renormalised grad rho (deltaSPH)
+  std::vector<Matrix> correction_;       // L_i, with kernelCorrection or deltaSPH
+  std::vector<Vector> densityGradient_;  // renormalised grad rho (deltaSPH)
   WallClearanceReport lastClearance_;
   std::vector<FluidForceModel*> forceModels_;
   // where the models that asked for the colour gradient want it, and m / rho for its sum
@@ -224,6 +233,7 @@ class WeaklyCompressibleFlow {
   std::vector<Real> pairVolume_;
   std::vector<std::uint8_t> frozenTouchesMelt_, frozenNearMelt_;  // markFrozenNearMelt
   FlowTimings timings_;
+  FlowWork work_;
 };
 
 }  // namespace sphcast

@@ -40,8 +40,8 @@ void WeaklyCompressibleFlow::extrapolateWallPressure() {
           const Vector xkf = separation(wallX[k], x[f]);
           sums.add(kernel.value(xkf.norm()), p[f], rho[f], xkf);
         }
-        wallPressure[k] = sums.wallPressure(
-            wallAcceleration ? Vector(gravity - wallAcceleration[k]) : gravity);
+        wallPressure[k] =
+            sums.wallPressure(wallAcceleration ? Vector(gravity - wallAcceleration[k]) : gravity);
       }
     }
   };
@@ -148,13 +148,12 @@ void WeaklyCompressibleFlow::computeRatesFor() {
       loadForce_[w].resize(x.size());
       loadTorque_[w].resize(x.size());
     }
-    walls.push_back({walls_[w]->positions().data(), walls_[w]->scalarField("volume").data(),
-                     walls_[w]->vectorField("normal").data(),
-                     walls_[w]->scalarField("wallDistance").data(), wallPressure_[w].data(),
-                     &wallPairs(w),
-                     walls_[w]->hasVectorField("U") ? walls_[w]->vectorField("U").data() : nullptr,
-                     measured ? loadForce_[w].data() : nullptr,
-                     measured ? loadTorque_[w].data() : nullptr});
+    walls.push_back(
+        {walls_[w]->positions().data(), walls_[w]->scalarField("volume").data(),
+         walls_[w]->vectorField("normal").data(), walls_[w]->scalarField("wallDistance").data(),
+         wallPressure_[w].data(), &wallPairs(w),
+         walls_[w]->hasVectorField("U") ? walls_[w]->vectorField("U").data() : nullptr,
+         measured ? loadForce_[w].data() : nullptr, measured ? loadTorque_[w].data() : nullptr});
   }
   const Real halfSpacing = Real(0.5) * spacing;
   const Vector gravity = settings_.gravity;
@@ -178,12 +177,22 @@ void WeaklyCompressibleFlow::computeRatesFor() {
   // melt moving against them would change. One hop is not enough: the melt feels the pressure of
   // the frozen particles within h, and theirs depends on their own frozen neighbours (measured:
   // with one hop a pocket of melt in frozen metal settled 0.7 dx lower, its particles to 0.44 dx).
-  const Real* frozen = fluid_.hasScalarField("frozen") ? fluid_.scalarField("frozen").data()
-                                                       : nullptr;
+  const Real* frozen =
+      fluid_.hasScalarField("frozen") ? fluid_.scalarField("frozen").data() : nullptr;
   const std::uint8_t* nearMelt = nullptr;
   if (frozen) {
     markFrozenNearMelt();
     nearMelt = frozenNearMelt_.data();
+  }
+  if constexpr (wantsAcceleration) {  // once per flow step
+    ++work_.flowSteps;
+    work_.particleSteps += x.size();
+    if (frozen) {
+      std::uint64_t skipped = 0;
+#pragma omp parallel for schedule(static) reduction(+ : skipped)
+      for (std::size_t i = 0; i < x.size(); ++i) skipped += frozen[i] != 0 && !nearMelt[i];
+      work_.skippedFrozen += skipped;
+    }
   }
 
   // The pair loop, given how it takes x_i - x_j: the minimum image only when an axis is
@@ -281,10 +290,9 @@ void WeaklyCompressibleFlow::computeRatesFor() {
             FluidPair<Dim, Interface, Viscosity>::accumulateDensityRate(
                 self, {rho[j], p[j], v[j]}, mass[j], xij, distance[n], pairGradW, constants, rate);
           } else {
-            FluidPair<Dim, Interface, Viscosity>::accumulate(self, {rho[j], p[j], v[j]}, mass[j],
-                                                             muI, mu[j], vi - v[j], xij,
-                                                             distance[n], pairGradW, constants,
-                                                             rate, accel);
+            FluidPair<Dim, Interface, Viscosity>::accumulate(
+                self, {rho[j], p[j], v[j]}, mass[j], muI, mu[j], vi - v[j], xij, distance[n],
+                pairGradW, constants, rate, accel);
           }
           if (colourGradient) colour -= (pairVolume[j] * gradientFactor[n]) * xij;
           if (diffusive) {
@@ -303,8 +311,8 @@ void WeaklyCompressibleFlow::computeRatesFor() {
           const Real r = xik.norm();
           const Vector wallVelocity = wall.velocity ? wall.velocity[k] : Vector::Zero();
           const WallParticle particle{
-              wallVelocity,   wall.normal[k],   wall.volume[k],
-              wall.depth[k],  wall.pressure[k], eos.density(wall.pressure[k], restDensity[i])};
+              wallVelocity,  wall.normal[k],   wall.volume[k],
+              wall.depth[k], wall.pressure[k], eos.density(wall.pressure[k], restDensity[i])};
           const Vector gradW = kernel.gradient(xik, r);
           if (colourGradient) colour -= (wall.volume[k] * kernel.derivativeOverDistance(r)) * xik;
           Vector pairAcceleration = Vector::Zero();

@@ -17,6 +17,15 @@ copyTutorial conicalMold
 PYTHON=$python ./Allrun > log.Allrun 2>&1 || { cat log.Allrun >&2; fail "conicalMold: Allrun"; }
 cat log.compareWithReference
 grep -q "^Run health: no warnings" log.sphCastFoam || fail "health warnings in the cone"
+# the log's account of the work skipped: frozen metal away from the melt computes no flow rates
+# (about half of the particle-steps in this cone), and the cooling mode's flow steps against
+# the acoustic steps of controlDict's maxCo over the same time (hundreds of times more)
+awk '/flow rates of frozen metal with no melt within two neighbour hops:/ {
+         found = 1; share = $17; sub(/\(/, "", share); if (share < 20 || share > 80) exit 1 }
+     END { if (!found) exit 1 }' log.sphCastFoam ||
+    fail "no sensible account of the skipped flow rates: $(grep -A3 'Work skipped' log.sphCastFoam)"
+awk '/the cooling mode: / { found = 1; if ($15 + 0 < 50 * $4) exit 1 } END { if (!found) exit 1 }' \
+    log.sphCastFoam || fail "no sensible account of the cooling mode: $(grep 'the cooling mode' log.sphCastFoam)"
 # the cooling mode's flow steps take its own maxCo (0.625), not controlDict's (0.25): at most
 # 0.625 dx / c = 5.625e-05 s at c = 50 m/s and dx = 4.5 mm (less by the melt's |U| / c, below
 # 1 % in the mode, where |U| < movingSpeed = 0.5 m/s), on every log line of the mode
