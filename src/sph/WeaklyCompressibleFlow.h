@@ -51,7 +51,6 @@ struct FlowSettings {
   Real cavitationPressure = std::numeric_limits<Real>::lowest();
 };
 
-// Wall time spent in each part of the flow's steps, seconds since construction.
 // The work the rate passes did and left out since the start, in particle-steps (one particle's
 // rates in one flow step), for the log's account of what the run skipped.
 struct FlowWork {
@@ -60,6 +59,7 @@ struct FlowWork {
   std::uint64_t skippedFrozen = 0;  // frozen with no melt within two neighbour hops
 };
 
+// Wall time spent in each part of the flow's steps, seconds since construction.
 struct FlowTimings {
   double neighbourSearch = 0;  // grids, reorder, pair lists (a flow with its own neighbourhood)
   double wallClearance = 0;    // keepClearOfWalls
