@@ -12,6 +12,8 @@
 #   4 K mushy range; 0.62 % at 50 across). With the harmonic mean of kappa across that range it
 #   was 4.8 %, with the held surface on the held layer's centres too 4.3 %. Bound: 4 %. The energyBalance books close to round-off, about 1e-16 of the heat
 #   content a step (2.7e-15 measured over 2,136 steps); bound 1e-12.
+# - stefanProblem restarted from its second write: the held box's surface, placed at the start,
+#   is read back with the cloud, and the end is the uninterrupted run's bytes.
 # About 5 s on one thread.
 . "$SPHCAST_TEST_TOOLS"
 findVtkPython
@@ -35,4 +37,21 @@ log=$scratch/tutorials/validation/stefanProblem/log.compareWithNeumann
 [ "$(grep -c '^t = ' "$log")" -eq 4 ] || fail "stefanProblem: not four written times"
 below 0.04 "$(awk '/^worst front error/ { print $NF }' "$log")" "Neumann front, worst error"
 below 1e-12 "$(awk '/^energyBalance:/ { print $NF }' "$log")" "energyBalance relative imbalance"
-pass "heat tutorials through the tools: erf profile within 0.6 %, Neumann front within 4 %, books closed"
+
+# The held box's surface, placed at the start (no normal or wallDistance from setCastFields), is
+# written with the cloud: a restart from the second write reads it back instead of placing it
+# again, and ends on the uninterrupted run's bytes.
+case=$scratch/tutorials/validation/stefanProblem
+grep -q "held surface of cloud 'wall' placed midway" "$case/log.sphCastFoam" ||
+    fail "stefanProblem: the held box's surface was not placed"
+mkdir -p "$scratch/uninterrupted"
+cp "$case/10.6619/melt.vtp" "$case/10.6619/wall.vtp" "$scratch/uninterrupted/"
+(cd "$case" && rm -rf 7.99643 10.6619 && setEntry system/controlDict startFrom latestTime &&
+    sphCastFoam > log.restart 2>&1) || fail "stefanProblem restart: $(tail -3 "$case/log.restart")"
+! grep -q "held surface of cloud" "$case/log.restart" ||
+    fail "stefanProblem restart: the held surface was placed again"
+for cloud in melt wall; do
+    cmp -s "$case/10.6619/$cloud.vtp" "$scratch/uninterrupted/$cloud.vtp" ||
+        fail "stefanProblem restart: $cloud at the end differs from the uninterrupted run"
+done
+pass "heat tutorials through the tools: erf profile within 0.6 %, Neumann front within 4 %, books closed, a held box's restart bit for bit"
