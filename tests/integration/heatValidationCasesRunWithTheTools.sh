@@ -10,8 +10,9 @@
 # - stefanProblem at 12.5 particles across the frozen layer: the worst front error over four
 #   writes against Neumann's solution: 2.9 % (the front moves by whole lattice columns through a
 #   4 K mushy range; 0.62 % at 50 across). With the harmonic mean of kappa across that range it
-#   was 4.8 %, with the held surface on the held layer's centres too 4.3 %. Bound: 4 %. The energyBalance books close to round-off, about 1e-16 of the heat
-#   content a step (2.7e-15 measured over 2,136 steps); bound 1e-12.
+#   was 4.8 %, with the held surface on the held layer's centres too 4.3 %. Bound: 4 %. The
+#   energyBalance books close to round-off, about 1e-16 of the heat content a step (2.5e-15
+#   measured over 2,136 steps); bound 1e-12.
 # - stefanProblem restarted from its second write: the held box's surface, placed at the start,
 #   is read back with the cloud, and the end is the uninterrupted run's bytes.
 # About 5 s on one thread.
