@@ -26,9 +26,9 @@ namespace sphcast {
 // AC4CH's 175 to 85 W/m/K across its 58 K mushy range, narrower than a spacing beside a chill)
 // midway between them, for pairs up to h apart: an error first order in h (Chvorinov's plates at
 // dx = 1 mm: the 10 mm plate 9.6 % late, n = 1.951; 3.2 % and 1.985 with the transform).
-// Between two materials the harmonic mean stays. The printed (13) lacks the factor x_ij / (|x_ij|^2 + eta^2) that turns
-// the kernel gradient into a second derivative; without it the sum is not a Laplacian (doc/
-// physics.md §10.2.1). The harmonic mean of the conductivities keeps the flux continuous across a
+// Between two materials the harmonic mean stays.
+// The printed (13) lacks the factor x_ij / (|x_ij|^2 + eta^2) that turns the kernel gradient
+// into a second derivative; without it the sum is not a Laplacian (doc/physics.md §10.2.1). The harmonic mean of the conductivities keeps the flux continuous across a
 // jump of kappa (metal against mold). The pair term is antisymmetric: heat moves between
 // particles, sum_i m_i du_i/dt = 0 to round-off.
 //
@@ -36,7 +36,8 @@ namespace sphcast {
 // depth d_k behind the surface) stands for the surface held at its T, not for a particle at T:
 // the free particle f in front of it, at d_f, sees the temperature extended linearly through the
 // surface, T_k' = T_k - (T_f - T_k) d_k / d_f, and conducts with its own kappa on both sides:
-//   (T_f - T_k') = (1 + d_k / d_f) (T_f - T_k),   4 kappa_f kappa_k / (kappa_f + kappa_k) -> 2 kappa_f
+//   (T_f - T_k') = (1 + d_k / d_f) (T_f - T_k),
+//   4 kappa_f kappa_k / (kappa_f + kappa_k) -> 2 kappa_f
 // (as the flow's no-slip wall extends the velocity, Morris, Fox & Zhu 1997), so the held surface
 // lies where the mold's surface is. Without it a held surface lay on the first held layer's
 // centres, half a spacing behind particleizeMold's wall, and further back for the layers behind
