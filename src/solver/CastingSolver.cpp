@@ -143,18 +143,19 @@ void CastingSolver::flushPendingHeat() {
 // right for a melt that creeps, wrong for one that moves (updateCoolingMode leaves the mode then).
 void CastingSolver::evolveCooling(double deltaT) {
   heatStepInPlace(deltaT);
-  {  // what the run would have taken without the mode, for the log (logWorkSkipped)
-    std::string limiter;
-    flowStepsWithoutCooling_ +=
-        deltaT / flow_->stepLimits(time_.settings().maxCo).smallest(limiter);
-  }
   for (int k = 0; k < solidificationSetup_.cooling->flowStepsPerHeatStep; ++k) {
     std::string limiter;
-    const double flowDeltaT = flow_->stepLimits(coolingMaxCo()).smallest(limiter);
+    FlowStepLimits limits = flow_->stepLimits(coolingMaxCo());
+    const double flowDeltaT = limits.smallest(limiter);
     if (!(flowDeltaT > 0) || !std::isfinite(flowDeltaT)) {
       std::ostringstream problem;
       problem << "the flow's stable step (" << limiter << ") is " << flowDeltaT;
       throw Error(problem.str());
+    }
+    if (k == 0) {  // the steps controlDict's maxCo would take instead, for logWorkSkipped
+      limits.acoustic *= time_.settings().maxCo / coolingMaxCo();  // the limit scales with maxCo
+      std::string without;
+      flowStepsWithoutCooling_ += deltaT / limits.smallest(without);
     }
     flow_->kickAndDrift(flowDeltaT);
     driftBodies(flowDeltaT);

@@ -197,7 +197,8 @@ class WeaklyCompressibleFlow {
   }
   void computeRates(RatePart part = RatePart::both);
   void holdFrozenParticles();
-  void markFrozenNearMelt();
+  // Returns the count of frozen particles with no melt within two hops (the rate pass skips them).
+  std::uint64_t markFrozenNearMelt();
   template <int Dim>
   void computeRatesInDimension(RatePart part);
   template <int Dim, class Interface>

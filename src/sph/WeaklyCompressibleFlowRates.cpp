@@ -180,19 +180,15 @@ void WeaklyCompressibleFlow::computeRatesFor() {
   const Real* frozen =
       fluid_.hasScalarField("frozen") ? fluid_.scalarField("frozen").data() : nullptr;
   const std::uint8_t* nearMelt = nullptr;
+  std::uint64_t skipped = 0;
   if (frozen) {
-    markFrozenNearMelt();
+    skipped = markFrozenNearMelt();
     nearMelt = frozenNearMelt_.data();
   }
   if constexpr (wantsAcceleration) {  // once per flow step
     ++work_.flowSteps;
     work_.particleSteps += x.size();
-    if (frozen) {
-      std::uint64_t skipped = 0;
-#pragma omp parallel for schedule(static) reduction(+ : skipped)
-      for (std::size_t i = 0; i < x.size(); ++i) skipped += frozen[i] != 0 && !nearMelt[i];
-      work_.skippedFrozen += skipped;
-    }
+    work_.skippedFrozen += skipped;
   }
 
   // The pair loop, given how it takes x_i - x_j: the minimum image only when an axis is
@@ -413,7 +409,7 @@ void WeaklyCompressibleFlow::computeRates(RatePart part) {
 
 // For each particle, whether a melt (not frozen) particle lies within two neighbour hops:
 // 1 for melt and the frozen particles it reaches that way (computeRatesFor skips the others).
-void WeaklyCompressibleFlow::markFrozenNearMelt() {
+std::uint64_t WeaklyCompressibleFlow::markFrozenNearMelt() {
   const auto& frozen = fluid_.scalarField("frozen");
   const std::uint64_t* begins = fluidPairs().offsets().data();
   const std::uint64_t* ends = fluidPairs().ends().data();
@@ -429,14 +425,17 @@ void WeaklyCompressibleFlow::markFrozenNearMelt() {
     }
     frozenTouchesMelt_[i] = touches ? 1 : 0;
   }
-#pragma omp parallel for schedule(static)
+  std::uint64_t skipped = 0;
+#pragma omp parallel for schedule(static) reduction(+ : skipped)
   for (std::size_t i = 0; i < count; ++i) {
     bool near = frozenTouchesMelt_[i] != 0;
     for (std::uint64_t k = begins[i]; k < ends[i] && !near; ++k) {
       near = frozenTouchesMelt_[neighbours[k]] != 0;
     }
     frozenNearMelt_[i] = near ? 1 : 0;
+    skipped += near ? 0 : 1;
   }
+  return skipped;
 }
 
 }  // namespace sphcast
