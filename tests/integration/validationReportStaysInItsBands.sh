@@ -1,8 +1,8 @@
 #!/bin/bash
 # tutorials/validation/Allreport quick --check (the speed-against-error report's quick level):
-# 16 points of 10 cases (nine validation tutorials and conicalMold), each run with its own Allrun at its resolution by the
-# tools under test; every error must lie in its recorded band (tutorials/validation/reportBands),
-# and the report must be written with a figure per case.
+# 16 points of 10 cases (nine validation tutorials and conicalMold), each run with its own Allrun
+# at its resolution by the tools under test; every error must lie in its recorded band
+# (tutorials/validation/reportBands), and the report must be written with a figure per case.
 . "$SPHCAST_TEST_TOOLS"
 validation=$(cd "$(dirname "$0")/../../tutorials/validation" && pwd)
 for python in ${PYTHON:-} python3 /usr/bin/python3; do
