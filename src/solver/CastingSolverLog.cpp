@@ -1,6 +1,8 @@
 // What the solver prints at each printed step and at the end (OpenFOAM's log style).
 #include "solver/CastingSolver.h"
 
+#include <sys/resource.h>
+
 #include <algorithm>
 #include <limits>
 #include <ostream>
@@ -116,6 +118,11 @@ void CastingSolver::logTimeSpent() {
            << " times (skin " << neighbourhood_->skin() << " m)\n";
   }
   info() << "Run health: " << warnings_.summary() << '\n';
+  // the process's peak resident memory (Linux gives ru_maxrss in KiB): what a larger case needs
+  rusage usage{};
+  if (getrusage(RUSAGE_SELF, &usage) == 0) {
+    info() << "Peak memory (resident): " << double(usage.ru_maxrss) / 1024.0 << " MiB\n";
+  }
 }
 
 // What the run left out, and about what it saved at its own measured cost per unit of work (an
