@@ -159,6 +159,9 @@ void CastingSolver::logWorkSkipped() {
          << " flow steps (each of the heat's own stable length)";
   }
   // the searches the pair lists' skin saved: the "Pair lists" line above
+  if (line.str().find('\n') == std::string::npos) {
+    line << " none (no frozen metal, cooling mode or heat)";
+  }
   info() << line.str() << '\n';
 }
 
