@@ -5,9 +5,7 @@
 # (tutorials/validation/reportBands), and the report must be written with a figure per case.
 . "$SPHCAST_TEST_TOOLS"
 validation=$(cd "$(dirname "$0")/../../tutorials/validation" && pwd)
-for python in ${PYTHON:-} python3 /usr/bin/python3; do
-    "$python" -c 'import vtk' 2> /dev/null && break
-done
+findVtkPython
 export PYTHON=$python SPHCAST_RUN_BIN=$SPHCAST_BIN
 "$python" "$validation/Allreport" quick --check --runs "$scratch/runs" > "$scratch/log.Allreport" 2>&1 ||
     fail "Allreport quick --check: $(tail -20 "$scratch/log.Allreport")"
