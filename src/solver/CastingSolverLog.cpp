@@ -134,8 +134,10 @@ void CastingSolver::logWorkSkipped() {
   std::ostringstream line;
   line.precision(3);
   line << "Work skipped since this start (estimates at this run's own cost):";
+  bool skippedAny = false;
   const std::uint64_t computed = work.particleSteps - work.skippedFrozen;
   if (work.skippedFrozen > 0 && computed > 0) {
+    skippedAny = true;
     const double perParticleStep = t.rates / double(computed);
     line << "\n    flow rates of frozen metal with no melt within two neighbour hops: "
          << work.skippedFrozen << " of " << work.particleSteps << " particle-steps ("
@@ -144,6 +146,7 @@ void CastingSolver::logWorkSkipped() {
          << " us per computed particle-step";
   }
   if (flowSubSteps_ > 0 && flowStepsWithoutCooling_ > double(flowSubSteps_)) {
+    skippedAny = true;
     const double perFlowStep =
         work.flowSteps > 0
             ? (searchSeconds_ + t.wallClearance + t.rates + t.integration) / double(work.flowSteps)
@@ -155,13 +158,12 @@ void CastingSolver::logWorkSkipped() {
          << perFlowStep << " s per flow step";
   }
   if (energy_ && work.flowSteps > std::uint64_t(heatSteps_)) {
+    skippedAny = true;
     line << "\n    heat: " << heatSteps_ << " heat steps for " << work.flowSteps
          << " flow steps (each of the heat's own stable length)";
   }
   // the searches the pair lists' skin saved: the "Pair lists" line above
-  if (line.str().find('\n') == std::string::npos) {
-    line << " none (no frozen metal, cooling mode or heat)";
-  }
+  if (!skippedAny) line << " none (no frozen metal, cooling mode or heat)";
   info() << line.str() << '\n';
 }
 

@@ -28,9 +28,10 @@ namespace sphcast {
 // dx = 1 mm: the 10 mm plate 9.6 % late, n = 1.951; 3.2 % and 1.985 with the transform).
 // Between two materials the harmonic mean stays.
 // The printed (13) lacks the factor x_ij / (|x_ij|^2 + eta^2) that turns the kernel gradient
-// into a second derivative; without it the sum is not a Laplacian (doc/physics.md §10.2.1). The harmonic mean of the conductivities keeps the flux continuous across a
-// jump of kappa (metal against mold). The pair term is antisymmetric: heat moves between
-// particles, sum_i m_i du_i/dt = 0 to round-off.
+// into a second derivative; without it the sum is not a Laplacian (doc/physics.md §10.2.1).
+// The harmonic mean of the conductivities keeps the flux continuous across a jump of kappa
+// (metal against mold). The pair term is antisymmetric: heat moves between particles,
+// sum_i m_i du_i/dt = 0 to round-off.
 //
 // A held particle of a mold with a surface (particleizeMold's `normal` and `wallDistance`, its
 // depth d_k behind the surface) stands for the surface held at its T, not for a particle at T:
