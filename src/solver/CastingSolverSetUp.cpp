@@ -291,9 +291,10 @@ void CastingSolver::setUpHeat() {
         covering.push_back(wall);
       }
     }
+    // the walls keep their lattice (fixed or rigid): nothing inside them to gate
     exposedArea_ = std::make_unique<ExposedArea>(energy_->exposedAreaForm(), context.dimension,
                                                  context.supportRadius, context.spacing, exposed,
-                                                 covering, *neighbourhood_);
+                                                 covering, *neighbourhood_, wallClouds_);
   }
   info() << "Heat transfer: energy equation (17) on";
   for (const HeatCloud& heat : energy_->context().clouds) {

@@ -46,7 +46,83 @@ Real calibratedFactorIn(ExposedAreaForm form, Real supportRadius, Real spacing) 
   return Real(1) / columnSum;
 }
 
+// c_full = -(1/d) sum_j V_j r dW/dr over a full cubic lattice (about 1).
+template <int Dim>
+Real fullLatticeMomentIn(Real supportRadius, Real spacing) {
+  const WendlandC2Kernel<Dim> kernel(supportRadius);
+  const Real cell = std::pow(spacing, Dim);
+  const int reach = static_cast<int>(std::ceil(supportRadius / spacing)) + 1;
+  const int dzRange = Dim == 3 ? reach : 0;
+  Real sum = 0;
+  for (int dz = -dzRange; dz <= dzRange; ++dz) {
+    for (int dy = -reach; dy <= reach; ++dy) {
+      for (int dx = -reach; dx <= reach; ++dx) {
+        const Real r = spacing * std::sqrt(Real(dx * dx + dy * dy + dz * dz));
+        sum -= cell * kernel.derivativeOverDistance(r) * r * r / Real(Dim);
+      }
+    }
+  }
+  return sum;
+}
+
+// The fullness c_i = -(1/d) sum_j V_j r_ij dW/dr(r_ij) / c_full (the trace of the first-moment
+// matrix sum_j V_j x_ji grad_i W_ij over d, 1 in a full support) and its Shepard mean
+// cbar_i = sum_j V_j W_ij c_j / sum_j V_j W_ij, over the layers k = 0, 1, ... of a semi-infinite
+// cubic lattice under a flat free surface: cbar of the deepest layer whose gradient (the area)
+// is not zero.
+template <int Dim>
+Real deepestLayerFullnessIn(Real supportRadius, Real spacing) {
+  const WendlandC2Kernel<Dim> kernel(supportRadius);
+  const Real cell = std::pow(spacing, Dim);
+  const int reach = static_cast<int>(std::ceil(supportRadius / spacing)) + 1;
+  const int dyRange = Dim == 3 ? reach : 0;
+  auto moment = [&](Real r) {  // -r dW/dr / d, of one neighbour
+    return -cell * kernel.derivativeOverDistance(r) * r * r / Real(Dim);
+  };
+  const Real full = fullLatticeMomentIn<Dim>(supportRadius, spacing);
+  const int layers = 3 * reach;
+  std::vector<Real> fullness(layers), gradient(layers);
+  for (int layer = 0; layer < layers; ++layer) {
+    Real c = 0, gz = 0;
+    for (int dz = -reach; dz <= reach; ++dz) {
+      if (layer + dz < 0) continue;  // above the surface: no particle
+      for (int dy = -dyRange; dy <= dyRange; ++dy) {
+        for (int dx = -reach; dx <= reach; ++dx) {
+          const Real r = spacing * std::sqrt(Real(dx * dx + dy * dy + dz * dz));
+          c += moment(r);
+          gz += cell * kernel.derivativeOverDistance(r) * spacing * Real(dz);
+        }
+      }
+    }
+    fullness[layer] = c / full;
+    gradient[layer] = std::abs(gz);
+  }
+  Real deepest = 0;
+  for (int layer = 0; layer + reach < layers; ++layer) {
+    if (!(gradient[layer] > Real(1e-12) * gradient[0])) break;
+    Real weighted = 0, sum = 0;
+    for (int dz = -reach; dz <= reach; ++dz) {
+      if (layer + dz < 0) continue;
+      for (int dy = -dyRange; dy <= dyRange; ++dy) {
+        for (int dx = -reach; dx <= reach; ++dx) {
+          const Real r = spacing * std::sqrt(Real(dx * dx + dy * dy + dz * dz));
+          const Real w = cell * kernel.value(r);
+          weighted += w * fullness[static_cast<std::size_t>(layer + dz)];
+          sum += w;
+        }
+      }
+    }
+    deepest = weighted / sum;
+  }
+  return deepest;
+}
+
 }  // namespace
+
+Real ExposedArea::deepestAreaLayerFullness(int dimension, Real supportRadius, Real spacing) {
+  return dimension == 2 ? deepestLayerFullnessIn<2>(supportRadius, spacing)
+                        : deepestLayerFullnessIn<3>(supportRadius, spacing);
+}
 
 Real ExposedArea::calibratedAreaFactor(ExposedAreaForm form, int dimension, Real supportRadius,
                                        Real spacing) {
@@ -56,14 +132,25 @@ Real ExposedArea::calibratedAreaFactor(ExposedAreaForm form, int dimension, Real
 
 ExposedArea::ExposedArea(ExposedAreaForm form, int dimension, Real supportRadius, Real spacing,
                          std::vector<ParticleCloud*> exposed,
-                         std::vector<const ParticleCloud*> covering, Neighbourhood& neighbourhood)
+                         std::vector<const ParticleCloud*> covering, Neighbourhood& neighbourhood,
+                         std::vector<const ParticleCloud*> lattices)
     : form_(form),
       dimension_(dimension),
       supportRadius_(supportRadius),
       areaFactor_(calibratedAreaFactor(form, dimension, supportRadius, spacing)),
       exposed_(std::move(exposed)),
       covering_(std::move(covering)),
+      lattices_(std::move(lattices)),
       neighbourhood_(neighbourhood) {
+  if (form_ == ExposedAreaForm::gradient) {
+    // the gate's ramp, from the flat lattice's deepest layer with area: 0.920 .. 0.970 at
+    // h = 3 dx in 3D (the thresholds measured best there, below)
+    const Real deepest = deepestAreaLayerFullness(dimension, supportRadius, spacing);
+    gateFrom_ = deepest + Real(0.26) * (Real(1) - deepest);
+    gateTo_ = deepest + Real(0.72) * (Real(1) - deepest);
+    fullLatticeMoment_ = dimension == 2 ? fullLatticeMomentIn<2>(supportRadius, spacing)
+                                        : fullLatticeMomentIn<3>(supportRadius, spacing);
+  }
   for (ParticleCloud* cloud : exposed_) {
     cloud->addScalarField("exposedArea");
     cloud->addScalarField("granularity");
@@ -91,26 +178,57 @@ void ExposedArea::computeIn() {
   for (std::size_t c = 0; c < covering_.size(); ++c) {
     coveringVolume_[c] = particleVolumes(*covering_[c], dimension_);
   }
+  // Per exposed cloud: its volumes (an exposed cloud covers too, the solver's and the tests' do:
+  // its volumes are there) and its pair lists with every covering cloud.
+  struct Exposed {
+    std::vector<Real> ownVolume;  // only if it does not cover
+    const std::vector<Real>* volume;
+    std::vector<const NeighbourList*> lists;
+  };
+  std::vector<Exposed> exposed(exposed_.size());
+  for (std::size_t e = 0; e < exposed_.size(); ++e) {
+    const auto self = std::find(covering_.begin(), covering_.end(), exposed_[e]);
+    if (self == covering_.end()) {
+      exposed[e].ownVolume = particleVolumes(*exposed_[e], dimension_);
+      exposed[e].volume = &exposed[e].ownVolume;
+    } else {
+      exposed[e].volume = &coveringVolume_[static_cast<std::size_t>(self - covering_.begin())];
+    }
+    for (const ParticleCloud* other : covering_) {
+      exposed[e].lists.push_back(&neighbourhood_.pairs(*exposed_[e], *other));
+    }
+  }
+  // The gradient form's gate (see the header): first each particle's |grad s|, s and fullness
+  // c, then the Shepard mean of c and the area. A particle of a covering cloud whose area is
+  // not wanted counts as full (c = 1).
+  fullness_.resize(exposed_.size());
+  std::vector<const Real*> coveringFullness(covering_.size(), nullptr);
+  for (std::size_t c = 0; c < covering_.size(); ++c) {
+    const auto other = std::find(exposed_.begin(), exposed_.end(), covering_[c]);
+    if (gradientForm && other != exposed_.end()) {
+      auto& values = fullness_[static_cast<std::size_t>(other - exposed_.begin())];
+      values.resize(covering_[c]->size());
+      coveringFullness[c] = values.data();
+    }
+  }
+  const Real momentScale = Real(-1) / (Real(Dim) * fullLatticeMoment_);
+  std::vector<std::vector<Real>> gradientArea(exposed_.size());
   auto passWith = [&](auto separation) {
-    for (ParticleCloud* cloud : exposed_) {
-      // an exposed cloud covers too (the solver's and the tests' do): its volumes are there
-      const auto self = std::find(covering_.begin(), covering_.end(), cloud);
-      const std::vector<Real> ownVolume =
-          self == covering_.end() ? particleVolumes(*cloud, dimension_) : std::vector<Real>();
-      const std::vector<Real>& volume =
-          self == covering_.end()
-              ? ownVolume
-              : coveringVolume_[static_cast<std::size_t>(self - covering_.begin())];
+    for (std::size_t e = 0; e < exposed_.size(); ++e) {
+      ParticleCloud* cloud = exposed_[e];
+      const std::vector<Real>& volume = *exposed[e].volume;
+      const auto& lists = exposed[e].lists;
       const auto& x = cloud->positions();
       auto& granularity = cloud->scalarField("granularity");
       auto& area = cloud->scalarField("exposedArea");
-      std::vector<const NeighbourList*> lists;
-      for (const ParticleCloud* other : covering_) {
-        lists.push_back(&neighbourhood_.pairs(*cloud, *other));
+      if (gradientForm) {
+        gradientArea[e].resize(x.size());
+        fullness_[e].resize(x.size());
       }
 #pragma omp parallel for schedule(static)
       for (std::size_t i = 0; i < x.size(); ++i) {
         Real s = volume[i] * selfKernel;
+        Real moment = 0;
         Vector gradient = Vector::Zero();
         for (std::size_t c = 0; c < covering_.size(); ++c) {
           const Vector* otherX = covering_[c]->positions().data();
@@ -118,17 +236,48 @@ void ExposedArea::computeIn() {
           for (const std::uint32_t j : lists[c]->of(i)) {
             const Vector xij = separation(x[i], otherX[j]);
             const Real r = xij.norm();
+            const Real derivativeOverDistance = kernel.derivativeOverDistance(r);
             s += otherVolume[j] * kernel.value(r);
-            gradient += (otherVolume[j] * kernel.derivativeOverDistance(r)) * xij;
+            gradient += (otherVolume[j] * derivativeOverDistance) * xij;
+            moment += otherVolume[j] * derivativeOverDistance * r * r;
           }
         }
         granularity[i] = s;
         if (gradientForm) {
-          area[i] = areaFactor * volume[i] * gradient.norm();
+          gradientArea[e][i] = areaFactor * volume[i] * gradient.norm();
+          fullness_[e][i] = momentScale * moment;
         } else {
           const Real q = Real(1) - volume[i] * selfKernel;
           area[i] = areaFactor * exposureWeight(Real(1) - s, q) * std::pow(volume[i], areaExponent);
         }
+      }
+    }
+    if (!gradientForm) return;
+    for (std::size_t e = 0; e < exposed_.size(); ++e) {
+      ParticleCloud* cloud = exposed_[e];
+      if (std::find(lattices_.begin(), lattices_.end(), cloud) != lattices_.end()) {
+        auto& area = cloud->scalarField("exposedArea");
+        std::copy(gradientArea[e].begin(), gradientArea[e].end(), area.begin());
+        continue;
+      }
+      const std::vector<Real>& volume = *exposed[e].volume;
+      const auto& lists = exposed[e].lists;
+      const auto& x = cloud->positions();
+      const auto& granularity = cloud->scalarField("granularity");
+      auto& area = cloud->scalarField("exposedArea");
+#pragma omp parallel for schedule(static)
+      for (std::size_t i = 0; i < x.size(); ++i) {
+        Real weighted = volume[i] * selfKernel * fullness_[e][i];
+        for (std::size_t c = 0; c < covering_.size(); ++c) {
+          const Vector* otherX = covering_[c]->positions().data();
+          const Real* otherVolume = coveringVolume_[c].data();
+          const Real* otherFullness = coveringFullness[c];
+          for (const std::uint32_t j : lists[c]->of(i)) {
+            const Real w = otherVolume[j] * kernel.value(separation(x[i], otherX[j]).norm());
+            weighted += otherFullness ? w * otherFullness[j] : w;
+          }
+        }
+        area[i] = gradientArea[e][i] * interiorGate(weighted / granularity[i], gateFrom_, gateTo_);
       }
     }
   };

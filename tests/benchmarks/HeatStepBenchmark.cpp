@@ -92,7 +92,8 @@ struct HeatCase {
       area = std::make_unique<sphcast::ExposedArea>(
           energy->exposedAreaForm(), 3, 3 * dx, dx,
           std::vector<sphcast::ParticleCloud*>{&metal, &mold},
-          std::vector<const sphcast::ParticleCloud*>{&metal, &mold}, *neighbourhood);
+          std::vector<const sphcast::ParticleCloud*>{&metal, &mold}, *neighbourhood,
+          std::vector<const sphcast::ParticleCloud*>{&mold});  // as the solver: walls ungated
     }
     neighbourhood->update(sphcast::CloudOrder::keep);
     if (area) area->compute();
