@@ -11,6 +11,28 @@ namespace sphcast {
 
 namespace {
 
+// Calls visit(dz, r) for every site of a cubic lattice of spacing dx within `reach` sites of the
+// origin (x and y; z too in 3D, the z axis normal to a flat surface in both dimensions) whose
+// z offset is at least lowestDz: -reach for the full lattice, -k for layer k under a free
+// surface (the sites above it are empty).
+template <int Dim, class Visit>
+void visitLattice(Real spacing, int reach, int lowestDz, Visit&& visit) {
+  const int dyRange = Dim == 3 ? reach : 0;
+  for (int dz = std::max(-reach, lowestDz); dz <= reach; ++dz) {
+    for (int dy = -dyRange; dy <= dyRange; ++dy) {
+      for (int dx = -reach; dx <= reach; ++dx) {
+        visit(dz, spacing * std::sqrt(Real(dx * dx + dy * dy + dz * dz)));
+      }
+    }
+  }
+}
+
+// One neighbour's share of the fullness before normalising: -V r dW/dr / d.
+template <int Dim>
+Real momentOf(const WendlandC2Kernel<Dim>& kernel, Real cell, Real r) {
+  return -cell * kernel.derivativeOverDistance(r) * r * r / Real(Dim);
+}
+
 template <int Dim>
 Real calibratedFactorIn(ExposedAreaForm form, Real supportRadius, Real spacing) {
   const WendlandC2Kernel<Dim> kernel(supportRadius);
@@ -19,16 +41,9 @@ Real calibratedFactorIn(ExposedAreaForm form, Real supportRadius, Real spacing) 
   // |d s / dz| of layer k: sum over the half lattice of V dW/dr dz / r
   auto layerGradient = [&](int layer) {
     Real gz = 0;
-    for (int dz = -reach; dz <= reach; ++dz) {
-      if (layer + dz < 0) continue;
-      const int dyRange = Dim == 3 ? reach : 0;
-      for (int dy = -dyRange; dy <= dyRange; ++dy) {
-        for (int dx = -reach; dx <= reach; ++dx) {
-          const Real r = spacing * std::sqrt(Real(dx * dx + dy * dy + dz * dz));
-          gz += cell * kernel.derivativeOverDistance(r) * spacing * Real(dz);
-        }
-      }
-    }
+    visitLattice<Dim>(spacing, reach, -layer, [&](int dz, Real r) {
+      gz += cell * kernel.derivativeOverDistance(r) * spacing * Real(dz);
+    });
     return std::abs(gz);
   };
   // Layers k = 0, 1, ... below the free surface z = 0: s_k sums over the half lattice z <= 0.
@@ -52,16 +67,8 @@ Real fullLatticeMomentIn(Real supportRadius, Real spacing) {
   const WendlandC2Kernel<Dim> kernel(supportRadius);
   const Real cell = std::pow(spacing, Dim);
   const int reach = static_cast<int>(std::ceil(supportRadius / spacing)) + 1;
-  const int dzRange = Dim == 3 ? reach : 0;
   Real sum = 0;
-  for (int dz = -dzRange; dz <= dzRange; ++dz) {
-    for (int dy = -reach; dy <= reach; ++dy) {
-      for (int dx = -reach; dx <= reach; ++dx) {
-        const Real r = spacing * std::sqrt(Real(dx * dx + dy * dy + dz * dz));
-        sum -= cell * kernel.derivativeOverDistance(r) * r * r / Real(Dim);
-      }
-    }
-  }
+  visitLattice<Dim>(spacing, reach, -reach, [&](int, Real r) { sum += momentOf(kernel, cell, r); });
   return sum;
 }
 
@@ -75,25 +82,15 @@ Real deepestLayerFullnessIn(Real supportRadius, Real spacing) {
   const WendlandC2Kernel<Dim> kernel(supportRadius);
   const Real cell = std::pow(spacing, Dim);
   const int reach = static_cast<int>(std::ceil(supportRadius / spacing)) + 1;
-  const int dyRange = Dim == 3 ? reach : 0;
-  auto moment = [&](Real r) {  // -r dW/dr / d, of one neighbour
-    return -cell * kernel.derivativeOverDistance(r) * r * r / Real(Dim);
-  };
   const Real full = fullLatticeMomentIn<Dim>(supportRadius, spacing);
   const int layers = 3 * reach;
   std::vector<Real> fullness(layers), gradient(layers);
   for (int layer = 0; layer < layers; ++layer) {
     Real c = 0, gz = 0;
-    for (int dz = -reach; dz <= reach; ++dz) {
-      if (layer + dz < 0) continue;  // above the surface: no particle
-      for (int dy = -dyRange; dy <= dyRange; ++dy) {
-        for (int dx = -reach; dx <= reach; ++dx) {
-          const Real r = spacing * std::sqrt(Real(dx * dx + dy * dy + dz * dz));
-          c += moment(r);
-          gz += cell * kernel.derivativeOverDistance(r) * spacing * Real(dz);
-        }
-      }
-    }
+    visitLattice<Dim>(spacing, reach, -layer, [&](int dz, Real r) {
+      c += momentOf(kernel, cell, r);
+      gz += cell * kernel.derivativeOverDistance(r) * spacing * Real(dz);
+    });
     fullness[layer] = c / full;
     gradient[layer] = std::abs(gz);
   }
@@ -101,17 +98,11 @@ Real deepestLayerFullnessIn(Real supportRadius, Real spacing) {
   for (int layer = 0; layer + reach < layers; ++layer) {
     if (!(gradient[layer] > Real(1e-12) * gradient[0])) break;
     Real weighted = 0, sum = 0;
-    for (int dz = -reach; dz <= reach; ++dz) {
-      if (layer + dz < 0) continue;
-      for (int dy = -dyRange; dy <= dyRange; ++dy) {
-        for (int dx = -reach; dx <= reach; ++dx) {
-          const Real r = spacing * std::sqrt(Real(dx * dx + dy * dy + dz * dz));
-          const Real w = cell * kernel.value(r);
-          weighted += w * fullness[static_cast<std::size_t>(layer + dz)];
-          sum += w;
-        }
-      }
-    }
+    visitLattice<Dim>(spacing, reach, -layer, [&](int dz, Real r) {
+      const Real w = cell * kernel.value(r);
+      weighted += w * fullness[static_cast<std::size_t>(layer + dz)];
+      sum += w;
+    });
     deepest = weighted / sum;
   }
   return deepest;
