@@ -1,0 +1,258 @@
+// MPI behind the Communicator; a build without MPI (SPHCAST_WITH_MPI off) compiles the serial
+// identities only.
+#include "parallel/Communicator.h"
+
+#include <algorithm>
+#include <cstring>
+#include <type_traits>
+
+#include "core/Error.h"
+
+#ifdef SPHCAST_WITH_MPI
+#include <mpi.h>
+#endif
+
+namespace sphcast {
+
+#ifdef SPHCAST_WITH_MPI
+namespace {
+
+bool mpiRunning() {
+  int initialised = 0, finalised = 0;
+  MPI_Initialized(&initialised);
+  MPI_Finalized(&finalised);
+  return initialised && !finalised;
+}
+
+// An MPI_Comm is a pointer in Open MPI and an int in MPICH: either fits in an intptr_t.
+static_assert(sizeof(MPI_Comm) <= sizeof(std::intptr_t));
+
+MPI_Comm toComm(std::intptr_t handle) {
+  MPI_Comm comm;
+  std::memcpy(&comm, &handle, sizeof comm);
+  return comm;
+}
+
+std::intptr_t fromComm(MPI_Comm comm) {
+  std::intptr_t handle = 0;
+  std::memcpy(&handle, &comm, sizeof comm);
+  return handle;
+}
+
+template <class T>
+MPI_Datatype mpiType() {
+  if constexpr (std::is_same_v<T, double>) {
+    return MPI_DOUBLE;
+  } else {
+    static_assert(std::is_same_v<T, std::int64_t>);
+    return MPI_INT64_T;
+  }
+}
+
+}  // namespace
+
+Communicator Communicator::world() {
+  if (!mpiRunning()) return Communicator(0, false, 0, 1);
+  int rank = 0, size = 1;
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  MPI_Comm_size(MPI_COMM_WORLD, &size);
+  return Communicator(fromComm(MPI_COMM_WORLD), true, rank, size);
+}
+
+Communicator Communicator::self() {
+  if (!mpiRunning()) return Communicator(0, false, 0, 1);
+  return Communicator(fromComm(MPI_COMM_SELF), true, 0, 1);
+}
+
+#else
+
+Communicator Communicator::world() { return Communicator(0, false, 0, 1); }
+Communicator Communicator::self() { return Communicator(0, false, 0, 1); }
+
+#endif
+
+namespace {
+enum class Reduction { sum, min, max };
+
+template <class T>
+void reduceInPlace(std::intptr_t handle, bool mpi, T* values, std::size_t count, Reduction how) {
+#ifdef SPHCAST_WITH_MPI
+  if (!mpi || count == 0) return;
+  const MPI_Op op = how == Reduction::sum ? MPI_SUM : how == Reduction::min ? MPI_MIN : MPI_MAX;
+  MPI_Allreduce(MPI_IN_PLACE, values, static_cast<int>(count), mpiType<T>(), op,
+                toComm(handle));
+#else
+  (void)handle, (void)mpi, (void)values, (void)count, (void)how;
+#endif
+}
+}  // namespace
+
+double Communicator::sum(double value) const {
+  reduceInPlace(handle_, mpi_, &value, 1, Reduction::sum);
+  return value;
+}
+std::int64_t Communicator::sum(std::int64_t value) const {
+  reduceInPlace(handle_, mpi_, &value, 1, Reduction::sum);
+  return value;
+}
+double Communicator::min(double value) const {
+  reduceInPlace(handle_, mpi_, &value, 1, Reduction::min);
+  return value;
+}
+double Communicator::max(double value) const {
+  reduceInPlace(handle_, mpi_, &value, 1, Reduction::max);
+  return value;
+}
+void Communicator::sum(std::vector<double>& values) const {
+  reduceInPlace(handle_, mpi_, values.data(), values.size(), Reduction::sum);
+}
+void Communicator::sum(std::vector<std::int64_t>& values) const {
+  reduceInPlace(handle_, mpi_, values.data(), values.size(), Reduction::sum);
+}
+void Communicator::min(std::vector<double>& values) const {
+  reduceInPlace(handle_, mpi_, values.data(), values.size(), Reduction::min);
+}
+void Communicator::max(std::vector<double>& values) const {
+  reduceInPlace(handle_, mpi_, values.data(), values.size(), Reduction::max);
+}
+
+bool Communicator::any(bool value) const {
+  std::vector<std::int64_t> flag{value ? 1 : 0};
+  sum(flag);
+  return flag[0] > 0;
+}
+
+std::vector<std::int64_t> Communicator::gather(std::int64_t value) const {
+  std::vector<std::int64_t> all(static_cast<std::size_t>(size_), 0);
+#ifdef SPHCAST_WITH_MPI
+  if (mpi_) {
+    MPI_Allgather(&value, 1, MPI_INT64_T, all.data(), 1, MPI_INT64_T, toComm(handle_));
+    return all;
+  }
+#endif
+  all[0] = value;
+  return all;
+}
+
+std::vector<std::vector<char>> Communicator::exchange(std::vector<std::vector<char>> outgoing,
+                                                      const std::vector<int>& partners) const {
+  if (outgoing.size() != static_cast<std::size_t>(size_)) {
+    throw Error("Communicator::exchange: one outgoing buffer per rank expected");
+  }
+  std::vector<std::vector<char>> incoming(static_cast<std::size_t>(size_));
+  incoming[static_cast<std::size_t>(rank_)] = std::move(outgoing[static_cast<std::size_t>(rank_)]);
+#ifdef SPHCAST_WITH_MPI
+  if (!mpi_ || size_ == 1) return incoming;
+  const MPI_Comm comm = toComm(handle_);
+  std::vector<int> peers = partners;
+  if (peers.empty()) {
+    for (int r = 0; r < size_; ++r) peers.push_back(r);
+  }
+  peers.erase(std::remove(peers.begin(), peers.end(), rank_), peers.end());
+  // the sizes first (a count per partner: all-to-all for everyone, messages otherwise), then
+  // the bytes, each message tagged and matched by its source
+  std::vector<std::int64_t> sendCounts(static_cast<std::size_t>(size_), 0);
+  std::vector<std::int64_t> receiveCounts(static_cast<std::size_t>(size_), 0);
+  for (int r : peers) sendCounts[static_cast<std::size_t>(r)] =
+      static_cast<std::int64_t>(outgoing[static_cast<std::size_t>(r)].size());
+  if (partners.empty()) {
+    MPI_Alltoall(sendCounts.data(), 1, MPI_INT64_T, receiveCounts.data(), 1, MPI_INT64_T, comm);
+  } else {
+    std::vector<MPI_Request> requests;
+    requests.reserve(2 * peers.size());
+    for (int r : peers) {
+      requests.emplace_back();
+      MPI_Irecv(&receiveCounts[static_cast<std::size_t>(r)], 1, MPI_INT64_T, r, 1, comm,
+                &requests.back());
+    }
+    for (int r : peers) {
+      requests.emplace_back();
+      MPI_Isend(&sendCounts[static_cast<std::size_t>(r)], 1, MPI_INT64_T, r, 1, comm,
+                &requests.back());
+    }
+    MPI_Waitall(static_cast<int>(requests.size()), requests.data(), MPI_STATUSES_IGNORE);
+  }
+  // messages of at most 1 GiB each (an int count of bytes)
+  constexpr std::int64_t chunk = std::int64_t(1) << 30;
+  std::vector<MPI_Request> requests;
+  for (int r : peers) {
+    auto& buffer = incoming[static_cast<std::size_t>(r)];
+    buffer.resize(static_cast<std::size_t>(receiveCounts[static_cast<std::size_t>(r)]));
+    for (std::int64_t offset = 0; offset < receiveCounts[static_cast<std::size_t>(r)];
+         offset += chunk) {
+      const auto bytes = std::min(chunk, receiveCounts[static_cast<std::size_t>(r)] - offset);
+      requests.emplace_back();
+      MPI_Irecv(buffer.data() + offset, static_cast<int>(bytes), MPI_BYTE, r, 2, comm,
+                &requests.back());
+    }
+  }
+  for (int r : peers) {
+    const auto& buffer = outgoing[static_cast<std::size_t>(r)];
+    const auto total = static_cast<std::int64_t>(buffer.size());
+    for (std::int64_t offset = 0; offset < total; offset += chunk) {
+      const auto bytes = std::min(chunk, total - offset);
+      requests.emplace_back();
+      MPI_Isend(buffer.data() + offset, static_cast<int>(bytes), MPI_BYTE, r, 2, comm,
+                &requests.back());
+    }
+  }
+  MPI_Waitall(static_cast<int>(requests.size()), requests.data(), MPI_STATUSES_IGNORE);
+#else
+  (void)partners;
+#endif
+  return incoming;
+}
+
+void Communicator::barrier() const {
+#ifdef SPHCAST_WITH_MPI
+  if (mpi_) MPI_Barrier(toComm(handle_));
+#endif
+}
+
+ParallelRun::ParallelRun(int& argc, char**& argv, bool parallel) {
+#ifdef SPHCAST_WITH_MPI
+  if (!parallel) return;
+  int provided = 0;
+  MPI_Init_thread(&argc, &argv, MPI_THREAD_FUNNELED, &provided);
+  started_ = true;
+  if (provided < MPI_THREAD_FUNNELED) {
+    throw Error("-parallel: this MPI library cannot run OpenMP threads beside its ranks "
+                "(MPI_THREAD_FUNNELED not provided); set OMP_NUM_THREADS=1");
+  }
+#else
+  (void)argc;
+  (void)argv;
+  if (parallel) {
+    throw Error("-parallel: this build has no MPI; configure with -DSPHCAST_WITH_MPI=ON "
+                "(Debian: apt-get install libopenmpi-dev openmpi-bin) and build again");
+  }
+#endif
+}
+
+ParallelRun::~ParallelRun() {
+#ifdef SPHCAST_WITH_MPI
+  if (started_ && mpiRunning()) MPI_Finalize();
+#endif
+}
+
+void ParallelRun::abortAll(int status) {
+#ifdef SPHCAST_WITH_MPI
+  int size = 1;
+  if (mpiRunning()) {
+    MPI_Comm_size(MPI_COMM_WORLD, &size);
+    if (size > 1) MPI_Abort(MPI_COMM_WORLD, status);
+  }
+#else
+  (void)status;
+#endif
+}
+
+bool builtWithMpi() {
+#ifdef SPHCAST_WITH_MPI
+  return true;
+#else
+  return false;
+#endif
+}
+
+}  // namespace sphcast

@@ -1,0 +1,66 @@
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "parallel/Communicator.h"
+#include "parallel/RecursiveBisection.h"
+#include "particles/ParticleCloud.h"
+
+namespace sphcast {
+
+// Moving particles between ranks, whole (every field) or a few fields at a time. The clouds of
+// one name have the same fields on every rank (the models add them on all ranks alike); a
+// message that does not match the receiving cloud's fields is an Error.
+
+// Appends the particles `indices` of cloud to `buffer`: the count, then positions, scalar,
+// vector and id fields, each field contiguous, in the cloud's (sorted) field order.
+void packParticles(const ParticleCloud& cloud, const std::vector<std::size_t>& indices,
+                   std::vector<char>& buffer);
+// Appends the particles of a buffer packParticles wrote to the cloud.
+void unpackParticles(const std::vector<char>& buffer, ParticleCloud& cloud);
+
+// Collective: sends every particle of cloud to the rank whose subdomain holds its position, and
+// appends what the other ranks send (those that stay keep their order, the arrivals follow by
+// rank). Returns the number of particles that left this rank. The cloud must hold no halo.
+std::size_t migrateParticles(ParticleCloud& cloud, const RecursiveBisection& decomposition,
+                             const Communicator& comm);
+
+// The halo of one cloud: copies of the other ranks' particles closer than a radius to this
+// rank's subdomain, appended after its own particles, so that a pair loop over the owned
+// particles [0, ownedCount()) finds every neighbour it would find in a serial run.
+// refresh() brings the copies' fields up to date from their owners between two builds (after
+// each pass whose output a later pair loop reads); the owners must not be reordered in between.
+class HaloExchange {
+ public:
+  // Collective: removes the halo of the last build, then appends the new one, grouped by rank.
+  void build(ParticleCloud& cloud, const RecursiveBisection& decomposition, double radius,
+             const PeriodicBox& periodic, const Communicator& comm);
+  // Collective: overwrites the halo copies' positions and every field with their owners'.
+  void refresh(ParticleCloud& cloud, const Communicator& comm) const;
+  // Collective: overwrites the named scalar and vector fields only.
+  void refresh(ParticleCloud& cloud, const std::vector<std::string>& fields,
+               const Communicator& comm) const;
+  // Drops the halo (before a migration, a write or a count); the cloud then holds its owned
+  // particles only, until the next build.
+  void remove(ParticleCloud& cloud);
+
+  std::size_t ownedCount() const { return owned_; }
+  std::size_t haloCount() const { return halo_; }
+  // The ranks this one exchanges halos with.
+  const std::vector<int>& partners() const { return partners_; }
+  // The particles of this rank sent to each rank (the halo fraction, message sizes).
+  std::size_t sentCount() const;
+
+ private:
+  void checkLayout(const ParticleCloud& cloud) const;
+
+  std::size_t owned_ = 0, halo_ = 0;
+  std::vector<std::vector<std::size_t>> sendIndices_;  // per rank, into the owned particles
+  std::vector<std::size_t> haloStart_;                 // per rank: where its copies start
+  std::vector<std::size_t> haloSize_;
+  std::vector<int> partners_;
+};
+
+}  // namespace sphcast
