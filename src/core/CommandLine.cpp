@@ -68,6 +68,14 @@ bool CommandLine::parse(int argc, const char* const argv[]) {
 
 std::filesystem::path CommandLine::casePath() const { return values_["case"].as<std::string>(); }
 
+namespace {
+void (*fatalErrorHandler)(bool) = nullptr;
+std::string errorPrefix;
+}  // namespace
+
+void setFatalErrorHandler(void (*handler)(bool everyRank)) { fatalErrorHandler = handler; }
+void setErrorPrefix(const std::string& prefix) { errorPrefix = prefix; }
+
 int runApplication(const std::string& application, int (*body)(int, const char* const[]),
                    int argc, const char* const argv[]) {
   adoptPassiveWaitPolicy(const_cast<char**>(argv));  // execv takes, and keeps, the same strings
@@ -94,15 +102,25 @@ int runApplication(const std::string& application, int (*body)(int, const char* 
   });
   try {
     return body(argc, argv);
+  } catch (const CollectiveError& error) {
+    std::cout.flush();
+    if (errorPrefix.empty()) {
+      std::cerr << "\n--> sphCast FATAL ERROR in " << application << ":\n"
+                << error.what() << "\n\nExiting with status 1\n";
+    }
+    if (fatalErrorHandler) fatalErrorHandler(true);
+    return 1;
   } catch (const Error& error) {
     std::cout.flush();
-    std::cerr << "\n--> sphCast FATAL ERROR in " << application << ":\n"
-              << error.what() << "\n\nExiting with status 1\n";
+    std::cerr << "\n" << errorPrefix << "--> sphCast FATAL ERROR in " << application << ":\n"
+              << errorPrefix << error.what() << "\n\n" << errorPrefix << "Exiting with status 1\n";
+    if (fatalErrorHandler) fatalErrorHandler(false);
     return 1;
   } catch (const std::exception& unexpected) {
     std::cout.flush();
-    std::cerr << "\n--> sphCast FATAL ERROR in " << application
+    std::cerr << "\n" << errorPrefix << "--> sphCast FATAL ERROR in " << application
               << " (unexpected, please report): " << unexpected.what() << '\n';
+    if (fatalErrorHandler) fatalErrorHandler(false);
     return 2;
   }
 }

@@ -35,8 +35,15 @@ class CommandLine {
   boost::program_options::variables_map values_;
 };
 
+// Called by runApplication after a fatal error, with whether every rank stopped alike (a
+// CollectiveError): a parallel run ends its other ranks (parallel/Communicator.h).
+void setFatalErrorHandler(void (*handler)(bool everyRank));
+// The rank named in a parallel run's error messages, "" in a serial run ("[1] " on rank 1).
+void setErrorPrefix(const std::string& prefix);
+
 // The common body of every main(): runs the tool, prints an Error as OpenFOAM prints a
-// FatalError, and returns the exit status.
+// FatalError (in a parallel run each rank its own, a CollectiveError rank 0 only), and returns
+// the exit status.
 int runApplication(const std::string& application, int (*body)(int, const char* const[]),
                    int argc, const char* const argv[]);
 

@@ -12,4 +12,11 @@ class Error : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// An Error that every rank of a parallel run throws alike, after deciding together (a health
+// check's stop, written state and all): rank 0 prints it, and the ranks end normally.
+class CollectiveError : public Error {
+ public:
+  using Error::Error;
+};
+
 }  // namespace sphcast

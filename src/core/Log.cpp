@@ -14,7 +14,16 @@
 
 namespace sphcast {
 
-std::ostream& info() { return std::cout; }
+namespace {
+bool infoSilenced = false;
+}  // namespace
+
+std::ostream& info() {
+  static std::ostream nowhere(nullptr);  // a stream without a buffer drops what it is given
+  return infoSilenced ? nowhere : std::cout;
+}
+
+void silenceInfo(bool silenced) { infoSilenced = silenced; }
 
 void warning(const std::string& message) {
   std::cout.flush();

@@ -13,6 +13,9 @@ namespace sphcast {
 // Warnings and errors go to standard error.
 std::ostream& info();
 void warning(const std::string& message);
+// A parallel run prints its log from rank 0 only: the others' info() goes nowhere (their
+// warnings and errors still reach standard error).
+void silenceInfo(bool silenced);
 
 // The header every application prints: name, case, build, host, threads.
 void printBanner(const std::string& application, const std::string& caseRoot);

@@ -158,7 +158,9 @@ void TimeControl::rereadIfModified() {
   if (!settings_.runTimeModifiable) return;
   std::error_code ignored;
   const auto stamp = fs::last_write_time(controlDictPath_, ignored);
-  if (ignored || stamp == controlDictStamp_) return;
+  bool modified = !ignored && stamp != controlDictStamp_;
+  if (agree_) modified = agree_(modified);
+  if (!modified) return;
   controlDictStamp_ = stamp;
   try {
     ControlSettings changed = ControlSettings::read(Dictionary::read(controlDictPath_));

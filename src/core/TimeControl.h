@@ -1,6 +1,7 @@
 #pragma once
 
 #include <filesystem>
+#include <functional>
 #include <limits>
 #include <optional>
 #include <string>
@@ -96,6 +97,9 @@ class TimeControl {
   std::string stopReason() const { return stopReason_; }
   // Any message from the last controlDict re-read (empty if nothing changed).
   std::string takeRereadMessage();
+  // A parallel run's ranks re-read a modified controlDict at the same step: `agree` turns this
+  // rank's "it changed" into every rank's (whether any saw it change).
+  void agreeOnChanges(std::function<bool(bool)> agree) { agree_ = std::move(agree); }
 
   // The completed fraction of [startTime, endTime], for the progress line.
   double progress() const;
@@ -121,6 +125,7 @@ class TimeControl {
   std::string stopReason_;
   std::string rereadMessage_;
   std::string deltaTLimiter_ = "fixed deltaT";
+  std::function<bool(bool)> agree_;
 };
 
 }  // namespace sphcast

@@ -8,6 +8,7 @@
 #include "core/Error.h"
 #include "core/Log.h"
 #include "io/PvdIndex.h"
+#include "io/PvtpCloud.h"
 #include "io/VtpCloud.h"
 
 namespace fs = std::filesystem;
@@ -20,7 +21,8 @@ std::vector<fs::path> cloudFilesIn(const fs::path& folder) {
   std::vector<fs::path> files;
   if (!fs::is_directory(folder)) return files;
   for (const auto& entry : fs::directory_iterator(folder)) {
-    if (entry.is_regular_file() && entry.path().extension() == ".vtp") {
+    const auto extension = entry.path().extension();
+    if (entry.is_regular_file() && (extension == ".vtp" || extension == ".pvtp")) {
       files.push_back(entry.path());
     }
   }
@@ -32,31 +34,51 @@ std::vector<fs::path> cloudFilesIn(const fs::path& folder) {
 
 void writeTimeFolder(const CaseFolder& caseFolder, const TimeState& time,
                      const std::vector<const ParticleCloud*>& clouds,
-                     const std::vector<UniformFile>& uniformFiles) {
+                     const std::vector<UniformFile>& uniformFiles, const Communicator& comm) {
   const std::string& timeName = time.name;
   const fs::path writing = caseFolder.writingFolder(timeName);
   const fs::path final = caseFolder.root() / timeName;
   const fs::path replaced = caseFolder.replacedFolder(timeName);
-  fs::remove_all(writing);
-  fs::create_directories(writing / "uniform");
+  const bool parallel = comm.size() > 1;
+  if (comm.master()) {
+    fs::remove_all(writing);
+    fs::create_directories(writing / "uniform");
+    for (const ParticleCloud* cloud : clouds) {
+      if (parallel) fs::create_directories(pieceFile(writing / (cloud->name() + ".pvtp"), 0).parent_path());
+    }
+  }
+  // in parallel each rank writes its piece of every cloud, and rank 0 the indexes and the rest
+  comm.barrier();
   for (const ParticleCloud* cloud : clouds) {
-    writeCloudVtp(*cloud, writing / (cloud->name() + ".vtp"));
+    if (parallel) {
+      writeCloudVtp(*cloud, pieceFile(writing / (cloud->name() + ".pvtp"), comm.rank()));
+    } else {
+      writeCloudVtp(*cloud, writing / (cloud->name() + ".vtp"));
+    }
   }
-  writeFileAtomically(writing / "uniform" / "time", uniformTimeDictionary(time));
-  for (const UniformFile& file : uniformFiles) {
-    writeFileAtomically(writing / "uniform" / file.name, file.text);
+  comm.barrier();
+  if (comm.master()) {
+    if (parallel) {
+      for (const ParticleCloud* cloud : clouds) {
+        writeCloudPvtpIndex(*cloud, writing / (cloud->name() + ".pvtp"), comm.size());
+      }
+    }
+    writeFileAtomically(writing / "uniform" / "time", uniformTimeDictionary(time));
+    for (const UniformFile& file : uniformFiles) {
+      writeFileAtomically(writing / "uniform" / file.name, file.text);
+    }
+    // Two renames when the time exists already (a restart rewriting its start time, say); a
+    // kill between them is repaired by CaseFolder::recoverInterruptedWrites.
+    if (fs::exists(final)) {
+      fs::remove_all(replaced);
+      renameAtomically(final, replaced);
+      renameAtomically(writing, final);
+      fs::remove_all(replaced);
+    } else {
+      renameAtomically(writing, final);
+    }
   }
-
-  // Two renames when the time exists already (a restart rewriting its start time, say); a kill
-  // between them is repaired by CaseFolder::recoverInterruptedWrites.
-  if (fs::exists(final)) {
-    fs::remove_all(replaced);
-    renameAtomically(final, replaced);
-    renameAtomically(writing, final);
-    fs::remove_all(replaced);
-  } else {
-    renameAtomically(writing, final);
-  }
+  comm.barrier();
 }
 
 void writeCaseIndex(const CaseFolder& caseFolder) {
@@ -117,10 +139,21 @@ void warnOfStaleCaseIndexes(const CaseFolder& caseFolder) {
 }
 
 std::vector<ParticleCloud> readTimeFolderClouds(const CaseFolder& caseFolder,
-                                                const std::string& timeName) {
+                                                const std::string& timeName, int piece,
+                                                int pieces, std::vector<bool>* readWhole) {
   std::vector<ParticleCloud> clouds;
+  if (readWhole) readWhole->clear();
   for (const fs::path& file : cloudFilesIn(caseFolder.root() / timeName)) {
-    clouds.push_back(readCloudVtp(file, file.stem().string()));
+    const std::string name = file.stem().string();
+    if (!clouds.empty() && clouds.back().name() == name) {
+      throw Error(file.parent_path().string() + " holds cloud '" + name +
+                  "' twice, as " + name + ".pvtp (a parallel run's) and " + name +
+                  ".vtp (a serial run's): remove the one that is not wanted");
+    }
+    const bool pieceByPiece = file.extension() == ".pvtp";
+    clouds.push_back(pieceByPiece ? readCloudPvtp(file, name, piece, pieces)
+                                  : readCloudVtp(file, name));
+    if (readWhole) readWhole->push_back(!pieceByPiece || pieces == 1);
   }
   return clouds;
 }

@@ -6,6 +6,7 @@
 
 #include "core/CaseFolder.h"
 #include "core/TimeControl.h"
+#include "parallel/Communicator.h"
 #include "particles/ParticleCloud.h"
 
 namespace sphcast {
@@ -16,10 +17,13 @@ struct UniformFile {
   std::string text;
 };
 
-// Writes one complete time folder atomically (also used by setCastFields for 0/).
+// Writes one complete time folder atomically (also used by setCastFields for 0/). Collective
+// over comm: with more than one rank each writes its particles as its piece of every cloud
+// (<cloud>.pvtp with <cloud>/<cloud>_<rank>.vtp, io/PvtpCloud.h), and rank 0 the rest.
 void writeTimeFolder(const CaseFolder& caseFolder, const TimeState& time,
                      const std::vector<const ParticleCloud*>& clouds,
-                     const std::vector<UniformFile>& uniformFiles = {});
+                     const std::vector<UniformFile>& uniformFiles = {},
+                     const Communicator& comm = Communicator::self());
 
 // Rewrites <case>.pvd from what is on disk: every cloud of every time folder, and the static
 // clouds of constant/particles at every time that has no cloud of their name (a mold carrying
@@ -36,8 +40,14 @@ std::vector<std::filesystem::path> staleCaseIndexes(const CaseFolder& caseFolder
 // not removed: a .pvd in the case may be the user's.
 void warnOfStaleCaseIndexes(const CaseFolder& caseFolder);
 
-// Every cloud stored in a time folder (one .vtp each), sorted by name.
+// Every cloud stored in a time folder (a .vtp each, or a parallel run's .pvtp with its pieces),
+// sorted by name. Rank `piece` of `pieces` reads pieces piece, piece + pieces, ... of each
+// .pvtp, and a .vtp whole (readWhole, when given, says which: the decomposition then keeps
+// each rank's part of those, and sends the others' particles to their ranks). A serial tool
+// reads everything.
 std::vector<ParticleCloud> readTimeFolderClouds(const CaseFolder& caseFolder,
-                                                const std::string& timeName);
+                                                const std::string& timeName, int piece = 0,
+                                                int pieces = 1,
+                                                std::vector<bool>* readWhole = nullptr);
 
 }  // namespace sphcast

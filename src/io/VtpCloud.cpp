@@ -135,8 +135,9 @@ void addAttributes(const ParticleCloud& cloud, vtkFieldData& fieldData) {
 }
 
 // A vtkPolyData whose arrays are views of the cloud's storage.
+// A cloud's halo (copies of other ranks' particles) is not written: their owners write them.
 vtkSmartPointer<vtkPolyData> polyDataView(const ParticleCloud& cloud) {
-  const std::size_t count = cloud.size();
+  const std::size_t count = cloud.ownedSize();
   vtkNew<vtkPoints> points;
   points->SetData(arrayOver<RealArray>(flatXyz(cloud.positions()), count, 3, "position"));
   auto polyData = vtkSmartPointer<vtkPolyData>::New();

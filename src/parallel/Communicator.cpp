@@ -4,8 +4,11 @@
 
 #include <algorithm>
 #include <cstring>
+#include <exception>
+#include <string>
 #include <type_traits>
 
+#include "core/CommandLine.h"
 #include "core/Error.h"
 
 #ifdef SPHCAST_WITH_MPI
@@ -134,6 +137,24 @@ std::vector<std::int64_t> Communicator::gather(std::int64_t value) const {
   return all;
 }
 
+std::string Communicator::firstNonEmpty(const std::string& text) const {
+  const std::vector<std::int64_t> lengths = gather(static_cast<std::int64_t>(text.size()));
+  int root = -1;
+  for (int r = 0; r < size_ && root < 0; ++r) {
+    if (lengths[static_cast<std::size_t>(r)] > 0) root = r;
+  }
+  if (root < 0) return "";
+  if (!mpi_ || size_ == 1) return text;
+  std::string shared = root == rank_ ? text
+                                     : std::string(static_cast<std::size_t>(
+                                                       lengths[static_cast<std::size_t>(root)]),
+                                                   '\0');
+#ifdef SPHCAST_WITH_MPI
+  MPI_Bcast(shared.data(), static_cast<int>(shared.size()), MPI_CHAR, root, toComm(handle_));
+#endif
+  return shared;
+}
+
 std::vector<std::vector<char>> Communicator::exchange(std::vector<std::vector<char>> outgoing,
                                                       const std::vector<int>& partners) const {
   if (outgoing.size() != static_cast<std::size_t>(size_)) {
@@ -209,19 +230,33 @@ void Communicator::barrier() const {
 #endif
 }
 
-ParallelRun::ParallelRun(int& argc, char**& argv, bool parallel) {
+#ifdef SPHCAST_WITH_MPI
+namespace {
+void endRanksAfterFatalError(bool everyRank) {
+  if (!mpiRunning()) return;
+  if (everyRank) {
+    MPI_Finalize();
+  } else {
+    MPI_Abort(MPI_COMM_WORLD, 1);
+  }
+}
+}  // namespace
+#endif
+
+ParallelRun::ParallelRun(bool parallel) {
 #ifdef SPHCAST_WITH_MPI
   if (!parallel) return;
   int provided = 0;
-  MPI_Init_thread(&argc, &argv, MPI_THREAD_FUNNELED, &provided);
+  MPI_Init_thread(nullptr, nullptr, MPI_THREAD_FUNNELED, &provided);
   started_ = true;
+  setFatalErrorHandler(endRanksAfterFatalError);
+  const Communicator world = Communicator::world();
+  if (!world.master()) setErrorPrefix("[" + std::to_string(world.rank()) + "] ");
   if (provided < MPI_THREAD_FUNNELED) {
     throw Error("-parallel: this MPI library cannot run OpenMP threads beside its ranks "
                 "(MPI_THREAD_FUNNELED not provided); set OMP_NUM_THREADS=1");
   }
 #else
-  (void)argc;
-  (void)argv;
   if (parallel) {
     throw Error("-parallel: this build has no MPI; configure with -DSPHCAST_WITH_MPI=ON "
                 "(Debian: apt-get install libopenmpi-dev openmpi-bin) and build again");
@@ -231,19 +266,8 @@ ParallelRun::ParallelRun(int& argc, char**& argv, bool parallel) {
 
 ParallelRun::~ParallelRun() {
 #ifdef SPHCAST_WITH_MPI
-  if (started_ && mpiRunning()) MPI_Finalize();
-#endif
-}
-
-void ParallelRun::abortAll(int status) {
-#ifdef SPHCAST_WITH_MPI
-  int size = 1;
-  if (mpiRunning()) {
-    MPI_Comm_size(MPI_COMM_WORLD, &size);
-    if (size > 1) MPI_Abort(MPI_COMM_WORLD, status);
-  }
-#else
-  (void)status;
+  // while an error unwinds, runApplication prints it and then ends the ranks
+  if (started_ && mpiRunning() && std::uncaught_exceptions() == 0) MPI_Finalize();
 #endif
 }
 

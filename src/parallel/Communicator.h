@@ -2,6 +2,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <string>
 #include <vector>
 
 namespace sphcast {
@@ -34,6 +35,9 @@ class Communicator {
   void max(std::vector<double>& values) const;
   // value of every rank, by rank
   std::vector<std::int64_t> gather(std::int64_t value) const;
+  // The first non-empty text of the ranks, by rank ("" when all are empty): what one rank
+  // found wrong, for every rank to stop with.
+  std::string firstNonEmpty(const std::string& text) const;
 
   // Sends outgoing[r] to rank r and returns what each rank sent here, by rank (outgoing has
   // size() entries; outgoing[rank()] comes back as it is). partners: the ranks this one may
@@ -54,19 +58,19 @@ class Communicator {
 };
 
 // Starts MPI for a run with -parallel (threads funnelled: OpenMP inside a rank, MPI calls from
-// its master thread) and finalises it at the end of main(); without -parallel, or in a build
-// without MPI, it does nothing and the run is serial.
+// its master thread) and finalises it at the end of main(); without -parallel it does nothing
+// and the run is serial, and in a build without MPI -parallel is an Error. A fatal error on
+// one rank ends them all (MPI_Abort, as OpenFOAM's FatalError does in parallel; the error
+// names its rank), so that none waits for it in a collective; a CollectiveError, which every
+// rank throws alike, ends them normally.
 class ParallelRun {
  public:
-  ParallelRun(int& argc, char**& argv, bool parallel);
+  explicit ParallelRun(bool parallel);
   ~ParallelRun();
   ParallelRun(const ParallelRun&) = delete;
   ParallelRun& operator=(const ParallelRun&) = delete;
 
   bool started() const { return started_; }
-  // Ends every rank at once after an error on one (MPI_Abort), so no rank waits in a
-  // collective for one that has stopped; returns normally without MPI.
-  static void abortAll(int status);
 
  private:
   bool started_ = false;

@@ -128,6 +128,9 @@ std::size_t migrateParticles(ParticleCloud& cloud, const RecursiveBisection& dec
     throw Error("particle migration: " + std::to_string(decomposition.parts()) +
                 " subdomains for " + std::to_string(comm.size()) + " ranks");
   }
+  if (cloud.haloSize() != 0) {
+    throw Error("particle migration: cloud '" + cloud.name() + "' still holds its halo");
+  }
   std::vector<std::vector<std::size_t>> leaving(static_cast<std::size_t>(comm.size()));
   std::vector<std::size_t> staying;
   staying.reserve(cloud.size());
@@ -194,10 +197,11 @@ void HaloExchange::build(ParticleCloud& cloud, const RecursiveBisection& decompo
     haloSize_[static_cast<std::size_t>(r)] = cloud.size() - haloStart_[static_cast<std::size_t>(r)];
   }
   halo_ = cloud.size() - owned_;
+  cloud.setHaloSize(halo_);
 }
 
 void HaloExchange::checkLayout(const ParticleCloud& cloud) const {
-  if (cloud.size() != owned_ + halo_) {
+  if (cloud.size() != owned_ + halo_ || cloud.haloSize() != halo_) {
     throw Error("halo exchange: cloud '" + cloud.name() +
                 "' changed its particle count since its halo was built");
   }
@@ -233,7 +237,9 @@ void HaloExchange::refresh(ParticleCloud& cloud, const std::vector<std::string>&
     auto& buffer = outgoing[static_cast<std::size_t>(r)];
     const auto& indices = sendIndices_[static_cast<std::size_t>(r)];
     for (const std::string& name : fields) {
-      if (cloud.hasScalarField(name)) {
+      if (name == "position") {
+        putField(buffer, cloud.positions(), indices);
+      } else if (cloud.hasScalarField(name)) {
         putField(buffer, cloud.scalarField(name), indices);
       } else {
         putField(buffer, cloud.vectorField(name), indices);  // throws, naming the fields
@@ -246,13 +252,43 @@ void HaloExchange::refresh(ParticleCloud& cloud, const std::vector<std::string>&
     const std::size_t start = haloStart_[static_cast<std::size_t>(r)];
     const std::size_t count = haloSize_[static_cast<std::size_t>(r)];
     for (const std::string& name : fields) {
-      if (cloud.hasScalarField(name)) {
+      if (name == "position") {
+        in.getField(cloud.positions(), start, count);
+      } else if (cloud.hasScalarField(name)) {
         in.getField(cloud.scalarField(name), start, count);
       } else {
         in.getField(cloud.vectorField(name), start, count);
       }
     }
     if (!in.atEnd()) throw Error("halo exchange: a refresh message does not match its halo");
+  }
+}
+
+void HaloExchange::refresh(const ParticleCloud& cloud, void* values,
+                           std::size_t bytesPerParticle, const Communicator& comm) const {
+  checkLayout(cloud);
+  auto* bytes = static_cast<char*>(values);
+  std::vector<std::vector<char>> outgoing(static_cast<std::size_t>(comm.size()));
+  for (int r : partners_) {
+    const auto& indices = sendIndices_[static_cast<std::size_t>(r)];
+    auto& buffer = outgoing[static_cast<std::size_t>(r)];
+    buffer.resize(indices.size() * bytesPerParticle);
+    for (std::size_t k = 0; k < indices.size(); ++k) {
+      std::memcpy(buffer.data() + k * bytesPerParticle, bytes + indices[k] * bytesPerParticle,
+                  bytesPerParticle);
+    }
+  }
+  const auto incoming = comm.exchange(std::move(outgoing), partners_);
+  for (int r : partners_) {
+    const auto& buffer = incoming[static_cast<std::size_t>(r)];
+    if (buffer.size() != haloSize_[static_cast<std::size_t>(r)] * bytesPerParticle) {
+      throw Error("halo exchange: a refresh of cloud '" + cloud.name() +
+                  "' does not match its halo");
+    }
+    if (!buffer.empty()) {
+      std::memcpy(bytes + haloStart_[static_cast<std::size_t>(r)] * bytesPerParticle,
+                  buffer.data(), buffer.size());
+    }
   }
 }
 

@@ -23,7 +23,8 @@ void unpackParticles(const std::vector<char>& buffer, ParticleCloud& cloud);
 
 // Collective: sends every particle of cloud to the rank whose subdomain holds its position, and
 // appends what the other ranks send (those that stay keep their order, the arrivals follow by
-// rank). Returns the number of particles that left this rank. The cloud must hold no halo.
+// rank). Returns the number of particles that left this rank. The cloud must hold no halo
+// (an Error otherwise).
 std::size_t migrateParticles(ParticleCloud& cloud, const RecursiveBisection& decomposition,
                              const Communicator& comm);
 
@@ -39,8 +40,12 @@ class HaloExchange {
              const PeriodicBox& periodic, const Communicator& comm);
   // Collective: overwrites the halo copies' positions and every field with their owners'.
   void refresh(ParticleCloud& cloud, const Communicator& comm) const;
-  // Collective: overwrites the named scalar and vector fields only.
+  // Collective: overwrites the named scalar and vector fields only ("position": the positions).
   void refresh(ParticleCloud& cloud, const std::vector<std::string>& fields,
+               const Communicator& comm) const;
+  // Collective: overwrites the halo's entries of an array indexed like the cloud's particles
+  // (a model's own per-particle values, bytesPerParticle each) with their owners'.
+  void refresh(const ParticleCloud& cloud, void* values, std::size_t bytesPerParticle,
                const Communicator& comm) const;
   // Drops the halo (before a migration, a write or a count); the cloud then holds its owned
   // particles only, until the next build.

@@ -20,5 +20,9 @@ struct Domain {
 // size on every side: generous for splashes over an open top, and a particle through a wall is
 // caught before it falls far.
 Domain defaultDomain(const std::vector<const ParticleCloud*>& clouds);
+// Its two parts: the box of the clouds' owned particles (empty: lower above upper), which a
+// decomposed run reduces over its ranks, and the box grown by half its size.
+Domain boundingBox(const std::vector<const ParticleCloud*>& clouds);
+Domain withMargin(Domain box);
 
 }  // namespace sphcast

@@ -124,6 +124,8 @@ bool Neighbourhood::rebuildDue() {
   for (std::size_t e = 0; e < entries_.size(); ++e) {
     const Entry& entry = entries_[e];
     if (!entry.binned) return true;
+    // a fixed cloud re-distributed over the ranks of a decomposed run (a re-balance)
+    if (entry.cloud->layoutVersion() != entry.binnedLayout) return true;
     if (!entry.moves) continue;
     if (entry.cloud->layoutVersion() != entry.binnedLayout ||
         entry.cloud->size() != entry.binnedPositions.size()) {
@@ -144,12 +146,18 @@ bool Neighbourhood::rebuildDue() {
 
 void Neighbourhood::rebuild(CloudOrder order) {
   std::vector<bool> rebinned(entries_.size(), false);
+  std::vector<bool> relaid(entries_.size(), false);  // particles added, removed or reordered
   for (std::size_t e = 0; e < entries_.size(); ++e) {
     Entry& entry = entries_[e];
-    if (entry.binned && !entry.moves) continue;  // a fixed cloud's grid stays valid
+    relaid[e] = entry.binned && entry.cloud->layoutVersion() != entry.binnedLayout;
+    // a fixed cloud's grid stays valid (unless a decomposed run re-distributed it)
+    if (entry.binned && !entry.moves && entry.cloud->layoutVersion() == entry.binnedLayout) {
+      continue;
+    }
     // a rigid cloud is re-binned only when it moved (a body held, resting or at its stop keeps
     // its grid and lists)
-    if (entry.binned && !entry.movable && entry.cloud->positions() == entry.binnedPositions) {
+    if (entry.binned && entry.moves && !entry.movable &&
+        entry.cloud->positions() == entry.binnedPositions) {
       continue;
     }
     entry.grid->build(entry.cloud->positions());
@@ -159,15 +167,13 @@ void Neighbourhood::rebuild(CloudOrder order) {
       entry.movable->reorder(entry.grid->sortPermutation());
       entry.grid->adoptCellOrder();
     }
-    if (entry.moves) {
-      entry.binnedPositions = entry.cloud->positions();
-      entry.binnedLayout = entry.cloud->layoutVersion();
-    }
+    if (entry.moves) entry.binnedPositions = entry.cloud->positions();
+    entry.binnedLayout = entry.cloud->layoutVersion();
     entry.binned = true;
     rebinned[e] = true;
   }
   for (Pairs& pairs : pairs_) {
-    if (keptForever(pairs)) continue;
+    if (keptForever(pairs) && !relaid[pairs.a]) continue;
     const Entry& a = entries_[pairs.a];
     const Entry& b = entries_[pairs.b];
     const bool search = !pairs.built || rebinned[pairs.a] || rebinned[pairs.b];

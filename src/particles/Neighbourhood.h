@@ -12,6 +12,18 @@
 
 namespace sphcast {
 
+// The halo of a decomposed run (parallel/DomainDecomposition.h implements it): the copies of
+// other ranks' particles that each cloud holds after its own (ParticleCloud::haloSize()).
+class HaloSync {
+ public:
+  virtual ~HaloSync() = default;
+  // Collective: the halo's entries of `values` (indexed like the cloud's particles) from their
+  // owners.
+  virtual void refresh(const ParticleCloud& cloud, void* values, std::size_t bytesPerParticle) = 0;
+  // Collective: the halo's entries of the named fields of the cloud from their owners.
+  virtual void refresh(ParticleCloud& cloud, const std::vector<std::string>& fields) = 0;
+};
+
 // How a cloud is stored along the grid after a search.
 enum class CloudOrder {
   byCell,  // a moving cloud is reordered along its cell grid (neighbours close in memory)
@@ -66,6 +78,24 @@ class Neighbourhood {
   // due or `rebuild` is true, else the lists with a moving end filtered from their wide lists.
   void update(CloudOrder order = CloudOrder::byCell, bool rebuild = false);
 
+  // Whether the next update() would search the cells: a layout change, or particles that may
+  // have closed in by the skin (a decomposed run asks every rank, and rebuilds on all at once).
+  bool rebuildDue();
+
+  // A decomposed run's halo (null: serial). A model's pass whose per-particle output a later
+  // pair loop reads at a neighbour calls syncHalo after it, so that the halo's copies hold
+  // their owners' values; in a serial run that does nothing.
+  void setHaloSync(HaloSync* sync) { haloSync_ = sync; }
+  bool decomposed() const { return haloSync_ != nullptr; }
+  // (values: plain values, as Real, Vector or an Eigen matrix, one per particle of the cloud)
+  template <class T>
+  void syncHalo(const ParticleCloud& cloud, std::vector<T>& values) const {
+    if (haloSync_) haloSync_->refresh(cloud, values.data(), sizeof(T));
+  }
+  void syncHalo(ParticleCloud& cloud, const std::vector<std::string>& fields) const {
+    if (haloSync_) haloSync_->refresh(cloud, fields);
+  }
+
   // The list requested for (a, b), as of the last update(); throws Error if never requested.
   const NeighbourList& pairs(const ParticleCloud& a, const ParticleCloud& b) const;
   const CellGrid& grid(const ParticleCloud& cloud) const;
@@ -101,7 +131,6 @@ class Neighbourhood {
     bool built = false;
   };
   std::size_t entryOf(const ParticleCloud& cloud) const;
-  bool rebuildDue();
   void rebuild(CloudOrder order);
   void filter();
   void flagMovedParticles();
@@ -115,6 +144,7 @@ class Neighbourhood {
   std::vector<Pairs> pairs_;
   std::size_t rebuilds_ = 0;
   std::size_t reuses_ = 0;
+  HaloSync* haloSync_ = nullptr;
 };
 
 }  // namespace sphcast

@@ -55,8 +55,17 @@ bool sameNames(const FieldMap& a, const FieldMap& b) {
 
 ParticleCloud::ParticleCloud(std::string name) : name_(std::move(name)) {}
 
+void ParticleCloud::setHaloSize(std::size_t count) {
+  if (count > size()) {
+    throw Error("cloud '" + name_ + "': a halo of " + std::to_string(count) + " particles in " +
+                std::to_string(size()));
+  }
+  haloSize_ = count;
+}
+
 void ParticleCloud::resize(std::size_t count) {
   ++layoutVersion_;
+  haloSize_ = 0;
   positions_.resize(count, Vector::Zero());
   for (auto& [fieldName, field] : scalars_) field.resize(count, Real(0));
   for (auto& [fieldName, field] : vectors_) field.resize(count, Vector::Zero());
@@ -143,6 +152,9 @@ void ParticleCloud::reorder(const std::vector<std::size_t>& newOrder) {
     throw Error("cloud '" + name_ + "': reorder with " + std::to_string(newOrder.size()) +
                 " indices for " + std::to_string(size()) + " particles");
   }
+  for (std::size_t k = ownedSize(); k < size(); ++k) {
+    if (newOrder[k] != k) throw Error("cloud '" + name_ + "': a reorder would move its halo");
+  }
   ++layoutVersion_;
   permute(positions_, newOrder, scratch_.vectors);
   for (auto& entry : scalars_) permute(entry.second, newOrder, scratch_.scalars);
@@ -157,6 +169,7 @@ void ParticleCloud::append(const ParticleCloud& other) {
                 name_ + "' " + fieldList() + ": their fields differ");
   }
   ++layoutVersion_;
+  haloSize_ = 0;
   positions_.insert(positions_.end(), other.positions_.begin(), other.positions_.end());
   appendFields(scalars_, other.scalars_);
   appendFields(vectors_, other.vectors_);

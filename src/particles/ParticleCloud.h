@@ -25,7 +25,16 @@ class ParticleCloud {
   const std::string& name() const { return name_; }
   std::size_t size() const { return positions_.size(); }
 
-  // Changes the particle count of every field at once; new entries are zero.
+  // In a decomposed run (src/parallel) the last haloSize() particles are copies of other
+  // ranks' particles, there for the pair loops of the first ownedSize(): sums, books, checks
+  // and output count the owned particles only. Serial runs have no halo.
+  std::size_t ownedSize() const { return positions_.size() - haloSize_; }
+  std::size_t haloSize() const { return haloSize_; }
+  // Marks the last `count` particles as the halo (HaloExchange, after appending them).
+  void setHaloSize(std::size_t count);
+
+  // Changes the particle count of every field at once; new entries are zero. The halo is
+  // dropped from the count (its particles, if kept, become owned ones).
   void resize(std::size_t count);
 
   VectorField& positions() { return positions_; }
@@ -59,9 +68,11 @@ class ParticleCloud {
   const std::map<std::string, double>& attributes() const { return attributes_; }
 
   // Applies newOrder to every field: particle k of the result is particle newOrder[k] of now.
+  // A cloud with a halo keeps it last: newOrder must map the halo's places onto themselves.
   void reorder(const std::vector<std::size_t>& newOrder);
 
-  // Appends the particles of another cloud with the same fields (throws if they differ).
+  // Appends the particles of another cloud with the same fields (throws if they differ); the
+  // halo is dropped from the count, as by resize().
   void append(const ParticleCloud& other);
 
   // Counts the changes of which particle is where in the arrays (resize, reorder, append), so
@@ -81,6 +92,7 @@ class ParticleCloud {
   std::map<std::string, VectorField> vectors_;
   std::map<std::string, IdField> ids_;
   std::map<std::string, double> attributes_;
+  std::size_t haloSize_ = 0;
   std::uint64_t layoutVersion_ = 0;
   // Buffers reorder() permutes through, kept so that a reorder every step allocates nothing.
   // Not part of the cloud's state: copying a cloud does not copy them.

@@ -81,9 +81,13 @@ double surfaceHeight(const ParticleCloud& fluid, const Vector& up, const Vector&
   return std::isfinite(highest) ? highest + double(halfSpacing(fluid)) : noFluid;
 }
 
-double fluidFront(const ParticleCloud& fluid, const Vector& direction) {
+double fluidFront(const ParticleCloud& fluid, const Vector& direction, const Communicator& comm) {
   double front = -std::numeric_limits<double>::infinity();
-  for (const Vector& x : fluid.positions()) front = std::max(front, double(x.dot(direction)));
+  const auto& x = fluid.positions();
+  for (std::size_t i = 0; i < fluid.ownedSize(); ++i) {
+    front = std::max(front, double(x[i].dot(direction)));
+  }
+  front = comm.max(front);
   return std::isfinite(front) ? front + double(halfSpacing(fluid)) : noFluid;
 }
 

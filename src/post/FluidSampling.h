@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "core/Real.h"
+#include "parallel/Communicator.h"
 #include "particles/ParticleCloud.h"
 
 namespace sphcast {
@@ -49,6 +50,8 @@ double surfaceHeight(const ParticleCloud& fluid, const Vector& up, const Vector&
 
 // The leading edge of the fluid along a unit direction: the largest x . direction of a particle
 // plus half the lattice spacing (the surge front of a dam break). noFluid for an empty cloud.
-double fluidFront(const ParticleCloud& fluid, const Vector& direction);
+// Over every rank of comm in a decomposed run (its owned particles).
+double fluidFront(const ParticleCloud& fluid, const Vector& direction,
+                  const Communicator& comm = Communicator::self());
 
 }  // namespace sphcast

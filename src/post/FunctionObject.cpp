@@ -29,6 +29,7 @@ FunctionObject::FunctionObject(const std::string& name, const Dictionary& dict,
                                const std::vector<std::string>& extraKeys, Clouds clouds)
     : outputFolder_(context.caseRoot / "postProcessing" / name / context.startTimeName),
       name_(name),
+      comm_(context.comm),
       startTime_(context.startTime) {
   std::vector<std::string> valid = commonKeys;
   if (clouds == Clouds::many) valid.erase(std::find(valid.begin(), valid.end(), "cloud"));
@@ -105,6 +106,10 @@ void FunctionObject::execute(const TimeState& time, bool caseWriteTime) {
 
 std::ofstream& FunctionObject::openOutput(const std::string& fileName, const std::string& header) {
   auto& file = files_[fileName];
+  if (!file && !comm_.master()) {  // rank 0 writes: the others' rows go nowhere
+    file = std::make_unique<std::ofstream>();
+    file->setstate(std::ios::badbit);
+  }
   if (!file) {
     fs::create_directories(outputFolder_);
     const fs::path path = outputFolder_ / fileName;
@@ -147,6 +152,12 @@ FunctionObjectList::FunctionObjectList(const Dictionary& controlDict,
     const Dictionary& dict = functions.subDict(name);
     // Explicit registration: one line per type.
     const std::string type = dict.getChoice("type", types);
+    if (context.comm.size() > 1 && type != "front") {
+      throw DictionaryError(dict.location("type"),
+                            "function object '" + name + "': type " + type +
+                                " does not run decomposed (-parallel) in this version; type "
+                                "front does. Remove it, or run the case serial");
+    }
     if (type == "probes") {
       objects_.push_back(std::make_unique<Probes>(name, dict, context));
     } else if (type == "surfaceHeights") {

@@ -10,6 +10,7 @@
 #include "core/Real.h"
 #include "core/TimeControl.h"
 #include "core/dictionary/Dictionary.h"
+#include "parallel/Communicator.h"
 #include "particles/ParticleCloud.h"
 
 namespace sphcast {
@@ -22,6 +23,8 @@ struct FunctionObjectContext {
   Real supportRadius = 0;     // h of the flow (0 without one: a probe must then say)
   Vector gravity = Vector::Zero();
   std::vector<const ParticleCloud*> clouds;  // that the run steps; addresses stay valid
+  // A decomposed run's ranks: each samples its own particles, rank 0 writes the rows.
+  Communicator comm = Communicator::self();
 };
 
 // A function object of system/controlDict's `functions` dictionary, as in OpenFOAM:
@@ -62,6 +65,7 @@ class FunctionObject {
                  Clouds clouds = Clouds::one);
 
   const ParticleCloud& cloud() const { return *cloud_; }
+  const Communicator& communicator() const { return comm_; }
 
   // The output file postProcessing/<name>/<startTime>/<fileName>, opened (replaced) on first
   // use, with the header lines given.
@@ -79,6 +83,7 @@ class FunctionObject {
   bool wanted(const TimeState& time, bool caseWriteTime);
 
   std::string name_;
+  Communicator comm_;
   double startTime_ = 0;
   const ParticleCloud* cloud_ = nullptr;
   Control control_ = Control::timeStep;
@@ -97,7 +102,8 @@ class FunctionObjectList {
  public:
   FunctionObjectList() = default;
   // Types: probes, surfaceHeights, front, fieldMinMax, energyBalance. An unknown type, a missing or
-  // unknown cloud or field, a bad location: DictionaryError naming file, line and key.
+  // unknown cloud or field, a bad location: DictionaryError naming file, line and key. A
+  // decomposed run (context.comm of more than one rank) takes front only so far.
   FunctionObjectList(const Dictionary& controlDict, const FunctionObjectContext& context);
 
   void execute(const TimeState& time, bool caseWriteTime);

@@ -132,7 +132,7 @@ FluidFront::FluidFront(const std::string& name, const Dictionary& dict,
 
 void FluidFront::sample(double time) {
   std::ofstream& file = openOutput("front", header_);
-  writeRow(file, time, "  " + formatSample(fluidFront(cloud(), direction_)));
+  writeRow(file, time, "  " + formatSample(fluidFront(cloud(), direction_, communicator())));
 }
 
 }  // namespace sphcast

@@ -9,15 +9,16 @@ namespace fs = std::filesystem;
 
 namespace sphcast {
 
-CaseWriter::CaseWriter(const CaseFolder& caseFolder, int purgeWrite)
-    : caseFolder_(caseFolder), purgeWrite_(purgeWrite) {
-  warnOfStaleCaseIndexes(caseFolder_);
+CaseWriter::CaseWriter(const CaseFolder& caseFolder, int purgeWrite, const Communicator& comm)
+    : caseFolder_(caseFolder), comm_(comm), purgeWrite_(purgeWrite) {
+  if (comm_.master()) warnOfStaleCaseIndexes(caseFolder_);
 }
 
 void CaseWriter::write(const TimeState& time, const std::vector<const ParticleCloud*>& clouds,
                        const std::vector<UniformFile>& uniformFiles) {
-  writeTimeFolder(caseFolder_, time, clouds, uniformFiles);
+  writeTimeFolder(caseFolder_, time, clouds, uniformFiles, comm_);
   if (writtenTimes_.empty() || writtenTimes_.back() != time.name) writtenTimes_.push_back(time.name);
+  if (!comm_.master()) return;
   // purgeWrite as OpenFOAM: only times this run wrote are removed, never the start time.
   while (purgeWrite_ > 0 && writtenTimes_.size() > static_cast<std::size_t>(purgeWrite_)) {
     // Out of sight first, so a kill during the removal leaves no half time folder in the case.
@@ -32,8 +33,8 @@ void CaseWriter::write(const TimeState& time, const std::vector<const ParticleCl
 void CaseWriter::rewriteStart(const TimeState& time,
                               const std::vector<const ParticleCloud*>& clouds,
                               const std::vector<UniformFile>& uniformFiles) {
-  writeTimeFolder(caseFolder_, time, clouds, uniformFiles);
-  writeCaseIndex(caseFolder_);
+  writeTimeFolder(caseFolder_, time, clouds, uniformFiles, comm_);
+  if (comm_.master()) writeCaseIndex(caseFolder_);
 }
 
 }  // namespace sphcast

@@ -17,7 +17,10 @@ namespace sphcast {
 class CaseWriter {
  public:
   // Warns of a stale <old case name>.pvd left by a copy of the case (warnOfStaleCaseIndexes).
-  CaseWriter(const CaseFolder& caseFolder, int purgeWrite);
+  // comm: the ranks that write each time together (a parallel run's pieces); rank 0 writes
+  // the rest, purges and rewrites the .pvd.
+  CaseWriter(const CaseFolder& caseFolder, int purgeWrite,
+             const Communicator& comm = Communicator::self());
 
   // Writes <time>/<cloud>.vtp for every cloud, <time>/uniform/time and the uniform files.
   void write(const TimeState& time, const std::vector<const ParticleCloud*>& clouds,
@@ -30,6 +33,7 @@ class CaseWriter {
 
  private:
   const CaseFolder& caseFolder_;
+  Communicator comm_;
   int purgeWrite_;
   std::deque<std::string> writtenTimes_;  // by this run, oldest first (purgeWrite)
 };

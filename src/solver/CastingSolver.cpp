@@ -22,7 +22,16 @@ double CastingSolver::stableDeltaT(std::string& limiter) const {
   }
   if (flow_ || energy_) {
     double stable = std::numeric_limits<double>::infinity();
-    if (flow_) stable = flow_->stepLimits(time_.settings().maxCo).smallest(limiter);
+    if (flow_) {
+      FlowStepLimits limits = flow_->stepLimits(time_.settings().maxCo);
+      if (parallel_) {  // every rank's smallest, so that all take the same step
+        std::vector<double> each{limits.acoustic,     limits.viscous,     limits.bodyForce,
+                                 limits.acceleration, limits.densityRate, limits.forceModel};
+        comm_.min(each);
+        limits = {each[0], each[1], each[2], each[3], each[4], each[5], limits.forceModelName};
+      }
+      stable = limits.smallest(limiter);
+    }
     for (const auto& body : bodies_) {
       const double limit = body->stableDeltaT(fluid_->attributes().at("spacing"));
       if (limit < stable) {
@@ -118,12 +127,12 @@ void CastingSolver::heatStepInPlace(double deltaT) {
 // the same positions in the same order and goes on bit for bit.
 void CastingSolver::searchAndKeepClear(double deltaT, bool lastOfStep) {
   const bool written = lastOfStep && (time_.writeTime() || time_.progress() >= 1);
-  addWallTime(searchSeconds_, [&] { neighbourhood_->update(); });
+  addWallTime(searchSeconds_, [&] { searchNeighbours(CloudOrder::byCell, false); });
   if (fillTime_) fillTime_->record(*neighbourhood_, time_.value());
   keepBodiesOutOfMolds();
   flow_->keepClearOfWalls();
   if (written) {
-    addWallTime(searchSeconds_, [&] { neighbourhood_->update(CloudOrder::keep, true); });
+    addWallTime(searchSeconds_, [&] { searchNeighbours(CloudOrder::keep, true); });
   }
   pushBodiesByClearance(deltaT);
 }
@@ -309,15 +318,21 @@ void CastingSolver::run() {
     ++stepsTaken_;
     // A step that throws (a far-flung particle the cell grid cannot place, memory exhausted)
     // stops the run the same way as a failed check: with the last good state written.
+    // In a parallel run the other ranks would wait for the failed one inside the step: the
+    // error ends every rank (runApplication), and the last written time is the good state.
     std::string failure;
     try {
       evolve(time_.deltaT());
     } catch (const std::bad_alloc&) {
+      if (parallel_) throw;
       failure = "the step ran out of memory";
     } catch (const std::exception& error) {
+      if (parallel_) throw;
       failure = std::string("the step failed: ") + error.what();
     }
     if (failure.empty()) failure = addWallTime(checkSeconds_, [&] { return checkHealth(); });
+    // what one rank found stops them all, with its message
+    if (parallel_) failure = comm_.firstNonEmpty(failure);
     if (!failure.empty()) stopWithLastGoodState(before, true, failure);
     if (solidificationSetup_.endWhenSolid && solidification_->allSolid()) {
       time_.requestStop("the casting is solid (endWhenSolid)");

@@ -13,6 +13,8 @@
 #include "core/TimeControl.h"
 #include "inlets/PouringInlet.h"
 #include "io/TimeFolders.h"
+#include "parallel/Communicator.h"
+#include "parallel/DomainDecomposition.h"
 #include "particles/ParticleCloud.h"
 #include "post/FunctionObject.h"
 #include "solver/BallisticMotion.h"
@@ -44,8 +46,11 @@ class Dictionary;
 class CastingSolver {
  public:
   // Reads and checks everything the run needs (controlDict, constant/g, the start time's
-  // clouds) before anything is written, so bad input never damages results on disk.
-  explicit CastingSolver(const CaseFolder& caseFolder);
+  // clouds) before anything is written, so bad input never damages results on disk. With a
+  // communicator of more than one rank (-parallel) the run is decomposed by
+  // system/decomposeParDict, each rank stepping the particles of its subdomain.
+  explicit CastingSolver(const CaseFolder& caseFolder,
+                         const Communicator& comm = Communicator::self());
 
   // Steps from the start time until endTime or a stop request, writing as controlDict asks.
   void run();
@@ -54,7 +59,12 @@ class CastingSolver {
 
  private:
   void loadHeatClouds();
+  // What a decomposed run cannot run yet, as an Error naming the entry (before any output).
+  void checkParallelSupport() const;
   void setUpNeighbourhood();
+  void decompose();
+  // The search of a step: the decomposition's (migration, halos) or the neighbourhood's own.
+  void searchNeighbours(CloudOrder order, bool rebuild);
   void setUpFlow();
   void loadBodyClouds();  // CastingSolverBodies.cpp
   void setUpBodies();
@@ -115,6 +125,8 @@ class CastingSolver {
                                           const std::string& what);
 
   const CaseFolder& caseFolder_;
+  Communicator comm_;
+  bool parallel_;  // more than one rank
   // Repaired before the start time is chosen: a time folder set aside by a killed write must
   // be back in place when latestTime is looked for.
   std::vector<std::string> repairedWrites_;
@@ -129,9 +141,11 @@ class CastingSolver {
   BodySetup bodySetup_;
   InletSetup inletSetup_;
   std::vector<ParticleCloud> clouds_;        // of the time folders: read, stepped, written
+  std::vector<bool> cloudReadWhole_;         // by every rank (a serial time folder's .vtp)
   std::vector<ParticleCloud> staticClouds_;  // of constant/particles: read only
   // The cell grids and pair lists of every model, built once per step (with flow or heat).
   std::unique_ptr<Neighbourhood> neighbourhood_;
+  std::unique_ptr<DomainDecomposition> decomposition_;  // a parallel run's
   std::unique_ptr<WeaklyCompressibleFlow> flow_;
   std::unique_ptr<SurfaceTensionModel> surfaceTension_;  // a force model of the flow
   ParticleCloud* fluid_ = nullptr;

@@ -119,6 +119,8 @@ std::string CastingSolver::checkStepCollapse(double stableDeltaT, const std::str
   return "";
 }
 
+// Every rank of a parallel run stops here alike (the failure is shared before), so the errors
+// are CollectiveErrors: rank 0 prints them.
 void CastingSolver::stopWithLastGoodState(const TimeState& good, bool restoreSaved,
                                           const std::string& what) {
   const std::string badTime = time_.timeName();
@@ -129,12 +131,12 @@ void CastingSolver::stopWithLastGoodState(const TimeState& good, bool restoreSav
   // Only the models keep the state before the step; ballistic clouds have nothing to go back
   // to.
   if (restoreSaved && evolving_.empty()) {
-    throw Error(failure + "Nothing is written: the last written time is the last good state.");
+    throw CollectiveError(failure + "Nothing is written: the last written time is the last good state.");
   }
   // The start time is on disk as it was read: rewriting it would store the rates of this run's
   // settings in it, and a rerun with other settings would start from them.
   if (good.name == time_.startTimeName()) {
-    throw Error(failure + "The last good state is the start time " + good.name +
+    throw CollectiveError(failure + "The last good state is the start time " + good.name +
                 ", left as it was; change maxCo, deltaT or soundSpeed and run again.");
   }
   if (restoreSaved) {
@@ -151,7 +153,7 @@ void CastingSolver::stopWithLastGoodState(const TimeState& good, bool restoreSav
   std::vector<const ParticleCloud*> written;
   for (const ParticleCloud& cloud : clouds_) written.push_back(&cloud);
   writer_.write(good, written, uniformStateFiles(good.name));
-  throw Error(failure + "The last good state, time " + good.name +
+  throw CollectiveError(failure + "The last good state, time " + good.name +
               ", is written (it passed every check); restart from it with a smaller maxCo or "
               "deltaT, a larger soundSpeed, or look for a gap in the walls there.");
 }

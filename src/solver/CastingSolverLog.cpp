@@ -15,7 +15,7 @@ void CastingSolver::logStep(bool printBlock) {
   info() << "deltaT = " << time_.deltaT() << "  (" << time_.deltaTLimiter() << ")\n"
          << "Time = " << time_.timeName() << "\n\n";
   if (flow_) {
-    const FluidSummary summary = summarizeFluid(*fluid_);
+    const FluidSummary summary = summarizeFluid(*fluid_, comm_);
     const FlowSettings& settings = flowSetup_.settings;
     const double spacing = fluid_->attributes().at("spacing");
     const double courant = (static_cast<double>(settings.soundSpeed) + summary.largestSpeed) *
@@ -30,7 +30,8 @@ void CastingSolver::logStep(bool printBlock) {
          << " % of rho_s)  p " << summary.lowestPressure << " .. " << summary.highestPressure
          << " Pa\n"
          << "Mass " << summary.mass << " kg  kinetic energy " << summary.kineticEnergy
-         << " J  moved back from walls " << flow_->lastWallClearance().corrected << '\n';
+         << " J  moved back from walls "
+         << comm_.sum(static_cast<std::int64_t>(flow_->lastWallClearance().corrected)) << '\n';
     info() << line.str();
   }
   logBodies();

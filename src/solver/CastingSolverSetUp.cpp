@@ -12,13 +12,27 @@
 #include "core/Gravity.h"
 #include "core/dictionary/Dictionary.h"
 #include "io/VtpCloud.h"
+#include "parallel/DecompositionSettings.h"
 #include "sph/CorrectedGradient.h"
 
 namespace sphcast {
 
-CastingSolver::CastingSolver(const CaseFolder& caseFolder)
+namespace {
+// Rank 0 repairs what a killed write left; the others wait for it before they look for times.
+std::vector<std::string> repairInterruptedWrites(const CaseFolder& caseFolder,
+                                                 const Communicator& comm) {
+  std::vector<std::string> repaired;
+  if (comm.master()) repaired = caseFolder.recoverInterruptedWrites();
+  comm.barrier();
+  return repaired;
+}
+}  // namespace
+
+CastingSolver::CastingSolver(const CaseFolder& caseFolder, const Communicator& comm)
     : caseFolder_(caseFolder),
-      repairedWrites_(caseFolder.recoverInterruptedWrites()),
+      comm_(comm),
+      parallel_(comm.size() > 1),
+      repairedWrites_(repairInterruptedWrites(caseFolder, comm)),
       time_(caseFolder),
       // constant/g for a flow or ballistic clouds; a case that only conducts heat needs none
       gravityFile_(readGravityIfPresent(caseFolder)),
@@ -31,13 +45,15 @@ CastingSolver::CastingSolver(const CaseFolder& caseFolder)
       bodySetup_(readBodySetup(caseFolder)),
       inletSetup_(readInletSetup(caseFolder, flowSetup_.fluidCloud,
                                  flowSetup_.enabled ? flowSetup_.settings.dimension : 3)),
-      writer_(caseFolder, time_.settings().purgeWrite) {
+      writer_(caseFolder, time_.settings().purgeWrite, comm) {
+  if (parallel_) time_.agreeOnChanges([this](bool changed) { return comm_.any(changed); });
   for (const std::string& repaired : repairedWrites_) {
     info() << "Repaired interrupted write: " << repaired << std::endl;
   }
   info() << "Starting from time " << time_.startTimeName() << " (index " << time_.timeIndex()
          << ")\n";
-  clouds_ = readTimeFolderClouds(caseFolder_, time_.startTimeName());
+  clouds_ = readTimeFolderClouds(caseFolder_, time_.startTimeName(), comm_.rank(), comm_.size(),
+                                 &cloudReadWhole_);
   if (clouds_.empty()) {
     throw Error("time folder " + (caseFolder_.root() / time_.startTimeName()).string() +
                 " holds no cloud (.vtp) to run");
@@ -46,6 +62,7 @@ CastingSolver::CastingSolver(const CaseFolder& caseFolder)
   // controlDict's entries beyond run control (TimeControl's), read once
   const Dictionary controlDict = Dictionary::read(caseFolder_.systemFile("controlDict"));
   health_ = HealthSettings::read(controlDict);
+  if (parallel_) checkParallelSupport();
   // Clouds join clouds_ before any model holds a pointer into it.
   if (heatSetup_.enabled) loadHeatClouds();
   loadBodyClouds();
@@ -173,6 +190,7 @@ void CastingSolver::setUpNeighbourhood() {
     }
     for (const ParticleCloud& wall : staticClouds_) wallClouds_.push_back(&wall);
     for (const ParticleCloud* wall : wallClouds_) neighbourhood_->addFixedCloud(*wall);
+    if (parallel_) decompose();
   }
   for (const std::string& name : heatSetup_.clouds) {
     ParticleCloud& cloud = cloudNamed(name);
@@ -182,6 +200,64 @@ void CastingSolver::setUpNeighbourhood() {
     }
   }
   for (ParticleCloud* cloud : evolving_) lastGood_.push_back(*cloud);
+}
+
+// -parallel runs the flow among fixed walls; the rest of the step is not decomposed yet.
+void CastingSolver::checkParallelSupport() const {
+  auto refuse = [&](const std::string& what) {
+    throw Error("-parallel: " + what +
+                " does not run decomposed in this version; run the case serial (without "
+                "mpirun and -parallel). Decomposed runs take the flow among fixed walls.");
+  };
+  if (!flowSetup_.enabled) refuse("a case without a flow (constant/physicsModels: flow)");
+  if (heatSetup_.enabled) refuse("heat transfer (constant/physicsModels: heatTransfer)");
+  if (surfaceTensionSetup_.enabled) refuse("surface tension (constant/physicsModels)");
+  if (solidificationSetup_.enabled) refuse("solidification (constant/physicsModels)");
+  if (!bodySetup_.bodies.empty()) refuse("a moving mold (constant/dynamicBodies)");
+  if (!inletSetup_.inlets.empty()) refuse("a pouring inlet (constant/inlets)");
+}
+
+// Cuts space among the ranks by system/decomposeParDict, and leaves each rank the fluid and
+// wall particles of its subdomain with their halos (the neighbour search's reach, h + skin).
+void CastingSolver::decompose() {
+  const FlowSettings& settings = flowSetup_.settings;
+  decomposition_ = std::make_unique<DomainDecomposition>(
+      comm_, readDecompositionSettings(caseFolder_, comm_.size()),
+      static_cast<double>(neighbourhood_->radius() + neighbourhood_->skin()), settings.periodic,
+      settings.dimension);
+  auto readWhole = [&](const ParticleCloud& cloud) {
+    for (std::size_t c = 0; c < clouds_.size(); ++c) {
+      if (&clouds_[c] == &cloud) return static_cast<bool>(cloudReadWhole_[c]);
+    }
+    return true;  // constant/particles: every rank read it
+  };
+  auto writable = [&](const ParticleCloud* cloud) -> ParticleCloud* {
+    for (ParticleCloud& c : clouds_) {
+      if (&c == cloud) return &c;
+    }
+    for (ParticleCloud& c : staticClouds_) {
+      if (&c == cloud) return &c;
+    }
+    throw Error("internal: a wall cloud the solver does not hold");
+  };
+  // the weights: a fluid particle's pair loops against a wall particle's share of them (its
+  // fluid neighbours' wall pressure); a first estimate, to be measured
+  ParticleCloud& fluid = cloudNamed(flowSetup_.fluidCloud);
+  std::vector<DomainDecomposition::Cloud> decomposed{{&fluid, true, 3, readWhole(fluid)}};
+  for (const ParticleCloud* wall : wallClouds_) {
+    decomposed.push_back({writable(wall), false, 1, readWhole(*wall)});
+  }
+  decomposition_->distribute(decomposed);
+  neighbourhood_->setHaloSync(decomposition_.get());
+  info() << "Decomposition: " << decomposition_->describe() << '\n';
+}
+
+void CastingSolver::searchNeighbours(CloudOrder order, bool rebuild) {
+  if (decomposition_) {
+    decomposition_->update(*neighbourhood_, rebuild);
+  } else {
+    neighbourhood_->update(order, rebuild);
+  }
 }
 
 void CastingSolver::setUpFlow() {
@@ -197,7 +273,21 @@ void CastingSolver::setUpFlow() {
       std::make_unique<WeaklyCompressibleFlow>(flowSetup_.settings, fluid, walls, *neighbourhood_);
   fluid_ = &fluid;
   if (!walls.empty()) fillTime_ = std::make_unique<FillTime>(fluid, walls);
-  domain_ = walls.empty() ? defaultDomain({&fluid}) : defaultDomain(walls);
+  Domain box = walls.empty() ? boundingBox({&fluid}) : boundingBox(walls);
+  if (parallel_) {  // the box of every rank's particles
+    std::vector<double> lower(box.lower.data(), box.lower.data() + 3);
+    std::vector<double> upper(box.upper.data(), box.upper.data() + 3);
+    comm_.min(lower);
+    comm_.max(upper);
+    for (int a = 0; a < 3; ++a) {
+      box.lower[a] = static_cast<Real>(lower[static_cast<std::size_t>(a)]);
+      box.upper[a] = static_cast<Real>(upper[static_cast<std::size_t>(a)]);
+    }
+  }
+  domain_ = withMargin(box);
+  auto countOf = [&](const ParticleCloud& cloud) {
+    return comm_.sum(static_cast<std::int64_t>(cloud.ownedSize()));
+  };
   const FlowSettings& settings = flowSetup_.settings;
   info() << "Flow: weakly compressible SPH (" << settings.dimension << "D), densityScheme "
          << settings.densityScheme << ", kernelCorrection "
@@ -207,9 +297,9 @@ void CastingSolver::setUpFlow() {
          << ", h = " << settings.supportRadius << " m, c = " << settings.soundSpeed << " m/s\n"
          << "    pair lists: searched with h + " << neighbourhood_->skin()
          << " m, reused until particles may have closed in by that skin\n"
-         << "    fluid " << fluid.name() << ": " << fluid.size() << " particles\n";
+         << "    fluid " << fluid.name() << ": " << countOf(fluid) << " particles\n";
   for (const ParticleCloud* wall : walls) {
-    info() << "    wall " << wall->name() << ": " << wall->size() << " particles\n";
+    info() << "    wall " << wall->name() << ": " << countOf(*wall) << " particles\n";
   }
   for (int axis = 0; axis < 3; ++axis) {
     if (!settings.periodic.isPeriodic(axis)) continue;
@@ -374,7 +464,7 @@ void CastingSolver::recordCriticalGradients() {
 void CastingSolver::startModels() {
   const bool restarted = (flow_ && flow_->restarted()) || (energy_ && energy_->restarted());
   addWallTime(searchSeconds_,
-              [&] { neighbourhood_->update(restarted ? CloudOrder::keep : CloudOrder::byCell); });
+              [&] { searchNeighbours(restarted ? CloudOrder::keep : CloudOrder::byCell, false); });
   // a restart has the contacts up to its time already (the next search is the next step's)
   if (fillTime_ && !restarted) fillTime_->record(*neighbourhood_, time_.value());
   if (solidification_) recordCriticalGradients();
@@ -388,7 +478,8 @@ void CastingSolver::startModels() {
   if (energy_) {
     for (const std::string& line : energy_->start()) info() << "    " << line << "\n";
   }
-  info() << "    neighbourhood: " << neighbourhood_->pairCount() << " pairs\n";
+  info() << "    neighbourhood: "
+         << comm_.sum(static_cast<std::int64_t>(neighbourhood_->pairCount())) << " pairs\n";
 }
 
 void CastingSolver::setUpFunctionObjects(const Dictionary& controlDict) {
@@ -398,6 +489,7 @@ void CastingSolver::setUpFunctionObjects(const Dictionary& controlDict) {
   context.startTime = time_.startValue();
   context.supportRadius = flowSetup_.enabled ? flowSetup_.settings.supportRadius : Real(0);
   context.gravity = gravity_;
+  context.comm = comm_;
   for (const ParticleCloud& cloud : clouds_) context.clouds.push_back(&cloud);
   functions_ = FunctionObjectList(controlDict, context);
   for (const auto& object : functions_.objects()) {

@@ -1,8 +1,10 @@
 #include "solver/RunHealth.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <sstream>
+#include <vector>
 
 #include "core/Error.h"
 #include "core/dictionary/Dictionary.h"
@@ -57,7 +59,7 @@ CloudHealth measureCloudHealth(const ParticleCloud& cloud, const Domain& domain,
   const auto& x = cloud.positions();
   const auto& u = cloud.vectorField("U");
   CloudHealth health;
-  health.firstBad = x.size();
+  health.firstBad = cloud.ownedSize();
   health.hasDensity = cloud.hasScalarField("rho") && cloud.hasScalarField("restDensity");
   static const std::vector<Real> none;
   const auto& rho = health.hasDensity ? cloud.scalarField("rho") : none;
@@ -74,7 +76,7 @@ CloudHealth measureCloudHealth(const ParticleCloud& cloud, const Domain& domain,
   std::size_t outside = 0;
   double deviation = 0;
 #pragma omp parallel for reduction(+ : nonFinite, outside) reduction(max : deviation)
-  for (std::size_t i = 0; i < x.size(); ++i) {
+  for (std::size_t i = 0; i < cloud.ownedSize(); ++i) {
     const Real density = health.hasDensity ? rho[i] : noDensity;
     if (!x[i].allFinite() || !u[i].allFinite() || !std::isfinite(density)) {
       ++nonFinite;
@@ -89,7 +91,7 @@ CloudHealth measureCloudHealth(const ParticleCloud& cloud, const Domain& domain,
   health.outside = outside;
   health.largestDensityDeviation = deviation;
   if (!health.finiteAndInside()) {
-    for (std::size_t i = 0; i < x.size(); ++i) {
+    for (std::size_t i = 0; i < cloud.ownedSize(); ++i) {
       if (isBad(x[i], u[i], health.hasDensity ? rho[i] : noDensity, domain)) {
         health.firstBad = i;
         health.firstBadPosition = x[i];
@@ -98,7 +100,7 @@ CloudHealth measureCloudHealth(const ParticleCloud& cloud, const Domain& domain,
     }
   }
   if (health.hasDensity && deviation > 0) {
-    for (std::size_t i = 0; i < x.size(); ++i) {
+    for (std::size_t i = 0; i < cloud.ownedSize(); ++i) {
       if (deviationOf(i) == deviation) {
         health.mostDeviating = i;
         health.mostDeviatingPosition = x[i];
@@ -147,30 +149,41 @@ std::string HealthWarnings::summary() const {
 }
 
 
-FluidSummary summarizeFluid(const ParticleCloud& fluid) {
-  FluidSummary s;
+FluidSummary summarizeFluid(const ParticleCloud& fluid, const Communicator& comm) {
   const auto& u = fluid.vectorField("U");
   const auto& rho = fluid.scalarField("rho");
   const auto& restDensity = fluid.scalarField("restDensity");
   const auto& p = fluid.scalarField("p");
   const auto& mass = fluid.scalarField("mass");
-  if (u.empty()) return s;
-  s.lowestDeviation = s.highestDeviation = static_cast<double>(rho[0] / restDensity[0]) - 1.0;
-  s.lowestPressure = s.highestPressure = static_cast<double>(p[0]);
-  s.lowestDensity = s.highestDensity = static_cast<double>(rho[0]);
-  for (std::size_t i = 0; i < u.size(); ++i) {
+  const double inf = std::numeric_limits<double>::infinity();
+  // the lowest values as the largest of their negatives: one reduction for all
+  std::vector<double> largest{0, -inf, -inf, -inf, -inf, -inf, -inf};
+  std::vector<double> sums{0, 0, 0};
+  for (std::size_t i = 0; i < fluid.ownedSize(); ++i) {
     const double speedSquared = static_cast<double>(u[i].squaredNorm());
     const double deviation = static_cast<double>(rho[i] / restDensity[i]) - 1.0;
-    s.largestSpeed = std::max(s.largestSpeed, std::sqrt(speedSquared));
-    s.lowestDensity = std::min(s.lowestDensity, static_cast<double>(rho[i]));
-    s.highestDensity = std::max(s.highestDensity, static_cast<double>(rho[i]));
-    s.lowestDeviation = std::min(s.lowestDeviation, deviation);
-    s.highestDeviation = std::max(s.highestDeviation, deviation);
-    s.lowestPressure = std::min(s.lowestPressure, static_cast<double>(p[i]));
-    s.highestPressure = std::max(s.highestPressure, static_cast<double>(p[i]));
-    s.mass += static_cast<double>(mass[i]);
-    s.kineticEnergy += 0.5 * static_cast<double>(mass[i]) * speedSquared;
+    const double values[] = {std::sqrt(speedSquared),  static_cast<double>(rho[i]),
+                             -static_cast<double>(rho[i]), deviation,
+                             -deviation,               static_cast<double>(p[i]),
+                             -static_cast<double>(p[i])};
+    for (std::size_t k = 0; k < largest.size(); ++k) largest[k] = std::max(largest[k], values[k]);
+    sums[0] += static_cast<double>(mass[i]);
+    sums[1] += 0.5 * static_cast<double>(mass[i]) * speedSquared;
+    sums[2] += 1;
   }
+  comm.max(largest);
+  comm.sum(sums);
+  FluidSummary s;
+  if (sums[2] == 0) return s;
+  s.largestSpeed = largest[0];
+  s.highestDensity = largest[1];
+  s.lowestDensity = -largest[2];
+  s.highestDeviation = largest[3];
+  s.lowestDeviation = -largest[4];
+  s.highestPressure = largest[5];
+  s.lowestPressure = -largest[6];
+  s.mass = sums[0];
+  s.kineticEnergy = sums[1];
   return s;
 }
 

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "core/Real.h"
+#include "parallel/Communicator.h"
 #include "particles/Domain.h"
 #include "particles/ParticleCloud.h"
 
@@ -86,6 +87,8 @@ struct FluidSummary {
   double kineticEnergy = 0;                          // J
 };
 
-FluidSummary summarizeFluid(const ParticleCloud& fluid);
+// Of the owned particles of every rank of comm (a decomposed run's halo is not counted).
+FluidSummary summarizeFluid(const ParticleCloud& fluid,
+                            const Communicator& comm = Communicator::self());
 
 }  // namespace sphcast

@@ -197,16 +197,22 @@ void WeaklyCompressibleFlow::keepClearOfWalls() {
     clearanceVelocityChange_.resize(fluid_.size());
     clearanceWall_.resize(fluid_.size());
   }
+  // the owned particles (all of a serial run's); a decomposed run's halo then takes its
+  // owners' positions and velocities
+  const std::size_t owned = fluid_.ownedSize();
   addWallTime(timings_.wallClearance, [&] {
-    lastClearance_ =
-        enforceWallClearance(fluid_.positions(), fluid_.vectorField("U"), wallSurfaces(),
-                             settings_.periodic, spacing, settings_.wallClearance * spacing,
-                             fluid_.hasScalarField("frozen")
-                                 ? std::span<const Real>(fluid_.scalarField("frozen"))
-                                 : std::span<const Real>(),
-                             clearanceVelocityChange_, clearanceWall_);
+    lastClearance_ = enforceWallClearance(
+        std::span<Vector>(fluid_.positions()).first(owned),
+        std::span<Vector>(fluid_.vectorField("U")).first(owned), wallSurfaces(),
+        settings_.periodic, spacing, settings_.wallClearance * spacing,
+        fluid_.hasScalarField("frozen")
+            ? std::span<const Real>(fluid_.scalarField("frozen")).first(owned)
+            : std::span<const Real>(),
+        anyLoad ? std::span<Vector>(clearanceVelocityChange_).first(owned) : std::span<Vector>(),
+        anyLoad ? std::span<int>(clearanceWall_).first(owned) : std::span<int>());
     if (anyLoad) sumClearanceImpulses();
   });
+  neighbourhood_.syncHalo(fluid_, {"position", "U"});
   // The lists stay those of the positions before the move (by the clearance plus the depth it
   // had reached, under 0.75 dx unless the run then stops; most moves are far smaller): a pair
   // that came within h misses W's last (1 - r/h)^4 sliver, and one that left it adds W = 0. A
@@ -355,10 +361,11 @@ FlowStepLimits WeaklyCompressibleFlow::stepLimits(double maxCo) const {
   double largestAcceleration = 0;
   double largestRelativeDensityRate = 0;
   double largestKinematicViscosity = 0;
+  const std::size_t owned = fluid_.ownedSize();  // a decomposed run's halo is its owners'
 #pragma omp parallel for reduction(max                                                         \
                                    : fastest, largestAcceleration, largestRelativeDensityRate, \
                                      largestKinematicViscosity)
-  for (std::size_t i = 0; i < v.size(); ++i) {
+  for (std::size_t i = 0; i < owned; ++i) {
     fastest = std::max(fastest, static_cast<double>(v[i].norm()));
     largestAcceleration = std::max(largestAcceleration, static_cast<double>(a[i].norm()));
     largestRelativeDensityRate = std::max(largestRelativeDensityRate,

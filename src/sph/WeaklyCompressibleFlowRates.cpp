@@ -28,6 +28,7 @@ void WeaklyCompressibleFlow::extrapolateWallPressure() {
     for (std::size_t w = 0; w < walls_.size(); ++w) {
       const auto& wallX = walls_[w]->positions();
       const NeighbourList& fluidAround = fluidAroundWall(w);
+      wallPressure_[w].resize(wallX.size());  // a decomposed run's walls change with a re-balance
       Real* wallPressure = wallPressure_[w].data();
       // a moving wall's particles feel g - a_wall (eq. (27))
       const Vector* wallAcceleration = walls_[w]->hasVectorField("acceleration")
@@ -51,6 +52,8 @@ void WeaklyCompressibleFlow::extrapolateWallPressure() {
   } else {
     extrapolateWith([](const Vector& a, const Vector& b) { return Vector(a - b); });
   }
+  // a halo wall particle's fluid lies partly beyond the halo: its pressure is its owner's
+  for (std::size_t w = 0; w < walls_.size(); ++w) neighbourhood_.syncHalo(*walls_[w], wallPressure_[w]);
 }
 
 // L_i of every fluid particle from its fluid and wall neighbours (walls complete the kernel
@@ -107,6 +110,9 @@ void WeaklyCompressibleFlow::computeCorrection() {
   } else {
     correctWith([](const Vector& a, const Vector& b) { return Vector(a - b); });
   }
+  // the rates read L_j and the density gradient at the neighbours: a halo's from its owners
+  if (settings_.kernelCorrection) neighbourhood_.syncHalo(fluid_, correction_);
+  if (densityGradient) neighbourhood_.syncHalo(fluid_, densityGradient_);
 }
 
 template <int Dim, class Interface, class Viscosity, WeaklyCompressibleFlow::RatePart Part>
@@ -425,6 +431,7 @@ std::uint64_t WeaklyCompressibleFlow::markFrozenNearMelt() {
     }
     frozenTouchesMelt_[i] = touches ? 1 : 0;
   }
+  neighbourhood_.syncHalo(fluid_, frozenTouchesMelt_);  // the second hop reads the neighbours
   std::uint64_t skipped = 0;
 #pragma omp parallel for schedule(static) reduction(+ : skipped)
   for (std::size_t i = 0; i < count; ++i) {

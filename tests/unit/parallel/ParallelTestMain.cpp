@@ -27,7 +27,7 @@ class RankFailurePrinter : public ::testing::EmptyTestEventListener {
 }  // namespace
 
 int main(int argc, char** argv) {
-  sphcast::ParallelRun mpi(argc, argv, sphcast::builtWithMpi());
+  sphcast::ParallelRun mpi(sphcast::builtWithMpi());
   ::testing::InitGoogleTest(&argc, argv);
   const sphcast::Communicator world = sphcast::Communicator::world();
   if (!world.master()) {

@@ -1,0 +1,73 @@
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "parallel/Communicator.h"
+#include "parallel/DecompositionSettings.h"
+#include "parallel/ParticleTransfer.h"
+#include "parallel/RecursiveBisection.h"
+#include "particles/Neighbourhood.h"
+
+namespace sphcast {
+
+// A run decomposed over the ranks of a communicator (doc/design.md §5, "Parallel runs"): space
+// cut into one subdomain per rank by recursive bisection of every cloud's weighted particles;
+// each rank holds the particles of its subdomain, followed by a halo of copies of the other
+// ranks' particles within the neighbour search's reach (h plus the lists' skin), so that a pair
+// loop over its own particles finds exactly the neighbours a serial run finds. The solver's
+// search goes through update(); a model brings the halo up to date between two of its passes
+// through the neighbourhood's syncHalo, which lands in refresh().
+class DomainDecomposition : public HaloSync {
+ public:
+  struct Cloud {
+    ParticleCloud* cloud = nullptr;
+    bool moves = false;             // migrates at every rebuild (the metal); else at re-balances
+    std::int64_t weight = 1;        // one particle's share of a rank's work
+    bool wholeOnEveryRank = false;  // read whole by every rank (a serial file): kept in part
+  };
+
+  // haloRadius: the neighbour search's reach (support radius plus skin).
+  DomainDecomposition(const Communicator& comm, DecompositionSettings settings,
+                      double haloRadius, const PeriodicBox& periodic, int dimension);
+
+  // Collective: cuts space by the particles of every cloud and leaves each rank its own, in
+  // cell order, with their halos. The clouds must stay where they are while this lives.
+  void distribute(std::vector<Cloud> clouds);
+
+  // Collective: the search of a step. The moving clouds' halos are refreshed; then, when
+  // `rebuild` or the neighbourhood's rebuild is due on any rank, their particles migrate to
+  // the ranks of their subdomains and get new halos (after a re-balance of every cloud when the
+  // most loaded rank carries more than 1 + maxImbalance times the mean). The neighbourhood is
+  // then updated, with every cloud kept in its order.
+  void update(Neighbourhood& neighbourhood, bool rebuild = false);
+
+  void refresh(const ParticleCloud& cloud, void* values, std::size_t bytesPerParticle) override;
+  void refresh(ParticleCloud& cloud, const std::vector<std::string>& fields) override;
+
+  const Communicator& communicator() const { return comm_; }
+  const RecursiveBisection& bisection() const { return bisection_; }
+  long rebalances() const { return rebalances_; }
+  // Collective: the most loaded rank's weight over the mean (1: perfect balance).
+  double imbalance() const;
+  // Collective: "2 subdomains, ...; halo 412 particles, 9.8 % of the 4,210 owned" for the log.
+  std::string describe() const;
+
+ private:
+  void decompose();
+  void redistribute(std::size_t c);  // drops the halo, migrates, puts the owned in cell order
+  std::size_t indexOf(const ParticleCloud& cloud) const;
+
+  Communicator comm_;
+  DecompositionSettings settings_;
+  double haloRadius_;
+  PeriodicBox periodic_;
+  int dimension_;
+  RecursiveBisection bisection_;
+  std::vector<Cloud> clouds_;
+  std::vector<HaloExchange> halos_;
+  long rebalances_ = 0;
+};
+
+}  // namespace sphcast
