@@ -138,6 +138,17 @@ void warnOfStaleCaseIndexes(const CaseFolder& caseFolder) {
   }
 }
 
+std::vector<std::string> timeFolderCloudNames(const CaseFolder& caseFolder,
+                                              const std::string& timeName) {
+  std::vector<std::string> names;
+  for (const fs::path& file : cloudFilesIn(caseFolder.root() / timeName)) {
+    if (names.empty() || names.back() != file.stem().string()) {
+      names.push_back(file.stem().string());
+    }
+  }
+  return names;
+}
+
 std::vector<ParticleCloud> readTimeFolderClouds(const CaseFolder& caseFolder,
                                                 const std::string& timeName, int piece,
                                                 int pieces, std::vector<bool>* readWhole) {

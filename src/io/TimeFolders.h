@@ -40,6 +40,10 @@ std::vector<std::filesystem::path> staleCaseIndexes(const CaseFolder& caseFolder
 // not removed: a .pvd in the case may be the user's.
 void warnOfStaleCaseIndexes(const CaseFolder& caseFolder);
 
+// The names of the clouds stored in a time folder (a .vtp or a .pvtp each), sorted.
+std::vector<std::string> timeFolderCloudNames(const CaseFolder& caseFolder,
+                                              const std::string& timeName);
+
 // Every cloud stored in a time folder (a .vtp each, or a parallel run's .pvtp with its pieces),
 // sorted by name. Rank `piece` of `pieces` reads pieces piece, piece + pieces, ... of each
 // .pvtp, and a .vtp whole (readWhole, when given, says which: the decomposition then keeps

@@ -295,6 +295,7 @@ void CastingSolver::run() {
     }
     time_.adjustDeltaT(stable, limiter);
     if (!time_.settings().adjustTimeStep && (flow_ || energy_) && time_.deltaT() > stable &&
+        comm_.master() &&
         warnings_.shouldPrint("a fixed deltaT above the stable step", time_.deltaT() / stable)) {
       std::ostringstream message;
       message.precision(4);
@@ -353,6 +354,11 @@ void CastingSolver::run() {
   }
   logTimeSpent();
   logWorkSkipped();
+  if (decomposition_) {  // collective: every rank takes part, rank 0 prints
+    const std::string decomposed = decomposition_->describe();
+    info() << "Decomposition at the end: " << decomposition_->rebalances()
+           << " re-balances; " << decomposed << '\n';
+  }
   info() << clock_.timesLine() << "\n\nEnd\n\n";
 }
 

@@ -202,10 +202,11 @@ void CastingSolver::setUpNeighbourhood() {
   for (ParticleCloud* cloud : evolving_) lastGood_.push_back(*cloud);
 }
 
-// -parallel runs the flow among fixed walls; the rest of the step is not decomposed yet.
+// -parallel runs the flow among fixed walls; the rest of the step is not decomposed yet. Every
+// rank refuses alike (a CollectiveError: rank 0 says it).
 void CastingSolver::checkParallelSupport() const {
   auto refuse = [&](const std::string& what) {
-    throw Error("-parallel: " + what +
+    throw CollectiveError("-parallel: " + what +
                 " does not run decomposed in this version; run the case serial (without "
                 "mpirun and -parallel). Decomposed runs take the flow among fixed walls.");
   };
@@ -221,8 +222,14 @@ void CastingSolver::checkParallelSupport() const {
 // wall particles of its subdomain with their halos (the neighbour search's reach, h + skin).
 void CastingSolver::decompose() {
   const FlowSettings& settings = flowSetup_.settings;
+  DecompositionSettings decomposeParDict;
+  try {
+    decomposeParDict = readDecompositionSettings(caseFolder_, comm_.size());
+  } catch (const Error& error) {
+    throw CollectiveError(error.what());  // every rank read the same file
+  }
   decomposition_ = std::make_unique<DomainDecomposition>(
-      comm_, readDecompositionSettings(caseFolder_, comm_.size()),
+      comm_, decomposeParDict,
       static_cast<double>(neighbourhood_->radius() + neighbourhood_->skin()), settings.periodic,
       settings.dimension);
   auto readWhole = [&](const ParticleCloud& cloud) {
@@ -318,9 +325,9 @@ void CastingSolver::setUpFlow() {
          << " of its running mean, stops the run\n"
          << "    wall clearance " << settings.wallClearance
          << " dx: fluid particles closer to a wall surface are moved back to it\n";
-  const SoundSpeedCheck soundSpeed = checkSoundSpeed(settings, fluid, walls);
+  const SoundSpeedCheck soundSpeed = checkSoundSpeed(settings, fluid, walls, comm_);
   if (soundSpeed.tooLow) {
-    warning(soundSpeed.message);
+    if (comm_.master()) warning(soundSpeed.message);
   } else {
     info() << "    " << soundSpeed.message << '\n';
   }

@@ -164,26 +164,39 @@ FlowSetup readFlowSetup(const CaseFolder& caseFolder, const std::optional<Vector
 }
 
 SoundSpeedCheck checkSoundSpeed(const FlowSettings& settings, const ParticleCloud& fluid,
-                                const std::vector<const ParticleCloud*>& walls) {
+                                const std::vector<const ParticleCloud*>& walls,
+                                const Communicator& comm) {
   SoundSpeedCheck check;
   const double g = static_cast<double>(settings.gravity.norm());
   const Eigen::Vector3d up =
       g > 0 ? Eigen::Vector3d(-settings.gravity.cast<double>() / g) : Eigen::Vector3d::Zero();
   double top = -std::numeric_limits<double>::infinity();
   double bottom = std::numeric_limits<double>::infinity();
-  for (const Vector& x : fluid.positions()) {
-    top = std::max(top, x.cast<double>().dot(up));
-    bottom = std::min(bottom, x.cast<double>().dot(up));
+  const auto& x = fluid.positions();
+  for (std::size_t i = 0; i < fluid.ownedSize(); ++i) {
+    top = std::max(top, x[i].cast<double>().dot(up));
+    bottom = std::min(bottom, x[i].cast<double>().dot(up));
   }
   for (const ParticleCloud* wall : walls) {
-    for (const Vector& x : wall->positions()) bottom = std::min(bottom, x.cast<double>().dot(up));
-  }
-  check.fallHeight = fluid.size() > 0 ? std::max(0.0, top - bottom) : 0.0;
-  if (fluid.hasVectorField("U")) {
-    for (const Vector& u : fluid.vectorField("U")) {
-      check.initialSpeed = std::max(check.initialSpeed, static_cast<double>(u.norm()));
+    const auto& y = wall->positions();
+    for (std::size_t k = 0; k < wall->ownedSize(); ++k) {
+      bottom = std::min(bottom, y[k].cast<double>().dot(up));
     }
   }
+  if (fluid.hasVectorField("U")) {
+    const auto& u = fluid.vectorField("U");
+    for (std::size_t i = 0; i < fluid.ownedSize(); ++i) {
+      check.initialSpeed = std::max(check.initialSpeed, static_cast<double>(u[i].norm()));
+    }
+  }
+  // over every rank of a decomposed run
+  std::vector<double> largest{top, -bottom, check.initialSpeed};
+  comm.max(largest);
+  top = largest[0];
+  bottom = -largest[1];
+  check.initialSpeed = largest[2];
+  const bool anyFluid = comm.sum(static_cast<std::int64_t>(fluid.ownedSize())) > 0;
+  check.fallHeight = anyFluid ? std::max(0.0, top - bottom) : 0.0;
   check.largestSpeed =
       std::sqrt(check.initialSpeed * check.initialSpeed + 2.0 * g * check.fallHeight);
   const double c = static_cast<double>(settings.soundSpeed);

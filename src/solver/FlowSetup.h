@@ -8,6 +8,7 @@
 #include "core/CaseFolder.h"
 #include "core/Real.h"
 #include "materials/TemperatureTable.h"
+#include "parallel/Communicator.h"
 #include "sph/WeaklyCompressibleFlow.h"
 
 namespace sphcast {
@@ -60,8 +61,10 @@ struct SoundSpeedCheck {
   std::string message;      // the log's line(s)
 };
 constexpr double maxStartMach = 0.1;
+// Over every rank of comm in a decomposed run.
 SoundSpeedCheck checkSoundSpeed(const FlowSettings& settings, const ParticleCloud& fluid,
-                                const std::vector<const ParticleCloud*>& walls);
+                                const std::vector<const ParticleCloud*>& walls,
+                                const Communicator& comm = Communicator::self());
 
 // Reads and checks the three dictionaries (errors name file, line and key). A flow needs
 // gravity (constant/g, readGravityIfPresent): without it, an error at the flow's entry.

@@ -3,9 +3,9 @@ import vtk
 
 
 def read_cloud(path, names):
-    """The particles of the .vtp file at path by their `id`: {id: {"x": position, name: value}}
-    for each field in names."""
-    reader = vtk.vtkXMLPolyDataReader()
+    """The particles of the .vtp file at path (or of a parallel run's .pvtp and its pieces) by
+    their `id`: {id: {"x": position, name: value}} for each field in names."""
+    reader = vtk.vtkXMLPPolyDataReader() if str(path).endswith(".pvtp") else vtk.vtkXMLPolyDataReader()
     reader.SetFileName(path)
     reader.Update()
     out = reader.GetOutput()

@@ -1,7 +1,6 @@
 // castPostProcess: the analyses of system/castPostProcessDict (castAnalysis/CastAnalysis.h,
 // doc/castPostProcess.md) over the written times, each into postProcessing/<name>/, and the
 // one-page postProcessing/castReport.md. Without the dictionary: the cloud summary of every cloud.
-#include <algorithm>
 #include <filesystem>
 #include <memory>
 #include <utility>
@@ -17,16 +16,6 @@
 
 namespace {
 
-// The clouds stored in a time folder, by their .vtp files.
-std::vector<std::string> cloudNames(const sphcast::CaseFolder& caseFolder,
-                                    const std::string& timeName) {
-  std::vector<std::string> names;
-  for (const auto& entry : std::filesystem::directory_iterator(caseFolder.root() / timeName)) {
-    if (entry.path().extension() == ".vtp") names.push_back(entry.path().stem().string());
-  }
-  std::sort(names.begin(), names.end());
-  return names;
-}
 
 // h and the dimension where the case gives them, and the materials of its heat clouds.
 void readCaseSetup(const sphcast::CaseFolder& caseFolder, sphcast::AnalysisContext& context) {
@@ -80,7 +69,7 @@ int castPostProcess(int argc, const char* const argv[]) {
   context.caseRoot = caseFolder.root();
   context.times = times;
   context.allTimes = !args.has("time") && !args.has("latestTime");
-  context.clouds = cloudNames(caseFolder, times.front().name);
+  context.clouds = sphcast::timeFolderCloudNames(caseFolder, times.front().name);
   readCaseSetup(caseFolder, context);
 
   const auto dictFile = caseFolder.systemFile("castPostProcessDict");

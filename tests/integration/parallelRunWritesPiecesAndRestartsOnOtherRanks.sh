@@ -1,0 +1,87 @@
+#!/bin/bash
+# The 2D dam break tutorial (a/dx = 20, 0 .. 0.25 s) as a cluster user runs it:
+# `mpirun -np 2` and `-np 4 sphCastFoam -parallel` after the serial particleizeMold and
+# setCastFields. Each written time holds water.pvtp with a piece per rank, which the .pvd lists;
+# castPostProcess reads them, and its cloud summary (count, centroid, mean velocity, extent)
+# equals the serial run's within 1e-9 m or m/s at every time; the front function object within
+# 1e-10 m. A run stopped at 0.1 on 2 ranks goes on from there on 4. A decomposeParDict for
+# another number of ranks is refused with its file and line, on every rank, without a hang.
+# (The particle-by-particle comparison with the serial run, on 1, 2 and 4 ranks and across
+# restarts, is tests/unit/parallel/ParallelSolverTest.cpp.)
+. "$SPHCAST_TEST_TOOLS"
+tutorial=$(cd "$(dirname "$0")/../../tutorials/validation/damBreak2D" && pwd)
+export OMP_NUM_THREADS=1 OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+mpirun=(timeout 300 mpirun --oversubscribe)
+mkdir -p "$scratch/serial"
+cp -r "$tutorial/system" "$tutorial/constant" "$scratch/serial/"
+rm -rf "$scratch/serial/constant/particles"
+cd "$scratch/serial"
+particleizeMold > log.particleizeMold 2>&1 || fail "particleizeMold: $(tail -5 log.particleizeMold)"
+setCastFields > log.setCastFields 2>&1 || fail "setCastFields: $(tail -5 log.setCastFields)"
+for ranks in 2 4; do
+    cp -r "$scratch/serial" "$scratch/np$ranks"
+    cat > "$scratch/np$ranks/system/decomposeParDict" <<DICT
+FoamFile { version 2.0; format ascii; class dictionary; object decomposeParDict; }
+numberOfSubdomains $ranks;
+method recursiveBisection;
+DICT
+done
+cp -r "$scratch/np2" "$scratch/restart"
+sphCastFoam > log.sphCastFoam 2>&1 || fail "serial: $(tail -5 log.sphCastFoam)"
+castPostProcess > log.castPostProcess 2>&1 || fail "serial castPostProcess"
+for ranks in 2 4; do
+    cd "$scratch/np$ranks"
+    "${mpirun[@]}" -np $ranks sphCastFoam -parallel > log.sphCastFoam 2>&1 ||
+        fail "-np $ranks: $(tail -8 log.sphCastFoam)"
+    grep -q "^Decomposition: $ranks subdomains by recursive bisection" log.sphCastFoam ||
+        fail "-np $ranks: no decomposition line"
+    [ "$(grep -c '^Time = ' log.sphCastFoam)" -gt 0 ] && [ "$(grep -c '^End$' log.sphCastFoam)" = 1 ] ||
+        fail "-np $ranks: the log is not one rank's"
+    for time in 0.05 0.1 0.15 0.2 0.25; do
+        [ -f $time/water.pvtp ] && [ -f $time/water/water_$((ranks - 1)).vtp ] ||
+            fail "-np $ranks: $time/water.pvtp and its pieces: $(ls $time)"
+        grep -q "file=\"$time/water.pvtp\"" np$ranks.pvd || fail "-np $ranks: the .pvd lists no $time/water.pvtp"
+    done
+    castPostProcess > log.castPostProcess 2>&1 || fail "-np $ranks castPostProcess: $(tail -5 log.castPostProcess)"
+    # the serial tool on the pieces: the summary within round-off of the serial run's
+    paste -d, "$scratch/serial/postProcessing/cloudSummary/water.csv" postProcessing/cloudSummary/water.csv |
+        awk -F, 'NR > 1 { n++; half = NF / 2; if ($1 != $(half + 1) || $2 != $(half + 2)) exit 1
+                 for (k = 3; k <= half; k++) { d = $k - $(half + k); if (d < 0) d = -d; if (d > 1e-9) exit 1 } }
+                 END { if (n != 6) exit 1 }' ||
+        fail "-np $ranks: cloud summary off the serial one: $(tail -2 postProcessing/cloudSummary/water.csv)"
+done
+python3 - "$scratch/serial" "$scratch/np2" "$scratch/np4" <<'PY' || fail "front function object"
+import os, sys
+from functionObjectSeries import read_series
+def front(case):
+    os.chdir(case)
+    return read_series("front", "front")[0]
+serial = front(sys.argv[1])
+for case in sys.argv[2:]:
+    rows = front(case)
+    worst = max(abs(r[1] - s[1]) for r, s in zip(rows, serial))
+    print("%s: %d front rows within %.2g m of the serial run's" % (case, len(rows), worst))
+    if len(rows) != len(serial) or worst > 1e-10:
+        sys.exit(1)
+PY
+
+# 2 ranks to 0.1, then 4 ranks on from there
+cd "$scratch/restart"
+sed -i 's/^endTime .*/endTime 0.1;/' system/controlDict
+"${mpirun[@]}" -np 2 sphCastFoam -parallel > log.first 2>&1 || fail "2 ranks to 0.1: $(tail -5 log.first)"
+sed -i 's/^endTime .*/endTime 0.25;/' system/controlDict
+sed -i 's/numberOfSubdomains 2/numberOfSubdomains 4/' system/decomposeParDict
+"${mpirun[@]}" -np 4 sphCastFoam -parallel > log.second 2>&1 || fail "4 ranks from 0.1: $(tail -5 log.second)"
+grep -q "Starting from time 0.1" log.second || fail "the 4 ranks did not start from 0.1"
+[ -f 0.25/water/water_3.vtp ] || fail "the 4 ranks wrote no 4 pieces"
+grep -q "fluid water: 800 particles" log.second || fail "particles lost: $(grep 'fluid water' log.second)"
+
+# 4 subdomains on 2 ranks: refused, naming the file and line, once, and no rank hangs
+cd "$scratch/np4"
+if "${mpirun[@]}" -np 2 sphCastFoam -parallel > log.wrong 2>&1; then
+    fail "4 subdomains on 2 ranks ran"
+fi
+grep -q "decomposeParDict:2.*numberOfSubdomains 4 in decomposeParDict, but mpirun started 2 ranks" log.wrong ||
+    fail "wrong rank count: $(grep -m3 -A2 'FATAL' log.wrong)"
+[ "$(grep -c 'FATAL ERROR' log.wrong)" = 1 ] || fail "the error printed $(grep -c 'FATAL ERROR' log.wrong) times"
+pass "dam break on 2 and 4 ranks: pieces, .pvd, castPostProcess and front as the serial run's; 2 then 4 ranks"
