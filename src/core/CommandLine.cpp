@@ -112,13 +112,16 @@ int runApplication(const std::string& application, int (*body)(int, const char* 
     return 1;
   } catch (const Error& error) {
     std::cout.flush();
-    std::cerr << "\n" << errorPrefix << "--> sphCast FATAL ERROR in " << application << ":\n"
-              << errorPrefix << error.what() << "\n\n" << errorPrefix << "Exiting with status 1\n";
+    std::cerr << "\n"
+              << errorPrefix << "--> sphCast FATAL ERROR in " << application << ":\n"
+              << errorPrefix << error.what() << "\n\n"
+              << errorPrefix << "Exiting with status 1\n";
     if (fatalErrorHandler) fatalErrorHandler(false);
     return 1;
   } catch (const std::exception& unexpected) {
     std::cout.flush();
-    std::cerr << "\n" << errorPrefix << "--> sphCast FATAL ERROR in " << application
+    std::cerr << "\n"
+              << errorPrefix << "--> sphCast FATAL ERROR in " << application
               << " (unexpected, please report): " << unexpected.what() << '\n';
     if (fatalErrorHandler) fatalErrorHandler(false);
     return 2;

@@ -114,8 +114,8 @@ ParticleCloud readCloudPvtp(const fs::path& pvtpFile, const std::string& cloudNa
        p += static_cast<std::size_t>(stride)) {
     const ParticleCloud piece = readCloudVtp(pieces[p], cloudName);
     if (piece.attributes() != cloud.attributes()) {
-      throw Error(pieces[p].string() + ": cloud '" + cloudName +
-                  "' has other attributes than in " + pieces[static_cast<std::size_t>(first)].string());
+      throw Error(pieces[p].string() + ": cloud '" + cloudName + "' has other attributes than in " +
+                  pieces[static_cast<std::size_t>(first)].string());
     }
     cloud.append(piece);
   }

@@ -44,7 +44,8 @@ void writeTimeFolder(const CaseFolder& caseFolder, const TimeState& time,
     fs::remove_all(writing);
     fs::create_directories(writing / "uniform");
     for (const ParticleCloud* cloud : clouds) {
-      if (parallel) fs::create_directories(pieceFile(writing / (cloud->name() + ".pvtp"), 0).parent_path());
+      if (!parallel) continue;
+      fs::create_directories(pieceFile(writing / (cloud->name() + ".pvtp"), 0).parent_path());
     }
   }
   // in parallel each rank writes its piece of every cloud, and rank 0 the indexes and the rest
@@ -150,15 +151,15 @@ std::vector<std::string> timeFolderCloudNames(const CaseFolder& caseFolder,
 }
 
 std::vector<ParticleCloud> readTimeFolderClouds(const CaseFolder& caseFolder,
-                                                const std::string& timeName, int piece,
-                                                int pieces, std::vector<bool>* readWhole) {
+                                                const std::string& timeName, int piece, int pieces,
+                                                std::vector<bool>* readWhole) {
   std::vector<ParticleCloud> clouds;
   if (readWhole) readWhole->clear();
   for (const fs::path& file : cloudFilesIn(caseFolder.root() / timeName)) {
     const std::string name = file.stem().string();
     if (!clouds.empty() && clouds.back().name() == name) {
-      throw Error(file.parent_path().string() + " holds cloud '" + name +
-                  "' twice, as " + name + ".pvtp (a parallel run's) and " + name +
+      throw Error(file.parent_path().string() + " holds cloud '" + name + "' twice, as " + name +
+                  ".pvtp (a parallel run's) and " + name +
                   ".vtp (a serial run's): remove the one that is not wanted");
     }
     const bool pieceByPiece = file.extension() == ".pvtp";

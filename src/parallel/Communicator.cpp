@@ -82,8 +82,7 @@ void reduceInPlace(std::intptr_t handle, bool mpi, T* values, std::size_t count,
 #ifdef SPHCAST_WITH_MPI
   if (!mpi || count == 0) return;
   const MPI_Op op = how == Reduction::sum ? MPI_SUM : how == Reduction::min ? MPI_MIN : MPI_MAX;
-  MPI_Allreduce(MPI_IN_PLACE, values, static_cast<int>(count), mpiType<T>(), op,
-                toComm(handle));
+  MPI_Allreduce(MPI_IN_PLACE, values, static_cast<int>(count), mpiType<T>(), op, toComm(handle));
 #else
   (void)handle, (void)mpi, (void)values, (void)count, (void)how;
 #endif
@@ -145,10 +144,10 @@ std::string Communicator::firstNonEmpty(const std::string& text) const {
   }
   if (root < 0) return "";
   if (!mpi_ || size_ == 1) return text;
-  std::string shared = root == rank_ ? text
-                                     : std::string(static_cast<std::size_t>(
-                                                       lengths[static_cast<std::size_t>(root)]),
-                                                   '\0');
+  std::string shared =
+      root == rank_
+          ? text
+          : std::string(static_cast<std::size_t>(lengths[static_cast<std::size_t>(root)]), '\0');
 #ifdef SPHCAST_WITH_MPI
   MPI_Bcast(shared.data(), static_cast<int>(shared.size()), MPI_CHAR, root, toComm(handle_));
 #endif
@@ -174,8 +173,10 @@ std::vector<std::vector<char>> Communicator::exchange(std::vector<std::vector<ch
   // the bytes, each message tagged and matched by its source
   std::vector<std::int64_t> sendCounts(static_cast<std::size_t>(size_), 0);
   std::vector<std::int64_t> receiveCounts(static_cast<std::size_t>(size_), 0);
-  for (int r : peers) sendCounts[static_cast<std::size_t>(r)] =
-      static_cast<std::int64_t>(outgoing[static_cast<std::size_t>(r)].size());
+  for (int r : peers) {
+    sendCounts[static_cast<std::size_t>(r)] =
+        static_cast<std::int64_t>(outgoing[static_cast<std::size_t>(r)].size());
+  }
   if (partners.empty()) {
     MPI_Alltoall(sendCounts.data(), 1, MPI_INT64_T, receiveCounts.data(), 1, MPI_INT64_T, comm);
   } else {
@@ -253,13 +254,15 @@ ParallelRun::ParallelRun(bool parallel) {
   const Communicator world = Communicator::world();
   if (!world.master()) setErrorPrefix("[" + std::to_string(world.rank()) + "] ");
   if (provided < MPI_THREAD_FUNNELED) {
-    throw Error("-parallel: this MPI library cannot run OpenMP threads beside its ranks "
-                "(MPI_THREAD_FUNNELED not provided); set OMP_NUM_THREADS=1");
+    throw Error(
+        "-parallel: this MPI library cannot run OpenMP threads beside its ranks "
+        "(MPI_THREAD_FUNNELED not provided); set OMP_NUM_THREADS=1");
   }
 #else
   if (parallel) {
-    throw Error("-parallel: this build has no MPI; configure with -DSPHCAST_WITH_MPI=ON "
-                "(Debian: apt-get install libopenmpi-dev openmpi-bin) and build again");
+    throw Error(
+        "-parallel: this build has no MPI; configure with -DSPHCAST_WITH_MPI=ON "
+        "(Debian: apt-get install libopenmpi-dev openmpi-bin) and build again");
   }
 #endif
 }

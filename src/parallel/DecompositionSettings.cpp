@@ -11,8 +11,8 @@ namespace sphcast {
 DecompositionSettings readDecompositionSettings(const CaseFolder& caseFolder, int ranks) {
   const auto file = caseFolder.systemFile("decomposeParDict");
   if (!std::filesystem::exists(file)) {
-    throw Error("-parallel needs " + file.string() +
-                " (numberOfSubdomains " + std::to_string(ranks) +
+    throw Error("-parallel needs " + file.string() + " (numberOfSubdomains " +
+                std::to_string(ranks) +
                 "; method recursiveBisection;), as OpenFOAM's decomposePar reads it");
   }
   const Dictionary dict = Dictionary::read(file);

@@ -8,9 +8,9 @@
 
 namespace sphcast {
 
-DomainDecomposition::DomainDecomposition(const Communicator& comm,
-                                         DecompositionSettings settings, double haloRadius,
-                                         const PeriodicBox& periodic, int dimension)
+DomainDecomposition::DomainDecomposition(const Communicator& comm, DecompositionSettings settings,
+                                         double haloRadius, const PeriodicBox& periodic,
+                                         int dimension)
     : comm_(comm),
       settings_(std::move(settings)),
       haloRadius_(haloRadius),
@@ -18,8 +18,8 @@ DomainDecomposition::DomainDecomposition(const Communicator& comm,
       dimension_(dimension) {
   if (settings_.subdomains != comm_.size()) {
     throw DictionaryError(settings_.subdomainsAt,
-                          "numberOfSubdomains " + std::to_string(settings_.subdomains) +
-                              " for " + std::to_string(comm_.size()) + " ranks");
+                          "numberOfSubdomains " + std::to_string(settings_.subdomains) + " for " +
+                              std::to_string(comm_.size()) + " ranks");
   }
 }
 
@@ -83,8 +83,7 @@ double DomainDecomposition::imbalance() const {
     total += w;
     largest = std::max(largest, w);
   }
-  return total > 0 ? static_cast<double>(largest) * comm_.size() / static_cast<double>(total)
-                   : 1.0;
+  return total > 0 ? static_cast<double>(largest) * comm_.size() / static_cast<double>(total) : 1.0;
 }
 
 void DomainDecomposition::update(Neighbourhood& neighbourhood, bool rebuild) {

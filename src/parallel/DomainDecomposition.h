@@ -29,8 +29,8 @@ class DomainDecomposition : public HaloSync {
   };
 
   // haloRadius: the neighbour search's reach (support radius plus skin).
-  DomainDecomposition(const Communicator& comm, DecompositionSettings settings,
-                      double haloRadius, const PeriodicBox& periodic, int dimension);
+  DomainDecomposition(const Communicator& comm, DecompositionSettings settings, double haloRadius,
+                      const PeriodicBox& periodic, int dimension);
 
   // Collective: cuts space by the particles of every cloud and leaves each rank its own, in
   // cell order, with their halos. The clouds must stay where they are while this lives.

@@ -264,8 +264,8 @@ void HaloExchange::refresh(ParticleCloud& cloud, const std::vector<std::string>&
   }
 }
 
-void HaloExchange::refresh(const ParticleCloud& cloud, void* values,
-                           std::size_t bytesPerParticle, const Communicator& comm) const {
+void HaloExchange::refresh(const ParticleCloud& cloud, void* values, std::size_t bytesPerParticle,
+                           const Communicator& comm) const {
   checkLayout(cloud);
   auto* bytes = static_cast<char*>(values);
   std::vector<std::vector<char>> outgoing(static_cast<std::size_t>(comm.size()));
@@ -286,8 +286,8 @@ void HaloExchange::refresh(const ParticleCloud& cloud, void* values,
                   "' does not match its halo");
     }
     if (!buffer.empty()) {
-      std::memcpy(bytes + haloStart_[static_cast<std::size_t>(r)] * bytesPerParticle,
-                  buffer.data(), buffer.size());
+      std::memcpy(bytes + haloStart_[static_cast<std::size_t>(r)] * bytesPerParticle, buffer.data(),
+                  buffer.size());
     }
   }
 }

@@ -134,8 +134,8 @@ RecursiveBisection RecursiveBisection::build(const Communicator& comm,
       const bool empty = !(low[3 * s] <= high[3 * s]);
       double longest = -1;
       for (int a = 0; a < dimension; ++a) {
-        const double extent = empty ? node.region.upper[a] - node.region.lower[a]
-                                    : high[3 * s + a] - low[3 * s + a];
+        const double extent =
+            empty ? node.region.upper[a] - node.region.lower[a] : high[3 * s + a] - low[3 * s + a];
         if (extent > longest) {
           longest = extent;
           axis[s] = a;

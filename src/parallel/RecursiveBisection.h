@@ -71,8 +71,8 @@ class RecursiveBisection {
     double cut = 0;
     int lower = -1, upper = -1;  // children
   };
-  void collectNear(int node, const Vector& x, double radius, const PeriodicBox& periodic,
-                   int self, std::vector<int>& near) const;
+  void collectNear(int node, const Vector& x, double radius, const PeriodicBox& periodic, int self,
+                   std::vector<int>& near) const;
 
   std::vector<Node> nodes_;
   std::vector<int> leaves_;  // node of each part

@@ -356,8 +356,8 @@ void CastingSolver::run() {
   logWorkSkipped();
   if (decomposition_) {  // collective: every rank takes part, rank 0 prints
     const std::string decomposed = decomposition_->describe();
-    info() << "Decomposition at the end: " << decomposition_->rebalances()
-           << " re-balances; " << decomposed << '\n';
+    info() << "Decomposition at the end: " << decomposition_->rebalances() << " re-balances; "
+           << decomposed << '\n';
   }
   info() << clock_.timesLine() << "\n\nEnd\n\n";
 }

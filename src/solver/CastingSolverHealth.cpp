@@ -131,13 +131,14 @@ void CastingSolver::stopWithLastGoodState(const TimeState& good, bool restoreSav
   // Only the models keep the state before the step; ballistic clouds have nothing to go back
   // to.
   if (restoreSaved && evolving_.empty()) {
-    throw CollectiveError(failure + "Nothing is written: the last written time is the last good state.");
+    throw CollectiveError(failure +
+                          "Nothing is written: the last written time is the last good state.");
   }
   // The start time is on disk as it was read: rewriting it would store the rates of this run's
   // settings in it, and a rerun with other settings would start from them.
   if (good.name == time_.startTimeName()) {
     throw CollectiveError(failure + "The last good state is the start time " + good.name +
-                ", left as it was; change maxCo, deltaT or soundSpeed and run again.");
+                          ", left as it was; change maxCo, deltaT or soundSpeed and run again.");
   }
   if (restoreSaved) {
     for (std::size_t c = 0; c < evolving_.size(); ++c) *evolving_[c] = lastGood_[c];
@@ -153,9 +154,10 @@ void CastingSolver::stopWithLastGoodState(const TimeState& good, bool restoreSav
   std::vector<const ParticleCloud*> written;
   for (const ParticleCloud& cloud : clouds_) written.push_back(&cloud);
   writer_.write(good, written, uniformStateFiles(good.name));
-  throw CollectiveError(failure + "The last good state, time " + good.name +
-              ", is written (it passed every check); restart from it with a smaller maxCo or "
-              "deltaT, a larger soundSpeed, or look for a gap in the walls there.");
+  throw CollectiveError(
+      failure + "The last good state, time " + good.name +
+      ", is written (it passed every check); restart from it with a smaller maxCo or "
+      "deltaT, a larger soundSpeed, or look for a gap in the walls there.");
 }
 
 }  // namespace sphcast

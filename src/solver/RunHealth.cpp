@@ -148,7 +148,6 @@ std::string HealthWarnings::summary() const {
   return text.str();
 }
 
-
 FluidSummary summarizeFluid(const ParticleCloud& fluid, const Communicator& comm) {
   const auto& u = fluid.vectorField("U");
   const auto& rho = fluid.scalarField("rho");
@@ -162,9 +161,12 @@ FluidSummary summarizeFluid(const ParticleCloud& fluid, const Communicator& comm
   for (std::size_t i = 0; i < fluid.ownedSize(); ++i) {
     const double speedSquared = static_cast<double>(u[i].squaredNorm());
     const double deviation = static_cast<double>(rho[i] / restDensity[i]) - 1.0;
-    const double values[] = {std::sqrt(speedSquared),  static_cast<double>(rho[i]),
-                             -static_cast<double>(rho[i]), deviation,
-                             -deviation,               static_cast<double>(p[i]),
+    const double values[] = {std::sqrt(speedSquared),
+                             static_cast<double>(rho[i]),
+                             -static_cast<double>(rho[i]),
+                             deviation,
+                             -deviation,
+                             static_cast<double>(p[i]),
                              -static_cast<double>(p[i])};
     for (std::size_t k = 0; k < largest.size(); ++k) largest[k] = std::max(largest[k], values[k]);
     sums[0] += static_cast<double>(mass[i]);

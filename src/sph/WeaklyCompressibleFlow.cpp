@@ -203,8 +203,8 @@ void WeaklyCompressibleFlow::keepClearOfWalls() {
   addWallTime(timings_.wallClearance, [&] {
     lastClearance_ = enforceWallClearance(
         std::span<Vector>(fluid_.positions()).first(owned),
-        std::span<Vector>(fluid_.vectorField("U")).first(owned), wallSurfaces(),
-        settings_.periodic, spacing, settings_.wallClearance * spacing,
+        std::span<Vector>(fluid_.vectorField("U")).first(owned), wallSurfaces(), settings_.periodic,
+        spacing, settings_.wallClearance * spacing,
         fluid_.hasScalarField("frozen")
             ? std::span<const Real>(fluid_.scalarField("frozen")).first(owned)
             : std::span<const Real>(),

@@ -53,7 +53,8 @@ void WeaklyCompressibleFlow::extrapolateWallPressure() {
     extrapolateWith([](const Vector& a, const Vector& b) { return Vector(a - b); });
   }
   // a halo wall particle's fluid lies partly beyond the halo: its pressure is its owner's
-  for (std::size_t w = 0; w < walls_.size(); ++w) neighbourhood_.syncHalo(*walls_[w], wallPressure_[w]);
+  for (std::size_t w = 0; w < walls_.size(); ++w)
+    neighbourhood_.syncHalo(*walls_[w], wallPressure_[w]);
 }
 
 // L_i of every fluid particle from its fluid and wall neighbours (walls complete the kernel

@@ -16,7 +16,6 @@
 
 namespace {
 
-
 // h and the dimension where the case gives them, and the materials of its heat clouds.
 void readCaseSetup(const sphcast::CaseFolder& caseFolder, sphcast::AnalysisContext& context) {
   const sphcast::HeatSetup heat = sphcast::readHeatSetup(caseFolder);

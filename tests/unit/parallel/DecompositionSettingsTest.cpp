@@ -12,8 +12,9 @@
 namespace sphcast {
 namespace {
 
-const std::string header = "FoamFile { version 2.0; format ascii; class dictionary; "
-                           "object decomposeParDict; }\n";
+const std::string header =
+    "FoamFile { version 2.0; format ascii; class dictionary; "
+    "object decomposeParDict; }\n";
 
 // The message of the Error reading the dictionary throws ("" when it reads).
 std::string errorOf(const std::string& body, int ranks) {
@@ -50,11 +51,11 @@ TEST(DecompositionSettingsTest, MistakesNameTheFileTheLineAndTheKey) {
   const std::string key = errorOf(good + "maxImbalanse 0.1;\n", 2);
   EXPECT_NE(key.find("maxImbalanse"), std::string::npos) << key;
   EXPECT_NE(key.find("maxImbalance"), std::string::npos) << key;  // the suggestion
-  EXPECT_NE(errorOf("numberOfSubdomains 0;\nmethod recursiveBisection;\n", 1).find(
-                "numberOfSubdomains 0"),
+  EXPECT_NE(errorOf("numberOfSubdomains 0;\nmethod recursiveBisection;\n", 1)
+                .find("numberOfSubdomains 0"),
             std::string::npos);
-  EXPECT_NE(errorOf("numberOfSubdomains two;\nmethod recursiveBisection;\n", 2).find(
-                "numberOfSubdomains"),
+  EXPECT_NE(errorOf("numberOfSubdomains two;\nmethod recursiveBisection;\n", 2)
+                .find("numberOfSubdomains"),
             std::string::npos);
   EXPECT_NE(errorOf(good + "maxImbalance -1;\n", 2).find("maxImbalance"), std::string::npos);
   EXPECT_NE(errorOf("method recursiveBisection;\n", 2).find("numberOfSubdomains"),

@@ -81,8 +81,7 @@ struct Difference {
   double densities = 0;        // largest |rho / rho_serial - 1|
 };
 
-Difference compare(const fs::path& serialCase, const fs::path& otherCase,
-                   const std::string& time) {
+Difference compare(const fs::path& serialCase, const fs::path& otherCase, const std::string& time) {
   const auto a = readTimeFolderClouds(CaseFolder(serialCase), time);
   const auto b = readTimeFolderClouds(CaseFolder(otherCase), time);
   Difference difference;
@@ -98,9 +97,10 @@ Difference compare(const fs::path& serialCase, const fs::path& otherCase,
     }
     const std::size_t j = found->second;
     difference.sameParticles = a[0].scalarField("mass")[i] == b[0].scalarField("mass")[j];
-    difference.positions = std::max(
-        difference.positions,
-        static_cast<double>((a[0].positions()[i] - b[0].positions()[j]).cwiseAbs().maxCoeff() / dx));
+    difference.positions =
+        std::max(difference.positions,
+                 static_cast<double>(
+                     (a[0].positions()[i] - b[0].positions()[j]).cwiseAbs().maxCoeff() / dx));
     difference.densities = std::max(
         difference.densities,
         std::abs(static_cast<double>(b[0].scalarField("rho")[j] / a[0].scalarField("rho")[i]) - 1));
@@ -163,8 +163,7 @@ TEST(ParallelSolverTest, DamBreakOnAnyNumberOfRanksIsTheSerialRunWithinRoundOff)
       EXPECT_TRUE(d.sameParticles) << restarted;
       EXPECT_LT(d.positions, roundOffPositions) << restarted;
       EXPECT_LT(d.densities, roundOffDensities) << restarted;
-      std::cout << "    " << restarted << " at 0.25: positions within " << d.positions
-                << " dx\n";
+      std::cout << "    " << restarted << " at 0.25: positions within " << d.positions << " dx\n";
     }
     // the decomposed time folders as a cluster user opens them
     if (world.size() > 1) {

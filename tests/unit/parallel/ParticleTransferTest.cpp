@@ -76,7 +76,9 @@ void densityPass(ParticleCloud& cloud, const NeighbourList& list, std::size_t co
   const auto& x = cloud.positions();
   for (std::size_t i = 0; i < count; ++i) {
     Real sum = m[i] * kernel.value(0);
-    for (std::uint32_t j : list.of(i)) sum += m[j] * kernel.value(box.separation(x[i], x[j]).norm());
+    for (std::uint32_t j : list.of(i)) {
+      sum += m[j] * kernel.value(box.separation(x[i], x[j]).norm());
+    }
     rho[i] = sum;
   }
 }

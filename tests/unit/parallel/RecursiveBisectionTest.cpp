@@ -68,8 +68,8 @@ TEST(RecursiveBisectionTest, CutsDependOnlyOnTheWholeSetNotOnWhichRankHoldsIt) {
     const auto distributed = RecursiveBisection::build(world, mine.points, mine.weights, parts, 3);
     const auto serial =
         RecursiveBisection::build(Communicator::self(), all.points, all.weights, parts, 3);
-    EXPECT_TRUE(sameRegions(distributed, serial)) << parts << " parts: " << distributed.describe()
-                                                  << " against " << serial.describe();
+    EXPECT_TRUE(sameRegions(distributed, serial))
+        << parts << " parts: " << distributed.describe() << " against " << serial.describe();
     EXPECT_EQ(distributed.partWeights(), serial.partWeights()) << parts << " parts";
   }
 }
