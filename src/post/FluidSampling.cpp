@@ -23,8 +23,9 @@ Real halfSpacing(const ParticleCloud& fluid) {
 
 }  // namespace
 
-ShepardInterpolation::ShepardInterpolation(const ParticleCloud& fluid, Real supportRadius)
-    : fluid_(fluid), supportRadius_(supportRadius) {
+ShepardInterpolation::ShepardInterpolation(const ParticleCloud& fluid, Real supportRadius,
+                                           const Communicator& comm)
+    : fluid_(fluid), supportRadius_(supportRadius), comm_(comm) {
   if (fluid.hasScalarField("mass") && fluid.hasScalarField("rho")) {
     mass_ = &fluid.scalarField("mass");
     density_ = &fluid.scalarField("rho");
@@ -37,7 +38,7 @@ bool ShepardInterpolation::accumulate(const Vector& point, Accumulate add) const
   const Real hSquared = supportRadius_ * supportRadius_;
   const Real inverseH = Real(1) / supportRadius_;
   Real weightSum = 0;
-  for (std::size_t j = 0; j < x.size(); ++j) {
+  for (std::size_t j = 0; j < fluid_.ownedSize(); ++j) {
     const Real rSquared = (x[j] - point).squaredNorm();
     if (rSquared >= hSquared) continue;
     const Real volume = mass_ ? (*mass_)[j] / (*density_)[j] : Real(1);
@@ -51,33 +52,50 @@ bool ShepardInterpolation::accumulate(const Vector& point, Accumulate add) const
 double ShepardInterpolation::scalar(const std::vector<Real>& field, const Vector& point) const {
   Real weighted = 0;
   Real weights = 0;
-  const bool found = accumulate(point, [&](std::size_t j, Real weight) {
+  accumulate(point, [&](std::size_t j, Real weight) {
     weighted += weight * field[j];
     weights += weight;
   });
-  return found ? double(weighted / weights) : noFluid;
+  if (comm_.size() > 1) {  // the other ranks' particles within h
+    std::vector<double> sums{double(weighted), double(weights)};
+    comm_.sum(sums);
+    weighted = static_cast<Real>(sums[0]);
+    weights = static_cast<Real>(sums[1]);
+  }
+  return weights > 0 ? double(weighted / weights) : noFluid;
 }
 
 Vector ShepardInterpolation::vector(const std::vector<Vector>& field, const Vector& point) const {
   Vector weighted = Vector::Zero();
   Real weights = 0;
-  const bool found = accumulate(point, [&](std::size_t j, Real weight) {
+  accumulate(point, [&](std::size_t j, Real weight) {
     weighted += weight * field[j];
     weights += weight;
   });
-  return found ? Vector(weighted / weights) : Vector::Constant(Real(noFluid));
+  if (comm_.size() > 1) {
+    std::vector<double> sums{double(weighted[0]), double(weighted[1]), double(weighted[2]),
+                             double(weights)};
+    comm_.sum(sums);
+    weighted = Vector(static_cast<Real>(sums[0]), static_cast<Real>(sums[1]),
+                      static_cast<Real>(sums[2]));
+    weights = static_cast<Real>(sums[3]);
+  }
+  return weights > 0 ? Vector(weighted / weights) : Vector::Constant(Real(noFluid));
 }
 
 double surfaceHeight(const ParticleCloud& fluid, const Vector& up, const Vector& point,
-                     Real radius) {
+                     Real radius, const Communicator& comm) {
   const Real radiusSquared = radius * radius;
   double highest = -std::numeric_limits<double>::infinity();
-  for (const Vector& x : fluid.positions()) {
+  const auto& positions = fluid.positions();
+  for (std::size_t i = 0; i < fluid.ownedSize(); ++i) {
+    const Vector& x = positions[i];
     const Vector offset = x - point;
     const Real height = offset.dot(up);
     const Real across = (offset - height * up).squaredNorm();
     if (across < radiusSquared) highest = std::max(highest, double(x.dot(up)));
   }
+  highest = comm.max(highest);
   return std::isfinite(highest) ? highest + double(halfSpacing(fluid)) : noFluid;
 }
 

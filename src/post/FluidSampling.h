@@ -24,9 +24,12 @@ inline constexpr double noFluid = std::numeric_limits<double>::quiet_NaN();
 // Exact for a constant field everywhere; exact for a linear field wherever the first moment
 // sum_j V_j W (x_j - x) vanishes, e.g. at points of symmetry of a full uniform lattice; elsewhere
 // its error is that moment times the gradient. noFluid where no particle lies within h.
+// Collective over comm in a decomposed run: each rank sums its owned particles, and the sums
+// are added over the ranks.
 class ShepardInterpolation {
  public:
-  ShepardInterpolation(const ParticleCloud& fluid, Real supportRadius);
+  ShepardInterpolation(const ParticleCloud& fluid, Real supportRadius,
+                       const Communicator& comm = Communicator::self());
 
   double scalar(const std::vector<Real>& field, const Vector& point) const;
   Vector vector(const std::vector<Vector>& field, const Vector& point) const;
@@ -37,6 +40,7 @@ class ShepardInterpolation {
 
   const ParticleCloud& fluid_;
   Real supportRadius_;
+  Communicator comm_;
   const std::vector<Real>* mass_ = nullptr;
   const std::vector<Real>* density_ = nullptr;
 };
@@ -46,7 +50,7 @@ class ShepardInterpolation {
 // spacing (attribute "spacing", 0 without it) so that a column of n layers resting on y = 0
 // reads n dx. noFluid where the column holds no fluid.
 double surfaceHeight(const ParticleCloud& fluid, const Vector& up, const Vector& point,
-                     Real radius);
+                     Real radius, const Communicator& comm = Communicator::self());
 
 // The leading edge of the fluid along a unit direction: the largest x . direction of a particle
 // plus half the lattice spacing (the surge front of a dam break). noFluid for an empty cloud.

@@ -152,11 +152,12 @@ FunctionObjectList::FunctionObjectList(const Dictionary& controlDict,
     const Dictionary& dict = functions.subDict(name);
     // Explicit registration: one line per type.
     const std::string type = dict.getChoice("type", types);
-    if (context.comm.size() > 1 && type != "front") {
+    if (context.comm.size() > 1 && type == "energyBalance") {
       throw DictionaryError(dict.location("type"),
-                            "function object '" + name + "': type " + type +
-                                " does not run decomposed (-parallel) in this version; type "
-                                "front does. Remove it, or run the case serial");
+                            "function object '" + name +
+                                "': type energyBalance does not run decomposed (-parallel) in "
+                                "this version (nor does heat transfer). Remove it, or run the "
+                                "case serial");
     }
     if (type == "probes") {
       objects_.push_back(std::make_unique<Probes>(name, dict, context));

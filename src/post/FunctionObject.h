@@ -103,7 +103,7 @@ class FunctionObjectList {
   FunctionObjectList() = default;
   // Types: probes, surfaceHeights, front, fieldMinMax, energyBalance. An unknown type, a missing or
   // unknown cloud or field, a bad location: DictionaryError naming file, line and key. A
-  // decomposed run (context.comm of more than one rank) takes front only so far.
+  // decomposed run (context.comm of more than one rank) takes every type but energyBalance.
   FunctionObjectList(const Dictionary& controlDict, const FunctionObjectContext& context);
 
   void execute(const TimeState& time, bool caseWriteTime);

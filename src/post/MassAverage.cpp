@@ -1,5 +1,7 @@
 #include "post/MassAverage.h"
 
+#include <vector>
+
 namespace sphcast {
 
 MassAverage::MassAverage(const std::string& name, const Dictionary& dict,
@@ -32,9 +34,17 @@ void MassAverage::sample(double time) {
     const auto& value = cloud().scalarField(field);
     double weighted = 0;
     double total = 0;
-    for (std::size_t i = 0; i < value.size(); ++i) {  // in particle order: no thread dependence
+    // in particle order: no thread dependence (a decomposed run: its owned particles, then the
+    // sums over the ranks)
+    for (std::size_t i = 0; i < cloud().ownedSize(); ++i) {
       weighted += double(mass[i]) * double(value[i]);
       total += double(mass[i]);
+    }
+    if (communicator().size() > 1) {
+      std::vector<double> sums{weighted, total};
+      communicator().sum(sums);
+      weighted = sums[0];
+      total = sums[1];
     }
     writeRow(file, time, "  " + (total > 0 ? formatSample(weighted / total) : std::string("nan")));
   }

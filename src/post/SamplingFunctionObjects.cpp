@@ -74,7 +74,7 @@ Probes::Probes(const std::string& name, const Dictionary& dict,
 }
 
 void Probes::sample(double time) {
-  const ShepardInterpolation interpolation(cloud(), supportRadius_);
+  const ShepardInterpolation interpolation(cloud(), supportRadius_, communicator());
   for (const std::string& field : fields_) {
     std::ofstream& file = openOutput(field, header_);
     std::string values;
@@ -112,7 +112,7 @@ void SurfaceHeights::sample(double time) {
   std::ofstream& file = openOutput("height", header_);
   std::string values;
   for (const Vector& location : locations_) {
-    values += "  " + formatSample(surfaceHeight(cloud(), up_, location, radius_));
+    values += "  " + formatSample(surfaceHeight(cloud(), up_, location, radius_, communicator()));
   }
   writeRow(file, time, values);
 }

@@ -503,7 +503,12 @@ void CastingSolver::setUpFunctionObjects(const Dictionary& controlDict) {
   context.gravity = gravity_;
   context.comm = comm_;
   for (const ParticleCloud& cloud : clouds_) context.clouds.push_back(&cloud);
-  functions_ = FunctionObjectList(controlDict, context);
+  try {
+    functions_ = FunctionObjectList(controlDict, context);
+  } catch (const Error& error) {  // read from the dictionaries alone: every rank throws alike
+    if (parallel_) throw CollectiveError(error.what());
+    throw;
+  }
   for (const auto& object : functions_.objects()) {
     info() << "Function object " << object->name() << ": postProcessing/" << object->name() << '/'
            << time_.startTimeName() << '\n';
