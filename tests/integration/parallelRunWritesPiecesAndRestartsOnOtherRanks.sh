@@ -35,6 +35,10 @@ for ranks in 2 4; do
         fail "-np $ranks: $(tail -8 log.sphCastFoam)"
     grep -q "^Decomposition: $ranks subdomains by recursive bisection" log.sphCastFoam ||
         fail "-np $ranks: no decomposition line"
+    # the surge carries the water across the cuts: space is cut again as it goes (8 times on
+    # 2 ranks), every cloud redistributed, and the results stay the serial run's
+    grep -q "^Decomposition at the end: [1-9][0-9]* re-balances" log.sphCastFoam ||
+        fail "-np $ranks: no re-balance: $(grep 'Decomposition at the end' log.sphCastFoam)"
     [ "$(grep -c '^Time = ' log.sphCastFoam)" -gt 0 ] && [ "$(grep -c '^End$' log.sphCastFoam)" = 1 ] ||
         fail "-np $ranks: the log is not one rank's"
     for time in 0.05 0.1 0.15 0.2 0.25; do
