@@ -1,8 +1,10 @@
 #include "solidification/Solidification.h"
 
 #include <algorithm>
+#include <cstdint>
 #include <limits>
 #include <sstream>
+#include <vector>
 
 #include "core/Error.h"
 
@@ -127,7 +129,7 @@ std::vector<std::size_t> Solidification::pendingCriticalGradients() const {
   return pending;
 }
 
-SolidificationSummary Solidification::summary() const {
+SolidificationSummary Solidification::summary(const Communicator& comm) const {
   SolidificationSummary s;
   const auto& temperature = metal_.scalarField("T");
   const auto& fraction = metal_.scalarField("solidFraction");
@@ -135,8 +137,8 @@ SolidificationSummary Solidification::summary() const {
   const auto& mass = metal_.scalarField("mass");
   const Real limit = settings_.viscosityLimit;
   double totalMass = 0, solidMass = 0;
-  s.particles = metal_.size();
-  for (std::size_t i = 0; i < metal_.size(); ++i) {
+  s.particles = metal_.ownedSize();
+  for (std::size_t i = 0; i < metal_.ownedSize(); ++i) {
     if (fraction[i] == 0) ++s.liquid;
     if (fraction[i] == 1) ++s.solid;
     if (frozen[i] != 0) ++s.frozen;
@@ -147,13 +149,31 @@ SolidificationSummary Solidification::summary() const {
     totalMass += static_cast<double>(mass[i]);
     solidMass += static_cast<double>(mass[i] * fraction[i]);
   }
+  if (comm.size() > 1) {
+    std::vector<std::int64_t> counts{static_cast<std::int64_t>(s.particles),
+                                     static_cast<std::int64_t>(s.liquid),
+                                     static_cast<std::int64_t>(s.solid),
+                                     static_cast<std::int64_t>(s.frozen),
+                                     static_cast<std::int64_t>(s.viscosityCapped)};
+    std::vector<double> masses{totalMass, solidMass};
+    comm.sum(counts);
+    comm.sum(masses);
+    s.particles = static_cast<std::size_t>(counts[0]);
+    s.liquid = static_cast<std::size_t>(counts[1]);
+    s.solid = static_cast<std::size_t>(counts[2]);
+    s.frozen = static_cast<std::size_t>(counts[3]);
+    s.viscosityCapped = static_cast<std::size_t>(counts[4]);
+    totalMass = masses[0];
+    solidMass = masses[1];
+  }
   s.solidFraction = totalMass > 0 ? solidMass / totalMass : 0;
   return s;
 }
 
-bool Solidification::allSolid() const {
+bool Solidification::allSolid(const Communicator& comm) const {
   const auto& fraction = metal_.scalarField("solidFraction");
-  return std::all_of(fraction.begin(), fraction.end(), [](Real f) { return f == 1; });
+  const auto owned = fraction.begin() + static_cast<std::ptrdiff_t>(metal_.ownedSize());
+  return !comm.any(!std::all_of(fraction.begin(), owned, [](Real f) { return f == 1; }));
 }
 
 std::string Solidification::description() const {

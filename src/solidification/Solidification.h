@@ -6,6 +6,7 @@
 
 #include "core/Real.h"
 #include "materials/Material.h"
+#include "parallel/Communicator.h"
 #include "particles/ParticleCloud.h"
 
 namespace sphcast {
@@ -97,9 +98,10 @@ class Solidification {
   std::vector<std::size_t> pendingCriticalGradients() const;
 
   const SolidificationSettings& settings() const { return settings_; }
-  SolidificationSummary summary() const;
-  // Every particle fully solid (f_s = 1).
-  bool allSolid() const;
+  // Of the owned particles of every rank of comm in a decomposed run (collective).
+  SolidificationSummary summary(const Communicator& comm = Communicator::self()) const;
+  // Every particle fully solid (f_s = 1), on every rank of comm (collective).
+  bool allSolid(const Communicator& comm = Communicator::self()) const;
   std::string description() const;
 
  private:

@@ -14,6 +14,16 @@
 
 namespace sphcast {
 
+// The flow's limits over every rank (each the smallest), so that all take the same step.
+FlowStepLimits CastingSolver::flowStepLimits(double maxCo) const {
+  FlowStepLimits limits = flow_->stepLimits(maxCo);
+  if (!parallel_) return limits;
+  std::vector<double> each{limits.acoustic,     limits.viscous,     limits.bodyForce,
+                           limits.acceleration, limits.densityRate, limits.forceModel};
+  comm_.min(each);
+  return {each[0], each[1], each[2], each[3], each[4], each[5], limits.forceModelName};
+}
+
 double CastingSolver::stableDeltaT(std::string& limiter) const {
   if (cooling_) {  // the flow takes its own steps within (evolveCooling)
     const double heat = energy_->stableDeltaT(limiter);
@@ -22,16 +32,7 @@ double CastingSolver::stableDeltaT(std::string& limiter) const {
   }
   if (flow_ || energy_) {
     double stable = std::numeric_limits<double>::infinity();
-    if (flow_) {
-      FlowStepLimits limits = flow_->stepLimits(time_.settings().maxCo);
-      if (parallel_) {  // every rank's smallest, so that all take the same step
-        std::vector<double> each{limits.acoustic,     limits.viscous,     limits.bodyForce,
-                                 limits.acceleration, limits.densityRate, limits.forceModel};
-        comm_.min(each);
-        limits = {each[0], each[1], each[2], each[3], each[4], each[5], limits.forceModelName};
-      }
-      stable = limits.smallest(limiter);
-    }
+    if (flow_) stable = flowStepLimits(time_.settings().maxCo).smallest(limiter);
     for (const auto& body : bodies_) {
       const double limit = body->stableDeltaT(fluid_->attributes().at("spacing"));
       if (limit < stable) {
@@ -154,7 +155,7 @@ void CastingSolver::evolveCooling(double deltaT) {
   heatStepInPlace(deltaT);
   for (int k = 0; k < solidificationSetup_.cooling->flowStepsPerHeatStep; ++k) {
     std::string limiter;
-    FlowStepLimits limits = flow_->stepLimits(coolingMaxCo());
+    FlowStepLimits limits = flowStepLimits(coolingMaxCo());
     const double flowDeltaT = limits.smallest(limiter);
     if (!(flowDeltaT > 0) || !std::isfinite(flowDeltaT)) {
       std::ostringstream problem;
@@ -191,8 +192,9 @@ void CastingSolver::updateCoolingMode() {
   if (!solidification_ || !solidificationSetup_.cooling) return;
   const CoolingAcceleration& cooling = *solidificationSetup_.cooling;
   double fastest = 0;
-  for (const Vector& v : fluid_->vectorField("U")) {
-    fastest = std::max(fastest, static_cast<double>(v.norm()));
+  const auto& velocity = fluid_->vectorField("U");
+  for (std::size_t i = 0; i < fluid_->ownedSize(); ++i) {
+    fastest = std::max(fastest, static_cast<double>(velocity[i].norm()));
   }
   // metal still being poured, or none yet, is not a still melt (measured: crossDitchPress
   // entered the mode at t = 0 with its cloud empty, and its ladle fell 0.012 s behind)
@@ -216,6 +218,7 @@ void CastingSolver::updateCoolingMode() {
       bodyMoves = "body " + body->settings().name + " was let go";
     }
   }
+  fastest = comm_.max(fastest);  // every rank's melt: all decide alike
   const bool wasCooling = cooling_;
   if (!cooling_ && fastest < cooling.stillSpeed && !pouring && bodyMoves.empty()) cooling_ = true;
   if (cooling_ && (fastest > cooling.movingSpeed || !bodyMoves.empty())) cooling_ = false;
@@ -335,7 +338,7 @@ void CastingSolver::run() {
     // what one rank found stops them all, with its message
     if (parallel_) failure = comm_.firstNonEmpty(failure);
     if (!failure.empty()) stopWithLastGoodState(before, true, failure);
-    if (solidificationSetup_.endWhenSolid && solidification_->allSolid()) {
+    if (solidificationSetup_.endWhenSolid && solidification_->allSolid(comm_)) {
       time_.requestStop("the casting is solid (endWhenSolid)");
     }
     const bool printBlock = stepsTaken_ % time_.settings().logInterval == 0 || time_.writeTime();

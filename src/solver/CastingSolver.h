@@ -76,6 +76,7 @@ class CastingSolver {
   ParticleCloud* findCloud(const std::string& name);   // nullptr when absent
   ParticleCloud& cloudNamed(const std::string& name);  // throws, listing the clouds present
   double stableDeltaT(std::string& limiter) const;
+  FlowStepLimits flowStepLimits(double maxCo) const;
   void evolve(double deltaT);
   void searchAndKeepClear(double deltaT, bool lastOfStep);
   // The bodies' phases beside the flow's: kick and drift, the clearance's impulse, the loads

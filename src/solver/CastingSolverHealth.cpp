@@ -86,7 +86,7 @@ std::string CastingSolver::checkHealth() {
 std::string CastingSolver::checkTemperatures() const {
   for (const HeatCloud& heat : energy_->context().clouds) {
     const auto& T = heat.cloud->scalarField("T");
-    for (std::size_t i = 0; i < T.size(); ++i) {
+    for (std::size_t i = 0; i < heat.cloud->ownedSize(); ++i) {
       if (T[i] > 0 && std::isfinite(T[i])) continue;
       std::ostringstream problem;
       problem << "the temperature of "

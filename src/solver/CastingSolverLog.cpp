@@ -61,11 +61,14 @@ void CastingSolver::logHeat() {
     const auto& u = heat.cloud->scalarField("u");
     const auto& mass = heat.cloud->scalarField("mass");
     double lowest = std::numeric_limits<double>::infinity(), highest = -lowest, energy = 0;
-    for (std::size_t i = 0; i < T.size(); ++i) {
+    for (std::size_t i = 0; i < heat.cloud->ownedSize(); ++i) {
       lowest = std::min(lowest, double(T[i]));
       highest = std::max(highest, double(T[i]));
       energy += double(mass[i]) * double(u[i]);
     }
+    lowest = comm_.min(lowest);  // every rank's
+    highest = comm_.max(highest);
+    energy = comm_.sum(energy);
     line << "T " << heat.cloud->name() << ' ' << lowest << " .. " << highest
          << " K  internal energy " << energy << " J\n";
   }
@@ -80,7 +83,7 @@ std::optional<std::pair<double, std::string>> CastingSolver::solidEnd() const {
 }
 
 void CastingSolver::logSolidification() {
-  const SolidificationSummary s = solidification_->summary();
+  const SolidificationSummary s = solidification_->summary(comm_);
   std::ostringstream line;
   line.precision(4);
   line << "Solidification: solid fraction " << s.solidFraction << " (by mass); of " << s.particles

@@ -205,6 +205,7 @@ void CastingSolver::setUpNeighbourhood() {
 // -parallel runs the flow among fixed walls; the rest of the step is not decomposed yet. Every
 // rank refuses alike (a CollectiveError: rank 0 says it).
 void CastingSolver::checkParallelSupport() const {
+  // (heat paths other than conduction are refused in setUpHeat, once they are known)
   auto refuse = [&](const std::string& what) {
     throw CollectiveError(
         "-parallel: " + what +
@@ -212,9 +213,14 @@ void CastingSolver::checkParallelSupport() const {
         "mpirun and -parallel). Decomposed runs take the flow among fixed walls.");
   };
   if (!flowSetup_.enabled) refuse("a case without a flow (constant/physicsModels: flow)");
-  if (heatSetup_.enabled) refuse("heat transfer (constant/physicsModels: heatTransfer)");
   if (surfaceTensionSetup_.enabled) refuse("surface tension (constant/physicsModels)");
-  if (solidificationSetup_.enabled) refuse("solidification (constant/physicsModels)");
+  // the heat clouds must be decomposed: the flow's fluid or its walls
+  for (const std::string& name : heatSetup_.clouds) {
+    const auto& walls = flowSetup_.wallClouds;
+    if (name != flowSetup_.fluidCloud && std::find(walls.begin(), walls.end(), name) == walls.end()) {
+      refuse("heat cloud '" + name + "', neither the flow's fluid nor one of its walls,");
+    }
+  }
   if (!bodySetup_.bodies.empty()) refuse("a moving mold (constant/dynamicBodies)");
   if (!inletSetup_.inlets.empty()) refuse("a pouring inlet (constant/inlets)");
 }
@@ -234,10 +240,10 @@ void CastingSolver::decompose() {
       static_cast<double>(neighbourhood_->radius() + neighbourhood_->skin()), settings.periodic,
       settings.dimension);
   auto readWhole = [&](const ParticleCloud& cloud) {
-    for (std::size_t c = 0; c < clouds_.size(); ++c) {
+    for (std::size_t c = 0; c < clouds_.size() && c < cloudReadWhole_.size(); ++c) {
       if (&clouds_[c] == &cloud) return static_cast<bool>(cloudReadWhole_[c]);
     }
-    return true;  // constant/particles: every rank read it
+    return true;  // constant/particles (a heat cloud's too): every rank read it
   };
   auto writable = [&](const ParticleCloud* cloud) -> ParticleCloud* {
     for (ParticleCloud& c : clouds_) {
@@ -378,7 +384,16 @@ void CastingSolver::setUpHeat() {
   }
   context.spacing = static_cast<Real>(spacing);
   context.maxDi = time_.settings().maxDi;
+  context.comm = comm_;
   energy_ = std::make_unique<EnergyEquation>(context, heatSetup_.heatTransfer);
+  if (parallel_) {  // conduction is decomposed; the surface and contact paths not yet
+    for (const std::string& path : energy_->pathNames()) {
+      if (path == "conduction") continue;
+      throw CollectiveError("-parallel: heat path " + path +
+                            " does not run decomposed in this version (conduction does); run "
+                            "the case serial (without mpirun and -parallel)");
+    }
+  }
   if (energy_->needsExposedArea()) {
     std::vector<ParticleCloud*> exposed;
     std::vector<const ParticleCloud*> covering;

@@ -112,9 +112,9 @@ void EnergyEquation::prepareFields(HeatCloud& heat) {
       cloud.attributes()[rateKey(path)] = 0;
     }
     const auto& mass = cloud.scalarField("mass");
-    double total = 0;
-    for (std::size_t i = 0; i < u.size(); ++i) total += double(mass[i]) * double(u[i]);
-    cloud.attributes()["internalEnergyAtStart"] = total;
+    double total = 0;  // of every rank's own particles in a decomposed run
+    for (std::size_t i = 0; i < cloud.ownedSize(); ++i) total += double(mass[i]) * double(u[i]);
+    cloud.attributes()["internalEnergyAtStart"] = context_.comm.sum(total);
   }
   cloud.addScalarField("conductivity");
 }
@@ -146,6 +146,8 @@ void EnergyEquation::kickEnergy(double deltaT) {
     for (std::size_t i = 0; i < u.size(); ++i) {
       if (!held || held[i] == 0) u[i] += halfDt * rate[i];
     }
+    // a decomposed run's halo kicked with its own, incomplete rates: its owners' u instead
+    if (context_.neighbourhood) context_.neighbourhood->syncHalo(*heat.cloud, {"u"});
   }
   accountLosses(0.5 * deltaT);
 }
@@ -169,7 +171,8 @@ void EnergyEquation::computeRates() {
     for (const char* name : lossPaths) heat.cloud->attributes()[rateKey(name)] = 0;
   }
   for (auto& path : paths_) {
-    const std::vector<double> power = path->powerLeaving();
+    std::vector<double> power = path->powerLeaving();
+    context_.comm.sum(power);  // every rank's particles
     for (std::size_t c = 0; c < power.size(); ++c) {
       context_.clouds[c].cloud->attributes()[rateKey(path->name())] = power[c];
     }
@@ -182,10 +185,10 @@ void EnergyEquation::computeRates() {
     const auto& mass = heat.cloud->scalarField("mass");
     const auto& rate = heat.cloud->scalarField("energyRate");
     double absorbed = 0;
-    for (std::size_t i = 0; i < rate.size(); ++i) {
+    for (std::size_t i = 0; i < heat.cloud->ownedSize(); ++i) {
       if (held[i] > 0) absorbed += double(mass[i]) * double(rate[i]);
     }
-    heat.cloud->attributes()[rateKey("fixedTemperature")] = absorbed;
+    heat.cloud->attributes()[rateKey("fixedTemperature")] = context_.comm.sum(absorbed);
   }
 }
 
@@ -220,6 +223,12 @@ double EnergyEquation::stableDeltaT(std::string& limiter) const {
     }
   }
   return shortest;
+}
+
+std::vector<std::string> EnergyEquation::pathNames() const {
+  std::vector<std::string> names;
+  for (const auto& path : paths_) names.emplace_back(path->name());
+  return names;
 }
 
 std::vector<std::string> EnergyEquation::descriptions() const {

@@ -73,11 +73,16 @@ std::string HeatConduction::start() {
     const ParticleCloud& cloud = *heat.cloud;
     if (!heat.holdsAny() || cloud.hasVectorField("normal") || cloud.hasScalarField("wallDistance"))
       continue;
-    const std::size_t placed =
+    std::size_t placed =
         context_.dimension == 2 ? placeHeldSurface<2>(a) : placeHeldSurface<3>(a);
+    // a decomposed run's halo placed its own from an incomplete neighbourhood: its owners'
+    context_.neighbourhood->syncHalo(*heat.cloud, {"normal", "wallDistance"});
+    placed = static_cast<std::size_t>(context_.comm.sum(static_cast<std::int64_t>(placed)));
     if (!line.str().empty()) line << "; ";
     line << "held surface of cloud '" << cloud.name() << "' placed midway to the free particles"
-         << " for " << placed << " of its " << cloud.size() << " particles (normal, wallDistance)";
+         << " for " << placed << " of its "
+         << context_.comm.sum(static_cast<std::int64_t>(cloud.ownedSize()))
+         << " particles (normal, wallDistance)";
   }
   return line.str();
 }

@@ -8,6 +8,7 @@
 
 #include "core/dictionary/Dictionary.h"
 #include "materials/Material.h"
+#include "parallel/Communicator.h"
 #include "particles/Neighbourhood.h"
 #include "particles/ParticleCloud.h"
 
@@ -43,6 +44,8 @@ struct HeatTransferContext {
   double maxDi = 0.1;      // the conduction step, maxDi dx^2 / alpha_max (controlDict)
   std::vector<HeatCloud> clouds;
   Neighbourhood* neighbourhood = nullptr;
+  // A decomposed run's ranks: books and losses are summed over them (owned particles only).
+  Communicator comm = Communicator::self();
 };
 
 // The heat clouds (indices into context.clouds) of `material`, which the entry `key` of `dict`
