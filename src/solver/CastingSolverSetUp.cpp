@@ -202,22 +202,24 @@ void CastingSolver::setUpNeighbourhood() {
   for (ParticleCloud* cloud : evolving_) lastGood_.push_back(*cloud);
 }
 
-// -parallel runs the flow among fixed walls; the rest of the step is not decomposed yet. Every
-// rank refuses alike (a CollectiveError: rank 0 says it).
+// -parallel runs the flow among fixed walls with heat conduction and solidification; the rest
+// of the step is not decomposed yet (heat paths other than conduction are refused in setUpHeat,
+// once they are known). Every rank refuses alike (a CollectiveError: rank 0 says it).
 void CastingSolver::checkParallelSupport() const {
-  // (heat paths other than conduction are refused in setUpHeat, once they are known)
   auto refuse = [&](const std::string& what) {
     throw CollectiveError(
         "-parallel: " + what +
-        " does not run decomposed in this version; run the case serial (without "
-        "mpirun and -parallel). Decomposed runs take the flow among fixed walls.");
+        " does not run decomposed in this version; run the case serial (without mpirun and "
+        "-parallel). Decomposed runs take the flow among fixed walls, heat conduction and "
+        "solidification.");
   };
   if (!flowSetup_.enabled) refuse("a case without a flow (constant/physicsModels: flow)");
   if (surfaceTensionSetup_.enabled) refuse("surface tension (constant/physicsModels)");
   // the heat clouds must be decomposed: the flow's fluid or its walls
   for (const std::string& name : heatSetup_.clouds) {
     const auto& walls = flowSetup_.wallClouds;
-    if (name != flowSetup_.fluidCloud && std::find(walls.begin(), walls.end(), name) == walls.end()) {
+    const bool wall = std::find(walls.begin(), walls.end(), name) != walls.end();
+    if (name != flowSetup_.fluidCloud && !wall) {
       refuse("heat cloud '" + name + "', neither the flow's fluid nor one of its walls,");
     }
   }

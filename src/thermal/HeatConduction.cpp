@@ -75,9 +75,15 @@ std::string HeatConduction::start() {
       continue;
     std::size_t placed =
         context_.dimension == 2 ? placeHeldSurface<2>(a) : placeHeldSurface<3>(a);
-    // a decomposed run's halo placed its own from an incomplete neighbourhood: its owners'
-    context_.neighbourhood->syncHalo(*heat.cloud, {"normal", "wallDistance"});
-    placed = static_cast<std::size_t>(context_.comm.sum(static_cast<std::int64_t>(placed)));
+    if (context_.comm.size() > 1) {
+      // a decomposed run's halo placed its own from an incomplete neighbourhood: its owners',
+      // and the count of every rank's own particles given a surface
+      context_.neighbourhood->syncHalo(*heat.cloud, {"normal", "wallDistance"});
+      const auto& normal = cloud.vectorField("normal");
+      std::int64_t owned = 0;
+      for (std::size_t k = 0; k < cloud.ownedSize(); ++k) owned += normal[k].isZero() ? 0 : 1;
+      placed = static_cast<std::size_t>(context_.comm.sum(owned));
+    }
     if (!line.str().empty()) line << "; ";
     line << "held surface of cloud '" << cloud.name() << "' placed midway to the free particles"
          << " for " << placed << " of its "
