@@ -156,8 +156,8 @@ FunctionObjectList::FunctionObjectList(const Dictionary& controlDict,
       throw DictionaryError(dict.location("type"),
                             "function object '" + name +
                                 "': type energyBalance does not run decomposed (-parallel) in "
-                                "this version (nor does heat transfer). Remove it, or run the "
-                                "case serial");
+                                "this version (its sums are not yet taken over the ranks). "
+                                "Remove it, or run the case serial");
     }
     if (type == "probes") {
       objects_.push_back(std::make_unique<Probes>(name, dict, context));
