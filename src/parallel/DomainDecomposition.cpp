@@ -88,8 +88,11 @@ double DomainDecomposition::imbalance() const {
 
 void DomainDecomposition::update(Neighbourhood& neighbourhood, bool rebuild) {
   // the halo as its owners moved it: the displacements the rebuild's test measures are theirs
-  for (std::size_t c = 0; c < clouds_.size(); ++c) {
-    if (clouds_[c].moves) halos_[c].refresh(*clouds_[c].cloud, comm_);
+  // (a rebuild asked for replaces the halo: no refresh; `rebuild` is the same on every rank)
+  if (!rebuild) {
+    for (std::size_t c = 0; c < clouds_.size(); ++c) {
+      if (clouds_[c].moves) halos_[c].refresh(*clouds_[c].cloud, comm_);
+    }
   }
   if (!comm_.any(rebuild || neighbourhood.rebuildDue())) {
     neighbourhood.update(CloudOrder::keep, false);
