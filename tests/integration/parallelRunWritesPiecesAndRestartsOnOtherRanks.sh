@@ -10,15 +10,9 @@
 # (The particle-by-particle comparison with the serial run, on 1, 2 and 4 ranks and across
 # restarts, is tests/unit/parallel/ParallelSolverTest.cpp.)
 . "$SPHCAST_TEST_TOOLS"
-tutorial=$(cd "$(dirname "$0")/../../tutorials/validation/damBreak2D" && pwd)
 export OMP_NUM_THREADS=1 OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 mpirun=(timeout 300 mpirun --oversubscribe)
-mkdir -p "$scratch/serial"
-cp -r "$tutorial/system" "$tutorial/constant" "$scratch/serial/"
-rm -rf "$scratch/serial/constant/particles"
-cd "$scratch/serial"
-particleizeMold > log.particleizeMold 2>&1 || fail "particleizeMold: $(tail -5 log.particleizeMold)"
-setCastFields > log.setCastFields 2>&1 || fail "setCastFields: $(tail -5 log.setCastFields)"
+preprocessTutorialCase validation/damBreak2D "$scratch/serial"
 for ranks in 2 4; do
     cp -r "$scratch/serial" "$scratch/np$ranks"
     cat > "$scratch/np$ranks/system/decomposeParDict" <<DICT
@@ -93,13 +87,7 @@ grep -q "decomposeParDict:2.*numberOfSubdomains 4 in decomposeParDict, but mpiru
 # conicalMold at 6 mm (flow, conduction into the held mold, solidification, the cooling mode) on
 # 2 ranks: solid at the serial run's time to its printed digits, and castPostProcess's time
 # series of the metal within round-off
-cone=$(cd "$(dirname "$0")/../../tutorials/conicalMold" && pwd)
-mkdir -p "$scratch/coneSerial"
-cp -r "$cone/system" "$cone/constant" "$cone/setResolution" "$scratch/coneSerial/"
-cd "$scratch/coneSerial"
-./setResolution 6 > /dev/null || fail "cone: setResolution 6"
-particleizeMold > log.particleizeMold 2>&1 || fail "cone: particleizeMold: $(tail -5 log.particleizeMold)"
-setCastFields > log.setCastFields 2>&1 || fail "cone: setCastFields: $(tail -5 log.setCastFields)"
+preprocessTutorialCase conicalMold "$scratch/coneSerial" 6
 cp -r "$scratch/coneSerial" "$scratch/coneParallel"
 cp "$scratch/np2/system/decomposeParDict" "$scratch/coneParallel/system/"
 sphCastFoam > log.sphCastFoam 2>&1 || fail "cone serial: $(tail -5 log.sphCastFoam)"

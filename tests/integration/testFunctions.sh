@@ -195,6 +195,25 @@ findVtkPython() {
     exit 77
 }
 
+# preprocessTutorialCase PATH DIR [SPACING]: the system/ and constant/ of tutorials/PATH in DIR
+# (its setResolution SPACING first, when given; without the particles a run in the tutorial
+# left), then particleizeMold and setCastFields; a failure fails the test with its log. Leaves
+# the working directory in DIR.
+preprocessTutorialCase() {
+    local tutorial dir=$2 spacing=${3:-}
+    tutorial=$(cd "$(dirname "${BASH_SOURCE[0]}")/../../tutorials/$1" && pwd)
+    mkdir -p "$dir"
+    cp -r "$tutorial/system" "$tutorial/constant" "$dir/"
+    rm -rf "$dir/constant/particles"
+    cd "$dir" || fail "cannot enter $dir"
+    if [ -n "$spacing" ]; then
+        cp "$tutorial/setResolution" . && ./setResolution "$spacing" > /dev/null ||
+            fail "$1: setResolution $spacing"
+    fi
+    particleizeMold > log.particleizeMold 2>&1 || fail "$1: particleizeMold: $(tail -5 log.particleizeMold)"
+    setCastFields > log.setCastFields 2>&1 || fail "$1: setCastFields: $(tail -5 log.setCastFields)"
+}
+
 # copyTutorial PATH: tutorials/PATH copied into the scratch folder, laid out as in the project
 # (beside an etc/ with RunFunctions and functionObjectSeries.py and a platforms/bin that is
 # $SPHCAST_BIN), and cleaned. Leaves the working directory in the copy.
