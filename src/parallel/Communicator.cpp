@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cstring>
 #include <exception>
+#include <map>
 #include <string>
 #include <type_traits>
 
@@ -169,40 +170,51 @@ std::vector<std::vector<char>> Communicator::exchange(std::vector<std::vector<ch
     for (int r = 0; r < size_; ++r) peers.push_back(r);
   }
   peers.erase(std::remove(peers.begin(), peers.end(), rank_), peers.end());
-  // the sizes first (a count per partner: all-to-all for everyone, messages otherwise), then
-  // the bytes, each message tagged and matched by its source
-  std::vector<std::int64_t> sendCounts(static_cast<std::size_t>(size_), 0);
-  std::vector<std::int64_t> receiveCounts(static_cast<std::size_t>(size_), 0);
+  // The sizes first (a count per partner: all-to-all for everyone, messages otherwise), each
+  // with the exchange's number on this communicator: an exchange that meets another (a rank
+  // that skipped one) is an Error naming both, not a hang or a silent mix of messages. Then the
+  // bytes, each message tagged and matched by its source.
+  static std::map<std::intptr_t, std::int64_t> exchangesSoFar;
+  const std::int64_t number = ++exchangesSoFar[handle_];
+  std::vector<std::int64_t> sendCounts(2 * static_cast<std::size_t>(size_), 0);
+  std::vector<std::int64_t> receiveCounts(2 * static_cast<std::size_t>(size_), 0);
+  for (int r = 0; r < size_; ++r) sendCounts[2 * static_cast<std::size_t>(r) + 1] = number;
   for (int r : peers) {
-    sendCounts[static_cast<std::size_t>(r)] =
+    sendCounts[2 * static_cast<std::size_t>(r)] =
         static_cast<std::int64_t>(outgoing[static_cast<std::size_t>(r)].size());
   }
   if (partners.empty()) {
-    MPI_Alltoall(sendCounts.data(), 1, MPI_INT64_T, receiveCounts.data(), 1, MPI_INT64_T, comm);
+    MPI_Alltoall(sendCounts.data(), 2, MPI_INT64_T, receiveCounts.data(), 2, MPI_INT64_T, comm);
   } else {
-    std::vector<MPI_Request> requests;
-    requests.reserve(2 * peers.size());
+    std::vector<MPI_Request> requests(2 * peers.size());
+    std::size_t k = 0;
     for (int r : peers) {
-      requests.emplace_back();
-      MPI_Irecv(&receiveCounts[static_cast<std::size_t>(r)], 1, MPI_INT64_T, r, 1, comm,
-                &requests.back());
+      MPI_Irecv(&receiveCounts[2 * static_cast<std::size_t>(r)], 2, MPI_INT64_T, r, 1, comm,
+                &requests[k++]);
     }
     for (int r : peers) {
-      requests.emplace_back();
-      MPI_Isend(&sendCounts[static_cast<std::size_t>(r)], 1, MPI_INT64_T, r, 1, comm,
-                &requests.back());
+      MPI_Isend(&sendCounts[2 * static_cast<std::size_t>(r)], 2, MPI_INT64_T, r, 1, comm,
+                &requests[k++]);
     }
     MPI_Waitall(static_cast<int>(requests.size()), requests.data(), MPI_STATUSES_IGNORE);
+  }
+  for (int r : peers) {
+    const std::int64_t theirs = receiveCounts[2 * static_cast<std::size_t>(r) + 1];
+    if (theirs != number) {
+      throw Error("Communicator::exchange: rank " + std::to_string(rank_) + "'s exchange " +
+                  std::to_string(number) + " met rank " + std::to_string(r) + "'s exchange " +
+                  std::to_string(theirs) + " (the ranks took different paths)");
+    }
   }
   // messages of at most 1 GiB each (an int count of bytes)
   constexpr std::int64_t chunk = std::int64_t(1) << 30;
   std::vector<MPI_Request> requests;
   for (int r : peers) {
     auto& buffer = incoming[static_cast<std::size_t>(r)];
-    buffer.resize(static_cast<std::size_t>(receiveCounts[static_cast<std::size_t>(r)]));
-    for (std::int64_t offset = 0; offset < receiveCounts[static_cast<std::size_t>(r)];
-         offset += chunk) {
-      const auto bytes = std::min(chunk, receiveCounts[static_cast<std::size_t>(r)] - offset);
+    const std::int64_t expected = receiveCounts[2 * static_cast<std::size_t>(r)];
+    buffer.resize(static_cast<std::size_t>(expected));
+    for (std::int64_t offset = 0; offset < expected; offset += chunk) {
+      const auto bytes = std::min(chunk, expected - offset);
       requests.emplace_back();
       MPI_Irecv(buffer.data() + offset, static_cast<int>(bytes), MPI_BYTE, r, 2, comm,
                 &requests.back());
