@@ -50,8 +50,9 @@ void EnergyBalance::sample(double time) {
   for (const ParticleCloud* cloud : clouds_) {
     const auto& mass = cloud->scalarField("mass");
     const auto& u = cloud->scalarField("u");
-    double energy = 0;
-    for (std::size_t i = 0; i < u.size(); ++i) energy += double(mass[i]) * double(u[i]);
+    double energy = 0;  // every rank's own particles (the heat attributes are the whole's)
+    for (std::size_t i = 0; i < cloud->ownedSize(); ++i) energy += double(mass[i]) * double(u[i]);
+    energy = communicator().sum(energy);
     // a pouring inlet's metal brings its energy (inflowEnergy, PouringInlet.h)
     const auto inflow = cloud->attributes().find("inflowEnergy");
     const double brought = inflow == cloud->attributes().end() ? 0.0 : inflow->second;

@@ -152,13 +152,6 @@ FunctionObjectList::FunctionObjectList(const Dictionary& controlDict,
     const Dictionary& dict = functions.subDict(name);
     // Explicit registration: one line per type.
     const std::string type = dict.getChoice("type", types);
-    if (context.comm.size() > 1 && type == "energyBalance") {
-      throw DictionaryError(dict.location("type"),
-                            "function object '" + name +
-                                "': type energyBalance does not run decomposed (-parallel) in "
-                                "this version (its sums are not yet taken over the ranks). "
-                                "Remove it, or run the case serial");
-    }
     if (type == "probes") {
       objects_.push_back(std::make_unique<Probes>(name, dict, context));
     } else if (type == "surfaceHeights") {

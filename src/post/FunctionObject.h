@@ -101,9 +101,9 @@ std::string formatSample(const Vector& value);  // "(x y z)"
 class FunctionObjectList {
  public:
   FunctionObjectList() = default;
-  // Types: probes, surfaceHeights, front, fieldMinMax, energyBalance. An unknown type, a missing or
-  // unknown cloud or field, a bad location: DictionaryError naming file, line and key. A
-  // decomposed run (context.comm of more than one rank) takes every type but energyBalance.
+  // Types: probes, surfaceHeights, front, fieldMinMax, massAverage, energyBalance. An unknown
+  // type, a missing or unknown cloud or field, a bad location: DictionaryError naming file, line
+  // and key. In a decomposed run (context.comm of more than one rank) each sums over the ranks.
   FunctionObjectList(const Dictionary& controlDict, const FunctionObjectContext& context);
 
   void execute(const TimeState& time, bool caseWriteTime);

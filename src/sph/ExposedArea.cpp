@@ -244,6 +244,10 @@ void ExposedArea::computeIn() {
       }
     }
     if (!gradientForm) return;
+    // a decomposed run's halo: its owners' fullness, which the mean below reads at neighbours
+    for (std::size_t e = 0; e < exposed_.size(); ++e) {
+      neighbourhood_.syncHalo(*exposed_[e], fullness_[e]);
+    }
     for (std::size_t e = 0; e < exposed_.size(); ++e) {
       ParticleCloud* cloud = exposed_[e];
       if (std::find(lattices_.begin(), lattices_.end(), cloud) != lattices_.end()) {

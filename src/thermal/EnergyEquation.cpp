@@ -213,22 +213,18 @@ void EnergyEquation::updateTemperatures() {
 }
 
 double EnergyEquation::stableDeltaT(std::string& limiter) const {
+  std::vector<double> limits;
+  for (const auto& path : paths_) limits.push_back(path->stableDeltaT());
+  context_.comm.min(limits);  // the surface losses' depend on each rank's particles
   double shortest = std::numeric_limits<double>::infinity();
   limiter = "heat";
-  for (const auto& path : paths_) {
-    const double limit = path->stableDeltaT();
-    if (limit < shortest) {
-      shortest = limit;
-      limiter = std::string("heat ") + path->name();
+  for (std::size_t p = 0; p < paths_.size(); ++p) {
+    if (limits[p] < shortest) {
+      shortest = limits[p];
+      limiter = std::string("heat ") + paths_[p]->name();
     }
   }
   return shortest;
-}
-
-std::vector<std::string> EnergyEquation::pathNames() const {
-  std::vector<std::string> names;
-  for (const auto& path : paths_) names.emplace_back(path->name());
-  return names;
 }
 
 std::vector<std::string> EnergyEquation::descriptions() const {

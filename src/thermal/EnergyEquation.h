@@ -64,8 +64,6 @@ class EnergyEquation {
   const HeatTransferContext& context() const { return context_; }
   double stableDeltaT(std::string& limiter) const;
   std::vector<std::string> descriptions() const;
-  // The names of the heat paths that run (conduction, moldContact, atmosphere, radiation).
-  std::vector<std::string> pathNames() const;
 
  private:
   void prepareFields(HeatCloud& heat);
