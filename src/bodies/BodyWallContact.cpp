@@ -2,7 +2,7 @@
 
 namespace sphcast {
 
-BodyContact keepBodyOutOfMolds(RigidBody& body, const std::vector<WallSurfaceView>& molds,
+BodyContact deepestBodyContact(const RigidBody& body, const std::vector<WallSurfaceView>& molds,
                                const PeriodicBox& periodic, Real spacing) {
   BodyContact contact;
   if (molds.empty()) return contact;
@@ -11,18 +11,21 @@ BodyContact keepBodyOutOfMolds(RigidBody& body, const std::vector<WallSurfaceVie
   const auto& depth = cloud.scalarField("wallDistance");
   const Real touching = Real(0.5) * spacing;
   const Real surfaceLayer = Real(0.75) * spacing;
-  Vector normal = Vector::Zero();
-  for (std::size_t k = 0; k < x.size(); ++k) {  // a serial scan: the deepest, lowest index
+  // a serial scan of the owned particles: the deepest, lowest index
+  for (std::size_t k = 0; k < cloud.ownedSize(); ++k) {
     if (depth[k] > surfaceLayer) continue;
     const WallSurfaceDistance surface = wallSurfaceDistance(x[k], k, molds, periodic, spacing);
     if (!surface.found) continue;
     const Real shortfall = touching - surface.distance;
-    if (shortfall > contact.depth) {
-      contact = {shortfall, k};
-      normal = surface.normal;
-    }
+    if (shortfall > contact.depth) contact = {shortfall, k, surface.normal};
   }
-  if (contact.depth > 0) body.pushBack(contact.depth * normal, normal);
+  return contact;
+}
+
+BodyContact keepBodyOutOfMolds(RigidBody& body, const std::vector<WallSurfaceView>& molds,
+                               const PeriodicBox& periodic, Real spacing) {
+  const BodyContact contact = deepestBodyContact(body, molds, periodic, spacing);
+  if (contact.depth > 0) body.pushBack(contact.depth * contact.normal, contact.normal);
   return contact;
 }
 

@@ -8,11 +8,12 @@
 
 namespace sphcast {
 
-// What the contact pass did: how deep the body had gone into another mold (m, 0 if not) and at
-// which of its particles.
+// What the contact pass did: how deep the body had gone into another mold (m, 0 if not), at
+// which of its particles, and that mold's outward normal there.
 struct BodyContact {
   Real depth = 0;
   std::size_t particle = 0;
+  Vector normal = Vector::Zero();
 };
 
 // A body may not pass into another mold: only the metal and the end stop push it, and a heavy
@@ -25,6 +26,10 @@ struct BodyContact {
 // contact without friction, as the end stop. `molds` are the other walls seen from the body's
 // particles (their lists: the body's particles against each mold).
 BodyContact keepBodyOutOfMolds(RigidBody& body, const std::vector<WallSurfaceView>& molds,
+                               const PeriodicBox& periodic, Real spacing);
+// The scan alone, over the cloud's owned particles (a decomposed run takes the deepest of the
+// ranks' and moves the body back itself).
+BodyContact deepestBodyContact(const RigidBody& body, const std::vector<WallSurfaceView>& molds,
                                const PeriodicBox& periodic, Real spacing);
 
 }  // namespace sphcast

@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <limits>
+#include <vector>
 
 #include <Eigen/Eigenvalues>
 
@@ -12,9 +14,10 @@
 
 namespace sphcast {
 
-RigidBody::RigidBody(RigidBodySettings settings, ParticleCloud& cloud, const Vector& gravity)
-    : settings_(std::move(settings)), cloud_(cloud), gravity_(gravity) {
-  if (cloud_.size() == 0) {
+RigidBody::RigidBody(RigidBodySettings settings, ParticleCloud& cloud, const Vector& gravity,
+                     const Communicator& comm)
+    : settings_(std::move(settings)), cloud_(cloud), gravity_(gravity), comm_(comm) {
+  if (comm_.sum(static_cast<std::int64_t>(cloud_.ownedSize())) == 0) {
     throw Error("body '" + settings_.name + "': its cloud '" + cloud_.name() + "' is empty");
   }
   cloud_.scalarField("volume");  // each look-up throws an Error naming the cloud's fields
@@ -39,12 +42,16 @@ RigidBody::RigidBody(RigidBodySettings settings, ParticleCloud& cloud, const Vec
 void RigidBody::computeMassProperties() {
   const auto& rest = cloud_.vectorField("restPosition");
   const auto& volume = cloud_.scalarField("volume");
-  double totalVolume = 0;
-  Vector moment = Vector::Zero();
-  for (std::size_t k = 0; k < rest.size(); ++k) {
-    totalVolume += volume[k];
-    moment += volume[k] * rest[k];
+  // over every rank's own particles in a decomposed run
+  std::vector<double> sums(4, 0.0);  // the volume, its first moment
+  for (std::size_t k = 0; k < cloud_.ownedSize(); ++k) {
+    sums[0] += volume[k];
+    for (int a = 0; a < 3; ++a) sums[1 + a] += double(volume[k]) * double(rest[k][a]);
   }
+  comm_.sum(sums);
+  const double totalVolume = sums[0];
+  const Vector moment(static_cast<Real>(sums[1]), static_cast<Real>(sums[2]),
+                      static_cast<Real>(sums[3]));
   if (!(totalVolume > 0)) {
     throw Error("body '" + settings_.name + "': the particles of cloud '" + cloud_.name() +
                 "' have no volume");
@@ -61,7 +68,7 @@ void RigidBody::computeMassProperties() {
   // each particle's own: a cube (2D: a square) of side dx, m dx^2 / 6 about its centre
   const auto spacing = cloud_.attributes().find("spacing");
   Matrix3 inertia = Matrix3::Zero();
-  for (std::size_t k = 0; k < rest.size(); ++k) {
+  for (std::size_t k = 0; k < cloud_.ownedSize(); ++k) {
     const Vector d = rest[k] - startCentre_;
     const Real m = density * volume[k];
     const Real side = spacing != cloud_.attributes().end() ? static_cast<Real>(spacing->second)
@@ -70,6 +77,9 @@ void RigidBody::computeMassProperties() {
     inertia +=
         m * (d.squaredNorm() * Matrix3::Identity() - d * d.transpose()) + own * Matrix3::Identity();
   }
+  std::vector<double> entries(inertia.data(), inertia.data() + 9);
+  comm_.sum(entries);
+  for (int e = 0; e < 9; ++e) inertia.data()[e] = static_cast<Real>(entries[e]);
   const Eigen::SelfAdjointEigenSolver<Matrix3> principal(inertia);
   principalInertia_ = principal.eigenvalues();
   principalAxes_ = principal.eigenvectors();

@@ -8,6 +8,7 @@
 #include <Eigen/Geometry>
 
 #include "core/Real.h"
+#include "parallel/Communicator.h"
 #include "particles/ParticleCloud.h"
 
 namespace sphcast {
@@ -72,7 +73,10 @@ class RigidBody {
   // Adds the fields the body keeps in its cloud (U, acceleration, restPosition, restNormal:
   // from the cloud's present state when it does not have them yet, i.e. at the start).
   // A restart reads the state back with readState before the first step.
-  RigidBody(RigidBodySettings settings, ParticleCloud& cloud, const Vector& gravity);
+  // A decomposed run's body: the state on every rank alike, its particles each rank's own and
+  // halo (comm: the ranks, whose particles the mass properties sum).
+  RigidBody(RigidBodySettings settings, ParticleCloud& cloud, const Vector& gravity,
+            const Communicator& comm = Communicator::self());
 
   const RigidBodySettings& settings() const { return settings_; }
   ParticleCloud& cloud() { return cloud_; }
@@ -136,6 +140,7 @@ class RigidBody {
   RigidBodySettings settings_;
   ParticleCloud& cloud_;
   Vector gravity_;
+  Communicator comm_;
   double mass_ = 0;
   Vector startCentre_ = Vector::Zero();          // the centre of mass at the rest positions
   Vector principalInertia_ = Vector::Zero();     // about the centre, in the body's frame

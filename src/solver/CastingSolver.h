@@ -85,6 +85,7 @@ class CastingSolver {
   void pushBodiesByClearance(double deltaT);
   void keepBodiesOutOfMolds();
   void kickBodies(double deltaT);
+  WallLoad bodyLoad(const RigidBody& body) const;  // the fluid's, summed over the ranks
   // Each step's new metal from the inlets (after the drift), their buffers held (after the
   // kick); CastingSolverInlets.cpp.
   void setUpInlets();

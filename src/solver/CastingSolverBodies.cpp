@@ -50,7 +50,7 @@ void CastingSolver::setUpBodies() {
   for (const RigidBodySettings& settings : bodySetup_.bodies) {
     ParticleCloud& cloud = cloudNamed(settings.cloud);
     const bool hadRestPositions = cloud.hasVectorField("restPosition");
-    auto body = std::make_unique<RigidBody>(settings, cloud, gravity_);
+    auto body = std::make_unique<RigidBody>(settings, cloud, gravity_, comm_);
     if (state && state->found(settings.name)) {
       body->readState(state->subDict(settings.name), time_.value());
     } else if (hadRestPositions) {
@@ -73,8 +73,8 @@ void CastingSolver::setUpBodies() {
       lastGood_.push_back(cloud);
     }
     const Eigen::IOFormat plain(Eigen::StreamPrecision, Eigen::DontAlignCols, " ", " ");
-    info() << "Body " << settings.name << ": cloud " << cloud.name() << " (" << cloud.size()
-           << " particles), mass " << body->mass() << " kg, centre ("
+    info() << "Body " << settings.name << ": cloud " << cloud.name() << " ("
+           << comm_.sum(static_cast<std::int64_t>(cloud.ownedSize())) << " particles), mass " << body->mass() << " kg, centre ("
            << body->centre().transpose().format(plain) << "), ";
     if (settings.prescribed()) {
       info() << "prescribed displacement (" << settings.displacement.size() << " points)\n";
@@ -113,25 +113,60 @@ void CastingSolver::driftBodies(double deltaT) {
   for (auto& body : bodies_) body->kickAndDrift(deltaT, time_.value());
 }
 
+// In a decomposed run each rank scans its own particles of the body, and every rank moves the
+// body back by the deepest contact of all (of the lowest rank at a tie).
 void CastingSolver::keepBodiesOutOfMolds() {
   const double spacing = fluid_->attributes().at("spacing");
   for (std::size_t b = 0; b < bodies_.size(); ++b) {
     const auto molds = wallSurfaceViews(bodies_[b]->cloud(), bodyMolds_[b], *neighbourhood_);
-    bodyContacts_[b] = keepBodyOutOfMolds(*bodies_[b], molds, neighbourhood_->periodicBox(),
-                                          static_cast<Real>(spacing));
+    BodyContact contact = deepestBodyContact(*bodies_[b], molds, neighbourhood_->periodicBox(),
+                                             static_cast<Real>(spacing));
+    if (parallel_) {
+      const double deepest = comm_.max(static_cast<double>(contact.depth));
+      const bool mine = deepest > 0 && static_cast<double>(contact.depth) == deepest;
+      const double first = comm_.min(mine ? double(comm_.rank()) : double(comm_.size()));
+      std::vector<double> normal(3, 0.0);
+      if (mine && first == double(comm_.rank())) {
+        for (int a = 0; a < 3; ++a) normal[a] = contact.normal[a];
+      }
+      comm_.sum(normal);
+      contact.depth = static_cast<Real>(deepest);
+      contact.normal = Vector(static_cast<Real>(normal[0]), static_cast<Real>(normal[1]),
+                              static_cast<Real>(normal[2]));
+    }
+    if (contact.depth > 0) bodies_[b]->pushBack(contact.depth * contact.normal, contact.normal);
+    bodyContacts_[b] = contact;
   }
+}
+
+// The fluid's loads on a body, every rank's particles summed (a serial run's as they are).
+WallLoad CastingSolver::bodyLoad(const RigidBody& body) const {
+  WallLoad load = flow_->wallLoad(body.cloud());
+  if (!parallel_) return load;
+  std::vector<double> sums;
+  for (const Vector* v : {&load.force, &load.torque, &load.clearanceImpulse,
+                          &load.clearanceAngularImpulse}) {
+    for (int a = 0; a < 3; ++a) sums.push_back((*v)[a]);
+  }
+  comm_.sum(sums);
+  std::size_t k = 0;
+  for (Vector* v : {&load.force, &load.torque, &load.clearanceImpulse,
+                    &load.clearanceAngularImpulse}) {
+    for (int a = 0; a < 3; ++a) (*v)[a] = static_cast<Real>(sums[k++]);
+  }
+  return load;
 }
 
 void CastingSolver::pushBodiesByClearance(double deltaT) {
   for (auto& body : bodies_) {
-    const WallLoad& load = flow_->wallLoad(body->cloud());
+    const WallLoad load = bodyLoad(*body);
     body->takeImpulse(load.clearanceImpulse, load.clearanceAngularImpulse, deltaT, time_.value());
   }
 }
 
 void CastingSolver::kickBodies(double deltaT) {
   for (auto& body : bodies_) {
-    const WallLoad& load = flow_->wallLoad(body->cloud());
+    const WallLoad load = bodyLoad(*body);
     body->setLoadsAndKick(load.force, load.torque, deltaT, time_.value());
   }
 }
@@ -139,7 +174,7 @@ void CastingSolver::kickBodies(double deltaT) {
 // A row per step of every body: time, displacement of the centre, velocity, the fluid's force,
 // the total force, whether at the end stop (flushed: a killed run keeps its rows).
 void CastingSolver::writeBodyHistory() {
-  if (bodies_.empty()) return;
+  if (bodies_.empty() || !comm_.master()) return;  // every rank has the bodies' state
   if (bodyHistory_.empty()) {
     const auto folder =
         caseFolder_.root() / "postProcessing" / "dynamicBodies" / time_.startTimeName();

@@ -127,12 +127,14 @@ const WallLoad& WeaklyCompressibleFlow::wallLoad(const ParticleCloud& wall) cons
   return wallLoads_[wallIndex(wall)];
 }
 
-// The per-particle loads of the last pass, summed in particle order.
+// The per-particle loads of the last pass, summed in particle order (a decomposed run's owned
+// particles: the solver sums the ranks').
 void WeaklyCompressibleFlow::sumWallLoads() {
+  const std::size_t owned = fluid_.ownedSize();
   for (std::size_t w = 0; w < walls_.size(); ++w) {
     if (!loadMeasured_[w]) continue;
     Vector force = Vector::Zero(), torque = Vector::Zero();
-    for (std::size_t i = 0; i < loadForce_[w].size(); ++i) {
+    for (std::size_t i = 0; i < owned; ++i) {
       force += loadForce_[w][i];
       torque += loadTorque_[w][i];
     }
@@ -151,7 +153,7 @@ void WeaklyCompressibleFlow::sumClearanceImpulses() {
   if (clearanceWall_.empty()) return;
   const auto& x = fluid_.positions();
   const auto& mass = fluid_.scalarField("mass");
-  for (std::size_t i = 0; i < clearanceWall_.size(); ++i) {
+  for (std::size_t i = 0; i < fluid_.ownedSize(); ++i) {  // the owned: the clearance's
     const int w = clearanceWall_[i];
     if (w < 0 || !loadMeasured_[w]) continue;
     const Vector impulse = -mass[i] * clearanceVelocityChange_[i];
