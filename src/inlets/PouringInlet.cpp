@@ -15,8 +15,9 @@ namespace sphcast {
 PouringInlet::PouringInlet(PouringInletSettings settings, int number, ParticleCloud& fluid,
                            int dimension, Real supportRadius, const TemperatureTable& density,
                            const TemperatureTable& viscosity, const InternalEnergyTable* energy,
-                           std::vector<std::string> unsetFields)
-    : settings_(std::move(settings)),
+                           std::vector<std::string> unsetFields, const Communicator& comm)
+    : comm_(comm),
+      settings_(std::move(settings)),
       mark_(static_cast<Real>(number + 1)),
       fluid_(fluid),
       dimension_(dimension),
@@ -63,7 +64,10 @@ PouringInlet::PouringInlet(PouringInletSettings settings, int number, ParticleCl
                                     (static_cast<double>(layer_.size()) * particleMass_)
                               : settings_.speed;
   if (fluid_.hasIdField("id")) {
-    for (const std::int64_t id : fluid_.idField("id")) nextId_ = std::max(nextId_, id + 1);
+    const auto& id = fluid_.idField("id");
+    for (std::size_t i = 0; i < fluid_.ownedSize(); ++i) nextId_ = std::max(nextId_, id[i] + 1);
+    // every rank's (exact as a double below 2^53)
+    nextId_ = static_cast<std::int64_t>(comm_.max(static_cast<double>(nextId_)));
   }
   fluid_.addScalarField("inlet");
   fluid_.attributes().try_emplace("inflowEnergy", 0.0);
@@ -73,10 +77,12 @@ double PouringInlet::massRate() const {
   return static_cast<double>(layer_.size()) * particleMass_ * speed_ / spacing_;
 }
 
-bool PouringInlet::finished(double time) const {
+bool PouringInlet::finished(double time) const { return finishedWith(time, emittedMass_); }
+
+bool PouringInlet::finishedWith(double time, double emittedMass) const {
   if (settings_.endTime && time > *settings_.endTime) return true;
   const double layerMass = static_cast<double>(layer_.size()) * particleMass_;
-  return settings_.totalMass && emittedMass_ + 0.5 * layerMass > *settings_.totalMass;
+  return settings_.totalMass && emittedMass + 0.5 * layerMass > *settings_.totalMass;
 }
 
 bool PouringInlet::lastLayerDistance(Real& distance) const {
@@ -84,15 +90,25 @@ bool PouringInlet::lastLayerDistance(Real& distance) const {
   const auto& x = fluid_.positions();
   bool found = false;
   distance = std::numeric_limits<Real>::max();
-  for (std::size_t i = 0; i < x.size(); ++i) {
+  for (std::size_t i = 0; i < fluid_.ownedSize(); ++i) {
     if (mark[i] != mark_) continue;
     distance = std::min(distance, (x[i] - settings_.centre).dot(settings_.direction));
     found = true;
   }
-  return found;
+  if (comm_.size() == 1) return found;
+  distance = static_cast<Real>(comm_.min(static_cast<double>(distance)));
+  return comm_.any(found);
 }
 
 void PouringInlet::appendLayer(Real distance) {
+  const double layerMass = static_cast<double>(layer_.size()) * particleMass_;
+  emittedMass_ += layerMass;
+  fluid_.attributes()["inflowEnergy"] += layerMass * static_cast<double>(energy_);
+  ++layers_;
+  if (!comm_.master()) {  // rank 0's particles; the next search sends them to their ranks
+    nextId_ += static_cast<std::int64_t>(layer_.size());
+    return;
+  }
   const std::size_t first = fluid_.size();
   fluid_.resize(first + layer_.size());
   const Vector velocity = static_cast<Real>(speed_) * settings_.direction;
@@ -118,27 +134,37 @@ void PouringInlet::appendLayer(Real distance) {
   if (fluid_.hasIdField("id")) {
     auto& id = fluid_.idField("id");
     for (std::size_t i = first; i < id.size(); ++i) id[i] = nextId_++;
+  } else {
+    nextId_ += static_cast<std::int64_t>(layer_.size());
   }
-  const double layerMass = static_cast<double>(layer_.size()) * particleMass_;
-  emittedMass_ += layerMass;
-  fluid_.attributes()["inflowEnergy"] += layerMass * static_cast<double>(energy_);
-  ++layers_;
 }
 
-std::size_t PouringInlet::emit(double time) {
-  if (time < settings_.startTime) return 0;
-  const std::size_t before = fluid_.size();
+std::vector<Real> PouringInlet::layersDue(double time) const {
+  std::vector<Real> distances;
+  if (time < settings_.startTime) return distances;
   Real distance = 0;
   if (!lastLayerDistance(distance)) {
-    if (!finished(time)) appendLayer(0);  // the stream's first layer, on the disk
-    return fluid_.size() - before;
+    if (!finished(time)) distances.push_back(0);  // the stream's first layer, on the disk
+    return distances;
   }
-  while (distance >= spacing_ && !finished(time)) {
+  // each layer's mass counts towards the total, as appendLayer will add it
+  const double layerMass = static_cast<double>(layer_.size()) * particleMass_;
+  double emitted = emittedMass_;
+  while (distance >= spacing_ && !finishedWith(time, emitted)) {
     distance -= spacing_;
-    appendLayer(distance);
+    distances.push_back(distance);
+    emitted += layerMass;
   }
+  return distances;
+}
+
+std::size_t PouringInlet::appendLayers(const std::vector<Real>& distances) {
+  const std::size_t before = fluid_.size();
+  for (const Real distance : distances) appendLayer(distance);
   return fluid_.size() - before;
 }
+
+std::size_t PouringInlet::emit(double time) { return appendLayers(layersDue(time)); }
 
 void PouringInlet::holdBuffer() {
   auto& mark = fluid_.scalarField("inlet");

@@ -8,6 +8,7 @@
 #include "core/Real.h"
 #include "materials/InternalEnergyTable.h"
 #include "materials/TemperatureTable.h"
+#include "parallel/Communicator.h"
 #include "particles/ParticleCloud.h"
 
 namespace sphcast {
@@ -48,6 +49,10 @@ struct PouringInletSettings {
 // fields `unsetFields` names at -1 (history not yet recorded: fill time, solidification times), the
 // others 0; an `id` field continues the cloud's numbering. The energy they bring (sum m u) is added
 // to the cloud's attribute inflowEnergy, so that the energy books close.
+//
+// In a decomposed run (comm of more than one rank) every rank finds the same layers due (from
+// the buffer particles of all) and keeps the same books; rank 0 appends the particles, after
+// the solver dropped the fluid's halo, and the next search migrates them to their ranks.
 class PouringInlet {
  public:
   // `number`: the inlet's place among the case's (its buffer mark is number + 1). The fluid's
@@ -55,7 +60,8 @@ class PouringInlet {
   PouringInlet(PouringInletSettings settings, int number, ParticleCloud& fluid, int dimension,
                Real supportRadius, const TemperatureTable& density,
                const TemperatureTable& viscosity, const InternalEnergyTable* energy,
-               std::vector<std::string> unsetFields);
+               std::vector<std::string> unsetFields,
+               const Communicator& comm = Communicator::self());
 
   const PouringInletSettings& settings() const { return settings_; }
   std::size_t particlesPerLayer() const { return layer_.size(); }
@@ -67,8 +73,13 @@ class PouringInlet {
   bool finished(double time) const;
 
   // The layers due at `time` (after the drift): appends them to the fluid cloud; returns the
-  // number of particles added.
+  // number of particles added. emit = appendLayers(layersDue(time)).
   std::size_t emit(double time);
+  // Collective: the distances past the disk of the layers due at `time`, the same on every rank
+  // (from the buffer particles of them all). Empty: none.
+  std::vector<Real> layersDue(double time) const;
+  // Appends the layers (rank 0 holds their particles; every rank keeps the books).
+  std::size_t appendLayers(const std::vector<Real>& distances);
   // After the flow's kick: the buffer particles back to the inlet's velocity and rho_s; those
   // h past the disk are released.
   void holdBuffer();
@@ -79,9 +90,11 @@ class PouringInlet {
 
  private:
   void appendLayer(Real distance);
+  bool finishedWith(double time, double emittedMass) const;
   // the smallest distance past the disk of the inlet's buffer particles; false if it has none
   bool lastLayerDistance(Real& distance) const;
 
+  Communicator comm_;
   PouringInletSettings settings_;
   Real mark_;  // the buffer's value of the field `inlet`
   ParticleCloud& fluid_;

@@ -86,7 +86,14 @@ double DomainDecomposition::imbalance() const {
   return total > 0 ? static_cast<double>(largest) * comm_.size() / static_cast<double>(total) : 1.0;
 }
 
+void DomainDecomposition::dropHalo(ParticleCloud& cloud) {
+  halos_[indexOf(cloud)].remove(cloud);
+  rebuildPending_ = true;
+}
+
 void DomainDecomposition::update(Neighbourhood& neighbourhood, bool rebuild) {
+  rebuild = rebuild || rebuildPending_;  // the same on every rank: dropHalo is collective
+  rebuildPending_ = false;
   // the halo as its owners moved it: the displacements the rebuild's test measures are theirs
   // (a rebuild asked for replaces the halo: no refresh; `rebuild` is the same on every rank)
   if (!rebuild) {

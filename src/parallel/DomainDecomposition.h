@@ -43,6 +43,10 @@ class DomainDecomposition : public HaloSync {
   // then updated, with every cloud kept in its order.
   void update(Neighbourhood& neighbourhood, bool rebuild = false);
 
+  // Collective: drops a cloud's halo, so that particles can join its owned ones (an inlet's
+  // new layer); the next update() rebuilds.
+  void dropHalo(ParticleCloud& cloud);
+
   void refresh(const ParticleCloud& cloud, void* values, std::size_t bytesPerParticle) override;
   void refresh(ParticleCloud& cloud, const std::vector<std::string>& fields) override;
 
@@ -68,6 +72,7 @@ class DomainDecomposition : public HaloSync {
   std::vector<Cloud> clouds_;
   std::vector<HaloExchange> halos_;
   long rebalances_ = 0;
+  bool rebuildPending_ = false;  // a halo was dropped
 };
 
 }  // namespace sphcast

@@ -198,6 +198,7 @@ void HaloExchange::build(ParticleCloud& cloud, const RecursiveBisection& decompo
   }
   halo_ = cloud.size() - owned_;
   cloud.setHaloSize(halo_);
+  built_ = true;
 }
 
 void HaloExchange::checkLayout(const ParticleCloud& cloud) const {
@@ -293,10 +294,11 @@ void HaloExchange::refresh(const ParticleCloud& cloud, void* values, std::size_t
 }
 
 void HaloExchange::remove(ParticleCloud& cloud) {
-  if (halo_ > 0) {
+  if (built_ && halo_ > 0) {
     checkLayout(cloud);
     cloud.resize(owned_);
   }
+  built_ = false;
   halo_ = 0;
   owned_ = cloud.size();
   partners_.clear();

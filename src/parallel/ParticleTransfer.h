@@ -48,7 +48,8 @@ class HaloExchange {
   void refresh(const ParticleCloud& cloud, void* values, std::size_t bytesPerParticle,
                const Communicator& comm) const;
   // Drops the halo (before a migration, a write or a count); the cloud then holds its owned
-  // particles only, until the next build.
+  // particles only, until the next build. Refreshes do nothing until then (every rank's halo
+  // must be dropped alike), and particles may be added.
   void remove(ParticleCloud& cloud);
 
   std::size_t ownedCount() const { return owned_; }
@@ -61,6 +62,7 @@ class HaloExchange {
  private:
   void checkLayout(const ParticleCloud& cloud) const;
 
+  bool built_ = false;
   std::size_t owned_ = 0, halo_ = 0;
   std::vector<std::vector<std::size_t>> sendIndices_;  // per rank, into the owned particles
   std::vector<std::size_t> haloStart_;                 // per rank: where its copies start

@@ -37,7 +37,7 @@ void CastingSolver::setUpInlets() {
     }
     auto inlet = std::make_unique<PouringInlet>(
         settings, static_cast<int>(inlets_.size()), *fluid_, flow.dimension, flow.supportRadius,
-        *flowSetup_.restDensity, *flowSetup_.viscosity, energy, unset);
+        *flowSetup_.restDensity, *flowSetup_.viscosity, energy, unset, comm_);
     if (state && state->found(settings.name)) inlet->readState(state->subDict(settings.name));
     const double dx = fluid_->attributes().at("spacing");
     const double lattice =
@@ -72,8 +72,16 @@ void CastingSolver::setUpInlets() {
   holdInletBuffers();
 }
 
+// In a decomposed run a new layer joins rank 0's own particles: every rank drops the fluid's
+// halo first (they all find the same layers due), and the next search rebuilds it and sends
+// the layer's particles to their ranks.
 void CastingSolver::pour() {
-  for (auto& inlet : inlets_) inlet->emit(time_.value());
+  for (auto& inlet : inlets_) {
+    const std::vector<Real> layers = inlet->layersDue(time_.value());
+    if (layers.empty()) continue;
+    if (decomposition_) decomposition_->dropHalo(*fluid_);
+    inlet->appendLayers(layers);
+  }
 }
 
 void CastingSolver::holdInletBuffers() {
