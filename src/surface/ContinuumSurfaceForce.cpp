@@ -193,10 +193,7 @@ void ContinuumSurfaceForce::computeColourAndNormal() {
   const Real self = kernel.value(0);
   const std::size_t n = fluid_.size();
   volume_ = particleVolumes(fluid_, Dim);
-  if (wallVolume_.size() != walls_.size()) {
-    wallVolume_.clear();
-    for (const ParticleCloud* wall : walls_) wallVolume_.push_back(particleVolumes(*wall, Dim));
-  }
+  const std::vector<std::vector<Real>>& wallVolume = wallVolumes_.of(walls_, Dim);
   colour_.resize(n);
   depth_.resize(n);
   gradient_.resize(n);
@@ -217,6 +214,9 @@ void ContinuumSurfaceForce::computeColourAndNormal() {
   // (frozen metal away from the melt) it left NaN
   const bool fromFlow = flowGradient_.size() == n;
   if (fromFlow) ++passesWithFlowsGradient_;
+  // a decomposed run's halo: its owners' values of what a pass reads at neighbours (the halo's
+  // own sums lack the neighbours beyond it)
+  if (fromFlow) neighbourhood_.syncHalo(fluid_, flowGradient_);
   auto gradientPass = [&](auto separation) {
 #pragma omp parallel for schedule(static)
     for (std::size_t i = 0; i < n; ++i) {
@@ -248,7 +248,7 @@ void ContinuumSurfaceForce::computeColourAndNormal() {
       }
       for (std::size_t w = 0; w < walls_.size(); ++w) {
         const auto& y = walls_[w]->positions();
-        const auto& v = wallVolume_[w];
+        const auto& v = wallVolume[w];
         for (const std::uint32_t k : wallPairs[w]->of(i)) {
           const Vector xik = separation(x[i], y[k]);
           g -= (v[k] * kernel.derivativeOverDistance(xik.norm())) * xik;
@@ -258,6 +258,7 @@ void ContinuumSurfaceForce::computeColourAndNormal() {
     }
   };
   withSeparation(periodic, gradientPass);
+  neighbourhood_.syncHalo(fluid_, gradient_);
   flowGradient_.clear();  // used: the next pass asks the flow again
   // c and z only where the surface weight can be above 0: |g| above the threshold (most of the
   // liquid lies deeper; there colour and depth are not computed, NaN)
@@ -275,7 +276,7 @@ void ContinuumSurfaceForce::computeColourAndNormal() {
       }
       for (std::size_t w = 0; w < walls_.size(); ++w) {
         const auto& y = walls_[w]->positions();
-        const auto& v = wallVolume_[w];
+        const auto& v = wallVolume[w];
         for (const std::uint32_t k : wallPairs[w]->of(i)) {
           c += v[k] * kernel.value(separation(x[i], y[k]).norm());
         }
@@ -395,6 +396,8 @@ void ContinuumSurfaceForce::computeCurvature() {
     }
   };
   withSeparation(periodic, pass);
+  neighbourhood_.syncHalo(fluid_, levelKappa);  // the smoothing reads them at neighbours
+  neighbourhood_.syncHalo(fluid_, kappaWeight);
   // Smoothed over the surface particles that have one (Shepard): a particle's curvature comes
   // from differences of neighbouring normals and carries their noise; without the smoothing
   // the oscillating drop's amplitude grew and its period came out 8 % long. (Smoothing the
@@ -432,11 +435,17 @@ void ContinuumSurfaceForce::computeCurvature() {
 void ContinuumSurfaceForce::computeSurface() {
   if (settings_.dimension == 2) {
     computeColourAndNormal<2>();
-    turnNormalsAtWalls();
-    computeCurvature<2>();
   } else {
     computeColourAndNormal<3>();
-    turnNormalsAtWalls();
+  }
+  turnNormalsAtWalls();
+  // the curvature reads the surface's marks, weights and normals at neighbours
+  neighbourhood_.syncHalo(fluid_, onSurface_);
+  neighbourhood_.syncHalo(fluid_, surfaceWeight_);
+  neighbourhood_.syncHalo(fluid_, unitNormal_);
+  if (settings_.dimension == 2) {
+    computeCurvature<2>();
+  } else {
     computeCurvature<3>();
   }
 }

@@ -123,7 +123,7 @@ class ContinuumSurfaceForce : public SurfaceTensionModel {
   Real surfaceGradient_;  // P(0): the largest colour gradient of a half space (its surface's)
   ParticleCloud& fluid_;
   std::vector<const ParticleCloud*> walls_;
-  std::vector<std::vector<Real>> wallVolume_;
+  WallVolumes wallVolumes_;
   Neighbourhood& neighbourhood_;
   // per particle, from the last pass
   std::vector<Real> volume_, tension_, colour_, depth_, kappa_;

@@ -122,10 +122,7 @@ void PairwiseForce::addForce() {
   const WendlandC2Kernel<Dim> kernel(settings_.supportRadius);
   const std::size_t n = fluid_.size();
   volume_ = particleVolumes(fluid_, Dim);
-  if (wallVolume_.size() != walls_.size()) {
-    wallVolume_.clear();
-    for (const ParticleCloud* wall : walls_) wallVolume_.push_back(particleVolumes(*wall, Dim));
-  }
+  const std::vector<std::vector<Real>>& wallVolume = wallVolumes_.of(walls_, Dim);
   const auto& x = fluid_.positions();
   const auto& rho = fluid_.scalarField("rho");
   auto& acceleration = fluid_.vectorField("acceleration");
@@ -156,7 +153,7 @@ void PairwiseForce::addForce() {
       }
       for (std::size_t w = 0; w < walls_.size(); ++w) {
         const auto& y = walls_[w]->positions();
-        const auto& v = wallVolume_[w];
+        const auto& v = wallVolume[w];
         for (const std::uint32_t k : wallPairs[w]->of(i)) {
           const Vector xik = separation(x[i], y[k]);
           const Real r = xik.norm();

@@ -66,7 +66,7 @@ class PairwiseForce : public SurfaceTensionModel {
   PairConstants constants_;
   ParticleCloud& fluid_;
   std::vector<const ParticleCloud*> walls_;
-  std::vector<std::vector<Real>> wallVolume_;
+  WallVolumes wallVolumes_;
   Neighbourhood& neighbourhood_;
   std::vector<Real> volume_, tension_;
   double seconds_ = 0;

@@ -226,6 +226,8 @@ void SurfaceEnergyTension::computeEnergy() {
     }
   };
   withSeparation(periodic, passWith);
+  // a decomposed run's halo: its owners' phi, which the force and Psi passes read at neighbours
+  neighbourhood_.syncHalo(fluid_, energyDerivative_);
 }
 
 // Psi_j = dE/drho_j = -(V_j / rho_j) (phi_j W_s(0) + sum_i phi_i W_s,ij) + the explicit part
@@ -254,6 +256,7 @@ void SurfaceEnergyTension::computeDensityDerivative() {
     }
   };
   withSeparation(periodic, passWith);
+  neighbourhood_.syncHalo(fluid_, densityDerivative_);  // the force pass reads Psi_j
 }
 
 std::vector<Real> SurfaceEnergyTension::densityDerivative() {
@@ -333,8 +336,9 @@ double SurfaceEnergyTension::energy() {
   } else {
     computeEnergy<3>();
   }
-  double sum = 0;
-  for (const Real e : fluid_.scalarField("surfaceEnergy")) sum += static_cast<double>(e);
+  double sum = 0;  // the owned particles' (a decomposed run's rank's share)
+  const auto& energy = fluid_.scalarField("surfaceEnergy");
+  for (std::size_t i = 0; i < fluid_.ownedSize(); ++i) sum += static_cast<double>(energy[i]);
   return sum;
 }
 

@@ -11,6 +11,7 @@
 #include <utility>
 
 #include "core/Error.h"
+#include "sph/ParticleVolumes.h"
 #include "surface/ContinuumSurfaceForce.h"
 #include "surface/PairwiseForce.h"
 #include "surface/SurfaceEnergyTension.h"
@@ -79,6 +80,20 @@ double capillaryStepLimit(const TemperatureTable& sigma, const std::vector<Real>
   const double lightest = *std::min_element(rho.begin(), rho.end());
   return 0.25 *
          std::sqrt(lightest * spacing * spacing * spacing / (2 * std::numbers::pi * largest));
+}
+
+const std::vector<std::vector<Real>>& WallVolumes::of(
+    const std::vector<const ParticleCloud*>& walls, int dimension) {
+  volumes_.resize(walls.size());
+  layouts_.resize(walls.size(), ~std::uint64_t(0));
+  for (std::size_t w = 0; w < walls.size(); ++w) {
+    if (layouts_[w] == walls[w]->layoutVersion() && volumes_[w].size() == walls[w]->size()) {
+      continue;
+    }
+    volumes_[w] = particleVolumes(*walls[w], dimension);
+    layouts_[w] = walls[w]->layoutVersion();
+  }
+  return volumes_;
 }
 
 const std::vector<std::string>& surfaceTensionModelNames() {

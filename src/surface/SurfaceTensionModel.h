@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cstdint>
 #include <memory>
 #include <string>
 #include <vector>
@@ -35,6 +36,20 @@ void tensionAtParticles(const TemperatureTable& sigma, const ParticleCloud& flui
 // table over the fluid's T; no limit where sigma is 0 or the fluid is empty.
 double capillaryStepLimit(const TemperatureTable& sigma, const std::vector<Real>& lastTension,
                           const ParticleCloud& fluid, double spacing);
+
+// The walls' particle volumes (particleVolumes), kept between passes and taken again when a
+// wall's particles were added, removed or reordered (a decomposed run's re-balance, a moving
+// mold's migration between ranks): a cache by each wall's layoutVersion().
+class WallVolumes {
+ public:
+  // The volumes of walls[w], up to date.
+  const std::vector<std::vector<Real>>& of(const std::vector<const ParticleCloud*>& walls,
+                                           int dimension);
+
+ private:
+  std::vector<std::vector<Real>> volumes_;
+  std::vector<std::uint64_t> layouts_;
+};
 
 // The models by the names constant/physicsModels gives them (surfaceTension { model NAME; }),
 // in the order the error for an unknown name lists them; the first is the default.
