@@ -198,7 +198,7 @@ void CastingSolver::updateCoolingMode() {
   }
   // metal still being poured, or none yet, is not a still melt (measured: crossDitchPress
   // entered the mode at t = 0 with its cloud empty, and its ladle fell 0.012 s behind)
-  bool pouring = fluid_->size() == 0;
+  bool pouring = comm_.sum(static_cast<std::int64_t>(fluid_->ownedSize())) == 0;
   for (const auto& inlet : inlets_) pouring = pouring || !inlet->finished(time_.value());
   // The bodies: the mode's slowed flow time would slow a body's motion hundreds of times, so a
   // body driven by its table keeps the mode off, and one let go (it is held through the step in

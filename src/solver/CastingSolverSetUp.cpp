@@ -202,19 +202,17 @@ void CastingSolver::setUpNeighbourhood() {
   for (ParticleCloud* cloud : evolving_) lastGood_.push_back(*cloud);
 }
 
-// -parallel runs the flow among fixed walls with heat conduction and solidification; the rest
-// of the step is not decomposed yet (heat paths other than conduction are refused in setUpHeat,
-// once they are known). Every rank refuses alike (a CollectiveError: rank 0 says it).
+// -parallel decomposes the flow's fluid and walls: every model of a casting runs on them. A case
+// without a flow (heat alone, ballistic clouds), or with heat in a cloud that is neither, is
+// refused. Every rank refuses alike (a CollectiveError: rank 0 says it).
 void CastingSolver::checkParallelSupport() const {
   auto refuse = [&](const std::string& what) {
-    throw CollectiveError(
-        "-parallel: " + what +
-        " does not run decomposed in this version; run the case serial (without mpirun and "
-        "-parallel). Decomposed runs take the flow among fixed walls, heat conduction and "
-        "solidification.");
+    throw CollectiveError("-parallel: " + what +
+                          " does not run decomposed in this version; run the case serial "
+                          "(without mpirun and -parallel). Decomposed runs take the flow's fluid "
+                          "and walls with every model on them.");
   };
   if (!flowSetup_.enabled) refuse("a case without a flow (constant/physicsModels: flow)");
-  if (surfaceTensionSetup_.enabled) refuse("surface tension (constant/physicsModels)");
   // the heat clouds must be decomposed: the flow's fluid or its walls
   for (const std::string& name : heatSetup_.clouds) {
     const auto& walls = flowSetup_.wallClouds;
@@ -223,8 +221,6 @@ void CastingSolver::checkParallelSupport() const {
       refuse("heat cloud '" + name + "', neither the flow's fluid nor one of its walls,");
     }
   }
-  if (!bodySetup_.bodies.empty()) refuse("a moving mold (constant/dynamicBodies)");
-  if (!inletSetup_.inlets.empty()) refuse("a pouring inlet (constant/inlets)");
 }
 
 // Cuts space among the ranks by system/decomposeParDict, and leaves each rank the fluid and
@@ -264,8 +260,11 @@ void CastingSolver::decompose() {
   constexpr std::int64_t fluidWeight = 30, wallWeight = 1;
   ParticleCloud& fluid = cloudNamed(flowSetup_.fluidCloud);
   std::vector<DomainDecomposition::Cloud> decomposed{{&fluid, true, fluidWeight, readWhole(fluid)}};
+  // a moving mold's particles migrate as the fluid's do
   for (const ParticleCloud* wall : wallClouds_) {
-    decomposed.push_back({writable(wall), false, wallWeight, readWhole(*wall)});
+    bool moving = false;
+    for (const RigidBodySettings& body : bodySetup_.bodies) moving |= body.cloud == wall->name();
+    decomposed.push_back({writable(wall), moving, wallWeight, readWhole(*wall)});
   }
   decomposition_->distribute(decomposed);
   neighbourhood_->setHaloSync(decomposition_.get());
@@ -388,14 +387,6 @@ void CastingSolver::setUpHeat() {
   context.maxDi = time_.settings().maxDi;
   context.comm = comm_;
   energy_ = std::make_unique<EnergyEquation>(context, heatSetup_.heatTransfer);
-  if (parallel_) {  // conduction is decomposed; the surface and contact paths not yet
-    for (const std::string& path : energy_->pathNames()) {
-      if (path == "conduction") continue;
-      throw CollectiveError("-parallel: heat path " + path +
-                            " does not run decomposed in this version (conduction does); run "
-                            "the case serial (without mpirun and -parallel)");
-    }
-  }
   if (energy_->needsExposedArea()) {
     std::vector<ParticleCloud*> exposed;
     std::vector<const ParticleCloud*> covering;
