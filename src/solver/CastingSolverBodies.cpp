@@ -74,8 +74,8 @@ void CastingSolver::setUpBodies() {
     }
     const Eigen::IOFormat plain(Eigen::StreamPrecision, Eigen::DontAlignCols, " ", " ");
     info() << "Body " << settings.name << ": cloud " << cloud.name() << " ("
-           << comm_.sum(static_cast<std::int64_t>(cloud.ownedSize())) << " particles), mass " << body->mass() << " kg, centre ("
-           << body->centre().transpose().format(plain) << "), ";
+           << comm_.sum(static_cast<std::int64_t>(cloud.ownedSize())) << " particles), mass "
+           << body->mass() << " kg, centre (" << body->centre().transpose().format(plain) << "), ";
     if (settings.prescribed()) {
       info() << "prescribed displacement (" << settings.displacement.size() << " points)\n";
     } else {
@@ -144,14 +144,14 @@ WallLoad CastingSolver::bodyLoad(const RigidBody& body) const {
   WallLoad load = flow_->wallLoad(body.cloud());
   if (!parallel_) return load;
   std::vector<double> sums;
-  for (const Vector* v : {&load.force, &load.torque, &load.clearanceImpulse,
-                          &load.clearanceAngularImpulse}) {
+  for (const Vector* v :
+       {&load.force, &load.torque, &load.clearanceImpulse, &load.clearanceAngularImpulse}) {
     for (int a = 0; a < 3; ++a) sums.push_back((*v)[a]);
   }
   comm_.sum(sums);
   std::size_t k = 0;
-  for (Vector* v : {&load.force, &load.torque, &load.clearanceImpulse,
-                    &load.clearanceAngularImpulse}) {
+  for (Vector* v :
+       {&load.force, &load.torque, &load.clearanceImpulse, &load.clearanceAngularImpulse}) {
     for (int a = 0; a < 3; ++a) (*v)[a] = static_cast<Real>(sums[k++]);
   }
   return load;

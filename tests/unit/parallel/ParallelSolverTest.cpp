@@ -167,11 +167,13 @@ void writePourCase(const fs::path& root, int ranks, const std::string& surfaceTe
   writeText(root / "constant/physicsModels",
             "dimension 2; materials { metal alloy; mold iron; lid iron; }\n"
             "flow { model weaklyCompressible; fluid metal; walls (mold lid); }\n"
-            "surfaceTension { " + surfaceTension + " }\n"
-            "heatTransfer { clouds (metal mold lid); conduction on;\n"
-            "  moldContact { coefficients ((alloy iron 150)); }\n"
-            "  atmosphere { T 300; coefficients ((iron 80) (alloy 20)); }\n"
-            "  radiation { T 300; materials (iron alloy); } }\n");
+            "surfaceTension { " +
+                surfaceTension +
+                " }\n"
+                "heatTransfer { clouds (metal mold lid); conduction on;\n"
+                "  moldContact { coefficients ((alloy iron 150)); }\n"
+                "  atmosphere { T 300; coefficients ((iron 80) (alloy 20)); }\n"
+                "  radiation { T 300; materials (iron alloy); } }\n");
   writeText(root / "constant/physicalProperties",
             "alloy { density 2400; viscosity 1.3e-3; conductivity 90; specificHeat 1100;\n"
             "        surfaceTension 0.9; emissivity 0.1; }\n"
@@ -234,9 +236,9 @@ CloudDifference compareCloud(const fs::path& serialCase, const fs::path& otherCa
     difference.positions = std::max(
         difference.positions,
         static_cast<double>((a.positions()[i] - b.positions()[j]).cwiseAbs().maxCoeff() / spacing));
-    difference.temperatures = std::max(
-        difference.temperatures,
-        std::abs(static_cast<double>(a.scalarField("T")[i] - b.scalarField("T")[j])));
+    difference.temperatures =
+        std::max(difference.temperatures,
+                 std::abs(static_cast<double>(a.scalarField("T")[i] - b.scalarField("T")[j])));
   }
   return difference;
 }
@@ -372,7 +374,8 @@ TEST(ParallelSolverTest, APourWithABodyHeatAndSurfaceTensionIsTheSerialRunWithin
     // the lid's history (every step) and the energy books, every rank's share summed
     const double lid = functionObjectDifference(serial, decomposed, "dynamicBodies", "lid.dat");
     EXPECT_LT(lid, 1e-8) << model;
-    const double books = functionObjectDifference(serial, decomposed, "books", "energyBalance", 1, 5);
+    const double books =
+        functionObjectDifference(serial, decomposed, "books", "energyBalance", 1, 5);
     EXPECT_LT(books, 1e-10) << model;
     std::cout << "    " << model << ": the lid's history within " << lid
               << ", the energy books within " << books << " of the serial run's\n";
