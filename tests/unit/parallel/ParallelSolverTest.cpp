@@ -155,9 +155,9 @@ constexpr Real pourDx = 0.004;
 
 void writePourCase(const fs::path& root, int ranks, const std::string& surfaceTension) {
   writeText(root / "system/controlDict",
-            "application sphCastFoam; startFrom latestTime; stopAt endTime; endTime 0.15;\n"
+            "application sphCastFoam; startFrom latestTime; stopAt endTime; endTime 0.12;\n"
             "deltaT 1e-5; adjustTimeStep yes; maxCo 0.25; writeControl adjustableRunTime;\n"
-            "writeInterval 0.05; logInterval 100000;\n"
+            "writeInterval 0.04; logInterval 100000;\n"
             "functions { books { type energyBalance; clouds (metal mold lid); } }\n");
   writeText(root / "system/sphSchemes",
             "densityScheme riemann; viscousForm Morris; supportRadius 0.012;\n"
@@ -338,9 +338,10 @@ namespace {
 
 TEST(ParallelSolverTest, APourWithABodyHeatAndSurfaceTensionIsTheSerialRunWithinRoundOff) {
   const Communicator world = Communicator::world();
-  // On 4 ranks oversubscribed on 2 cores under load this run hung (every rank waiting in a
-  // different reduction) in 4 of about 12 tries; not yet understood, so not run in CI there.
-  if (world.size() > 2) GTEST_SKIP() << "on 1 and 2 ranks only (see the comment)";
+  // On 2 ranks (on 1 it is the serial run, which the dam break checks bit for bit). On 4 ranks
+  // oversubscribed on 2 cores under load this run hung (every rank waiting in a different
+  // reduction) in 4 of about 12 tries; not yet understood, so not run in CI there.
+  if (world.size() != 2) GTEST_SKIP() << "on 2 ranks only (see the comment)";
   const fs::path scratch = sharedScratch(world);
   const std::vector<std::pair<std::string, std::string>> models{
       {"continuumSurfaceForce", "model continuumSurfaceForce; contactAngle 120;"},
@@ -357,7 +358,7 @@ TEST(ParallelSolverTest, APourWithABodyHeatAndSurfaceTensionIsTheSerialRunWithin
     CastingSolver(CaseFolder(decomposed), world).run();
     silenceInfo(!world.master());
     if (!world.master()) continue;
-    for (const char* time : {"0.05", "0.1", "0.15"}) {
+    for (const char* time : {"0.04", "0.08", "0.12"}) {
       for (const char* cloud : {"metal", "mold", "lid"}) {
         const CloudDifference d = compareCloud(serial, decomposed, time, cloud, pourDx);
         EXPECT_TRUE(d.sameParticles) << model << " " << cloud << " at " << time;
