@@ -116,35 +116,37 @@ std::string ParticleCloud::fieldList() const {
 }
 
 namespace {
-template <class FieldMap>
+// available() lists the cloud's fields for the error only: built on every look-up, the list
+// cost more than a dam break's step where a function object looked a field up per particle.
+template <class FieldMap, class Available>
 auto& findField(FieldMap& fields, const std::string& fieldName, const std::string& cloudName,
-                const char* kind, const std::string& available) {
+                const char* kind, Available available) {
   auto it = fields.find(fieldName);
   if (it == fields.end()) {
     throw Error("cloud '" + cloudName + "' has no " + kind + " field '" + fieldName +
-                "'; its fields are " + available);
+                "'; its fields are " + available());
   }
   return it->second;
 }
 }  // namespace
 
 ParticleCloud::ScalarField& ParticleCloud::scalarField(const std::string& n) {
-  return findField(scalars_, n, name_, "scalar", fieldList());
+  return findField(scalars_, n, name_, "scalar", [this] { return fieldList(); });
 }
 const ParticleCloud::ScalarField& ParticleCloud::scalarField(const std::string& n) const {
-  return findField(scalars_, n, name_, "scalar", fieldList());
+  return findField(scalars_, n, name_, "scalar", [this] { return fieldList(); });
 }
 ParticleCloud::VectorField& ParticleCloud::vectorField(const std::string& n) {
-  return findField(vectors_, n, name_, "vector", fieldList());
+  return findField(vectors_, n, name_, "vector", [this] { return fieldList(); });
 }
 const ParticleCloud::VectorField& ParticleCloud::vectorField(const std::string& n) const {
-  return findField(vectors_, n, name_, "vector", fieldList());
+  return findField(vectors_, n, name_, "vector", [this] { return fieldList(); });
 }
 ParticleCloud::IdField& ParticleCloud::idField(const std::string& n) {
-  return findField(ids_, n, name_, "id", fieldList());
+  return findField(ids_, n, name_, "id", [this] { return fieldList(); });
 }
 const ParticleCloud::IdField& ParticleCloud::idField(const std::string& n) const {
-  return findField(ids_, n, name_, "id", fieldList());
+  return findField(ids_, n, name_, "id", [this] { return fieldList(); });
 }
 
 void ParticleCloud::reorder(const std::vector<std::size_t>& newOrder) {
