@@ -4,6 +4,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "bodies/BodyWallContact.h"
@@ -85,7 +86,8 @@ class CastingSolver {
   void pushBodiesByClearance(double deltaT);
   void keepBodiesOutOfMolds();
   void kickBodies(double deltaT);
-  WallLoad bodyLoad(const RigidBody& body) const;  // the fluid's, summed over the ranks
+  // a and b, each summed over the ranks (a body's loads from every rank's fluid particles)
+  std::pair<Vector, Vector> summedOverRanks(const Vector& a, const Vector& b) const;
   // Each step's new metal from the inlets (after the drift), their buffers held (after the
   // kick); CastingSolverInlets.cpp.
   void setUpInlets();

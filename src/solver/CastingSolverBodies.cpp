@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <ostream>
 #include <sstream>
+#include <utility>
 
 #include "core/Error.h"
 #include "io/VtpCloud.h"
@@ -139,35 +140,31 @@ void CastingSolver::keepBodiesOutOfMolds() {
   }
 }
 
-// The fluid's loads on a body, every rank's particles summed (a serial run's as they are).
-WallLoad CastingSolver::bodyLoad(const RigidBody& body) const {
-  WallLoad load = flow_->wallLoad(body.cloud());
-  if (!parallel_) return load;
-  std::vector<double> sums;
-  for (const Vector* v :
-       {&load.force, &load.torque, &load.clearanceImpulse, &load.clearanceAngularImpulse}) {
-    for (int a = 0; a < 3; ++a) sums.push_back((*v)[a]);
-  }
+// Two of the fluid's loads on a body, every rank's particles summed (a serial run's as they
+// are): each phase reduces only the pair it takes.
+std::pair<Vector, Vector> CastingSolver::summedOverRanks(const Vector& a, const Vector& b) const {
+  if (!parallel_) return {a, b};
+  std::vector<double> sums{a[0], a[1], a[2], b[0], b[1], b[2]};
   comm_.sum(sums);
-  std::size_t k = 0;
-  for (Vector* v :
-       {&load.force, &load.torque, &load.clearanceImpulse, &load.clearanceAngularImpulse}) {
-    for (int a = 0; a < 3; ++a) (*v)[a] = static_cast<Real>(sums[k++]);
-  }
-  return load;
+  return {
+      Vector(static_cast<Real>(sums[0]), static_cast<Real>(sums[1]), static_cast<Real>(sums[2])),
+      Vector(static_cast<Real>(sums[3]), static_cast<Real>(sums[4]), static_cast<Real>(sums[5]))};
 }
 
 void CastingSolver::pushBodiesByClearance(double deltaT) {
   for (auto& body : bodies_) {
-    const WallLoad load = bodyLoad(*body);
-    body->takeImpulse(load.clearanceImpulse, load.clearanceAngularImpulse, deltaT, time_.value());
+    const WallLoad& load = flow_->wallLoad(body->cloud());
+    const auto [impulse, angularImpulse] =
+        summedOverRanks(load.clearanceImpulse, load.clearanceAngularImpulse);
+    body->takeImpulse(impulse, angularImpulse, deltaT, time_.value());
   }
 }
 
 void CastingSolver::kickBodies(double deltaT) {
   for (auto& body : bodies_) {
-    const WallLoad load = bodyLoad(*body);
-    body->setLoadsAndKick(load.force, load.torque, deltaT, time_.value());
+    const WallLoad& load = flow_->wallLoad(body->cloud());
+    const auto [force, torque] = summedOverRanks(load.force, load.torque);
+    body->setLoadsAndKick(force, torque, deltaT, time_.value());
   }
 }
 
