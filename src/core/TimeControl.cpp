@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <fstream>
+#include <sstream>
 
 #include "core/Error.h"
 #include "core/Log.h"
@@ -162,8 +164,18 @@ void TimeControl::rereadIfModified() {
   if (agree_) modified = agree_(modified);
   if (!modified) return;
   controlDictStamp_ = stamp;
+  std::string text;
+  {
+    std::ifstream file(controlDictPath_, std::ios::binary);
+    std::ostringstream whole;
+    whole << file.rdbuf();
+    if (file) text = whole.str();
+  }
+  if (share_) text = share_(text);
   try {
-    ControlSettings changed = ControlSettings::read(Dictionary::read(controlDictPath_));
+    if (text.empty()) throw Error("cannot read " + controlDictPath_.string());
+    ControlSettings changed =
+        ControlSettings::read(Dictionary::parse(text, controlDictPath_.string()));
     // Where the run started is history now; everything else applies from the next step.
     changed.startFrom = settings_.startFrom;
     changed.startTime = settings_.startTime;

@@ -97,9 +97,15 @@ class TimeControl {
   std::string stopReason() const { return stopReason_; }
   // Any message from the last controlDict re-read (empty if nothing changed).
   std::string takeRereadMessage();
-  // A parallel run's ranks re-read a modified controlDict at the same step: `agree` turns this
-  // rank's "it changed" into every rank's (whether any saw it change).
-  void agreeOnChanges(std::function<bool(bool)> agree) { agree_ = std::move(agree); }
+  // A parallel run's ranks re-read a modified controlDict at the same step and alike: `agree`
+  // turns this rank's "it changed" into every rank's (whether any saw it change), and `share`
+  // this rank's text of the file into one rank's, which every rank parses (a file caught
+  // half-saved would otherwise give the ranks different settings, and they would part ways).
+  void agreeOnChanges(std::function<bool(bool)> agree,
+                      std::function<std::string(const std::string&)> share) {
+    agree_ = std::move(agree);
+    share_ = std::move(share);
+  }
 
   // The completed fraction of [startTime, endTime], for the progress line.
   double progress() const;
@@ -126,6 +132,7 @@ class TimeControl {
   std::string rereadMessage_;
   std::string deltaTLimiter_ = "fixed deltaT";
   std::function<bool(bool)> agree_;
+  std::function<std::string(const std::string&)> share_;
 };
 
 }  // namespace sphcast

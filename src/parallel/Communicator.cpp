@@ -3,8 +3,10 @@
 #include "parallel/Communicator.h"
 
 #include <algorithm>
+#include <cstdlib>
 #include <cstring>
 #include <exception>
+#include <functional>
 #include <map>
 #include <string>
 #include <type_traits>
@@ -90,42 +92,52 @@ void reduceInPlace(std::intptr_t handle, bool mpi, T* values, std::size_t count,
 }
 }  // namespace
 
-double Communicator::sum(double value) const {
+double Communicator::sum(double value, std::source_location where) const {
+  checkCallSite(where, "sum");
   reduceInPlace(handle_, mpi_, &value, 1, Reduction::sum);
   return value;
 }
-std::int64_t Communicator::sum(std::int64_t value) const {
+std::int64_t Communicator::sum(std::int64_t value, std::source_location where) const {
+  checkCallSite(where, "sum");
   reduceInPlace(handle_, mpi_, &value, 1, Reduction::sum);
   return value;
 }
-double Communicator::min(double value) const {
+double Communicator::min(double value, std::source_location where) const {
+  checkCallSite(where, "min");
   reduceInPlace(handle_, mpi_, &value, 1, Reduction::min);
   return value;
 }
-double Communicator::max(double value) const {
+double Communicator::max(double value, std::source_location where) const {
+  checkCallSite(where, "max");
   reduceInPlace(handle_, mpi_, &value, 1, Reduction::max);
   return value;
 }
-void Communicator::sum(std::vector<double>& values) const {
+void Communicator::sum(std::vector<double>& values, std::source_location where) const {
+  checkCallSite(where, "sum");
   reduceInPlace(handle_, mpi_, values.data(), values.size(), Reduction::sum);
 }
-void Communicator::sum(std::vector<std::int64_t>& values) const {
+void Communicator::sum(std::vector<std::int64_t>& values, std::source_location where) const {
+  checkCallSite(where, "sum");
   reduceInPlace(handle_, mpi_, values.data(), values.size(), Reduction::sum);
 }
-void Communicator::min(std::vector<double>& values) const {
+void Communicator::min(std::vector<double>& values, std::source_location where) const {
+  checkCallSite(where, "min");
   reduceInPlace(handle_, mpi_, values.data(), values.size(), Reduction::min);
 }
-void Communicator::max(std::vector<double>& values) const {
+void Communicator::max(std::vector<double>& values, std::source_location where) const {
+  checkCallSite(where, "max");
   reduceInPlace(handle_, mpi_, values.data(), values.size(), Reduction::max);
 }
 
-bool Communicator::any(bool value) const {
+bool Communicator::any(bool value, std::source_location where) const {
   std::vector<std::int64_t> flag{value ? 1 : 0};
-  sum(flag);
+  sum(flag, where);
   return flag[0] > 0;
 }
 
-std::vector<std::int64_t> Communicator::gather(std::int64_t value) const {
+std::vector<std::int64_t> Communicator::gather(std::int64_t value,
+                                               std::source_location where) const {
+  checkCallSite(where, "gather");
   std::vector<std::int64_t> all(static_cast<std::size_t>(size_), 0);
 #ifdef SPHCAST_WITH_MPI
   if (mpi_) {
@@ -137,8 +149,8 @@ std::vector<std::int64_t> Communicator::gather(std::int64_t value) const {
   return all;
 }
 
-std::string Communicator::firstNonEmpty(const std::string& text) const {
-  const std::vector<std::int64_t> lengths = gather(static_cast<std::int64_t>(text.size()));
+std::string Communicator::firstNonEmpty(const std::string& text, std::source_location where) const {
+  const std::vector<std::int64_t> lengths = gather(static_cast<std::int64_t>(text.size()), where);
   int root = -1;
   for (int r = 0; r < size_ && root < 0; ++r) {
     if (lengths[static_cast<std::size_t>(r)] > 0) root = r;
@@ -156,7 +168,19 @@ std::string Communicator::firstNonEmpty(const std::string& text) const {
 }
 
 std::vector<std::vector<char>> Communicator::exchange(std::vector<std::vector<char>> outgoing,
+                                                      std::source_location where) const {
+  checkCallSite(where, "exchange");
+  return exchangeWith(std::move(outgoing), nullptr);
+}
+
+// a partners' exchange is not collective over all ranks: its number (below) checks it
+std::vector<std::vector<char>> Communicator::exchange(std::vector<std::vector<char>> outgoing,
                                                       const std::vector<int>& partners) const {
+  return exchangeWith(std::move(outgoing), &partners);
+}
+
+std::vector<std::vector<char>> Communicator::exchangeWith(std::vector<std::vector<char>> outgoing,
+                                                          const std::vector<int>* partners) const {
   if (outgoing.size() != static_cast<std::size_t>(size_)) {
     throw Error("Communicator::exchange: one outgoing buffer per rank expected");
   }
@@ -165,8 +189,10 @@ std::vector<std::vector<char>> Communicator::exchange(std::vector<std::vector<ch
 #ifdef SPHCAST_WITH_MPI
   if (!mpi_ || size_ == 1) return incoming;
   const MPI_Comm comm = toComm(handle_);
-  std::vector<int> peers = partners;
-  if (peers.empty()) {
+  std::vector<int> peers;
+  if (partners) {
+    peers = *partners;
+  } else {
     for (int r = 0; r < size_; ++r) peers.push_back(r);
   }
   peers.erase(std::remove(peers.begin(), peers.end(), rank_), peers.end());
@@ -183,7 +209,7 @@ std::vector<std::vector<char>> Communicator::exchange(std::vector<std::vector<ch
     sendCounts[2 * static_cast<std::size_t>(r)] =
         static_cast<std::int64_t>(outgoing[static_cast<std::size_t>(r)].size());
   }
-  if (partners.empty()) {
+  if (!partners) {
     MPI_Alltoall(sendCounts.data(), 2, MPI_INT64_T, receiveCounts.data(), 2, MPI_INT64_T, comm);
   } else {
     std::vector<MPI_Request> requests(2 * peers.size());
@@ -237,9 +263,63 @@ std::vector<std::vector<char>> Communicator::exchange(std::vector<std::vector<ch
   return incoming;
 }
 
-void Communicator::barrier() const {
+void Communicator::barrier(std::source_location where) const {
+  checkCallSite(where, "barrier");
 #ifdef SPHCAST_WITH_MPI
   if (mpi_) MPI_Barrier(toComm(handle_));
+#endif
+}
+
+namespace {
+bool& checkingCallSites() {
+  static bool checking = std::getenv("SPHCAST_CHECK_COLLECTIVES") != nullptr;
+  return checking;
+}
+}  // namespace
+
+void Communicator::checkCallSites(bool on) { checkingCallSites() = on; }
+
+void Communicator::checkCallSite(const std::source_location& where, const char* operation) const {
+#ifdef SPHCAST_WITH_MPI
+  if (!checkingCallSites() || !mpi_ || size_ == 1) return;
+  const MPI_Comm comm = toComm(handle_);
+  static std::map<std::intptr_t, std::int64_t> callsSoFar;
+  const std::int64_t number = ++callsSoFar[handle_];
+  const std::string site = std::string(operation) + " at " + where.file_name() + ":" +
+                           std::to_string(where.line()) + " (" + where.function_name() + ")";
+  const std::int64_t mine[2] = {number, static_cast<std::int64_t>(std::hash<std::string>{}(site))};
+  std::vector<std::int64_t> all(2 * static_cast<std::size_t>(size_));
+  MPI_Allgather(mine, 2, MPI_INT64_T, all.data(), 2, MPI_INT64_T, comm);
+  bool alike = true;
+  for (int r = 0; r < size_; ++r) {
+    alike = alike && all[2 * static_cast<std::size_t>(r)] == mine[0] &&
+            all[2 * static_cast<std::size_t>(r) + 1] == mine[1];
+  }
+  if (alike) return;
+  // every rank sees the same table: all gather the sites and throw alike
+  const int length = static_cast<int>(site.size());
+  std::vector<int> lengths(static_cast<std::size_t>(size_)),
+      offsets(static_cast<std::size_t>(size_));
+  MPI_Allgather(&length, 1, MPI_INT, lengths.data(), 1, MPI_INT, comm);
+  int total = 0;
+  for (int r = 0; r < size_; ++r) {
+    offsets[static_cast<std::size_t>(r)] = total;
+    total += lengths[static_cast<std::size_t>(r)];
+  }
+  std::string sites(static_cast<std::size_t>(total), '\0');
+  MPI_Allgatherv(site.data(), length, MPI_CHAR, sites.data(), lengths.data(), offsets.data(),
+                 MPI_CHAR, comm);
+  std::string message = "the ranks took different paths (SPHCAST_CHECK_COLLECTIVES):";
+  for (int r = 0; r < size_; ++r) {
+    const auto k = static_cast<std::size_t>(r);
+    message +=
+        "\n    rank " + std::to_string(r) + ", collective call " + std::to_string(all[2 * k]) +
+        ": " +
+        sites.substr(static_cast<std::size_t>(offsets[k]), static_cast<std::size_t>(lengths[k]));
+  }
+  throw CollectiveError(message);
+#else
+  (void)where, (void)operation;
 #endif
 }
 

@@ -2,6 +2,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <source_location>
 #include <string>
 #include <vector>
 
@@ -12,6 +13,10 @@ namespace sphcast {
 // (built with SPHCAST_WITH_MPI, the default) it wraps an MPI communicator; without, or in a run
 // without -parallel, it is one rank and every operation is the identity, so the same code runs
 // serial. Collective: every rank of the communicator must make the same calls in the same order.
+// With the environment variable SPHCAST_CHECK_COLLECTIVES set, every collective call first
+// compares its number and its caller's file and line over the ranks, and a rank that took
+// another path is a CollectiveError naming every rank's call (a debugging aid: it costs an
+// all-gather per call).
 class Communicator {
  public:
   // All the ranks mpirun started (MPI_COMM_WORLD); one rank when MPI is not initialised.
@@ -23,32 +28,53 @@ class Communicator {
   int size() const { return size_; }
   bool master() const { return rank_ == 0; }
 
-  double sum(double value) const;
-  std::int64_t sum(std::int64_t value) const;
-  double min(double value) const;
-  double max(double value) const;
-  bool any(bool value) const;
+  // where: the caller, for SPHCAST_CHECK_COLLECTIVES (below); leave it to its default.
+  double sum(double value, std::source_location where = std::source_location::current()) const;
+  std::int64_t sum(std::int64_t value,
+                   std::source_location where = std::source_location::current()) const;
+  double min(double value, std::source_location where = std::source_location::current()) const;
+  double max(double value, std::source_location where = std::source_location::current()) const;
+  bool any(bool value, std::source_location where = std::source_location::current()) const;
   // Element by element over the ranks, in place (one message for many sums).
-  void sum(std::vector<double>& values) const;
-  void sum(std::vector<std::int64_t>& values) const;
-  void min(std::vector<double>& values) const;
-  void max(std::vector<double>& values) const;
+  void sum(std::vector<double>& values,
+           std::source_location where = std::source_location::current()) const;
+  void sum(std::vector<std::int64_t>& values,
+           std::source_location where = std::source_location::current()) const;
+  void min(std::vector<double>& values,
+           std::source_location where = std::source_location::current()) const;
+  void max(std::vector<double>& values,
+           std::source_location where = std::source_location::current()) const;
   // value of every rank, by rank
-  std::vector<std::int64_t> gather(std::int64_t value) const;
+  std::vector<std::int64_t> gather(
+      std::int64_t value, std::source_location where = std::source_location::current()) const;
   // The first non-empty text of the ranks, by rank ("" when all are empty): what one rank
   // found wrong, for every rank to stop with.
-  std::string firstNonEmpty(const std::string& text) const;
+  std::string firstNonEmpty(const std::string& text,
+                            std::source_location where = std::source_location::current()) const;
 
-  // Sends outgoing[r] to rank r and returns what each rank sent here, by rank (outgoing has
-  // size() entries; outgoing[rank()] comes back as it is). partners: the ranks this one may
-  // exchange anything with, the same relation seen from both sides (a rank lists r exactly
-  // when r lists it); empty: every rank (counts by all-to-all, for a rebalance).
+  // Collective: sends outgoing[r] to rank r and returns what each rank sent here, by rank
+  // (outgoing has size() entries; outgoing[rank()] comes back as it is). Every rank with every
+  // rank (the counts by all-to-all: a migration, a rebalance).
+  std::vector<std::vector<char>> exchange(
+      std::vector<std::vector<char>> outgoing,
+      std::source_location where = std::source_location::current()) const;
+  // The same with the partners only: the ranks this one may exchange anything with, the same
+  // relation seen from both sides (a rank lists r exactly when r lists it); an empty list sends
+  // and receives nothing. Every rank still makes the call (the exchanges are numbered).
   std::vector<std::vector<char>> exchange(std::vector<std::vector<char>> outgoing,
-                                          const std::vector<int>& partners = {}) const;
+                                          const std::vector<int>& partners) const;
 
-  void barrier() const;
+  void barrier(std::source_location where = std::source_location::current()) const;
+
+  // Turns the call-site check (SPHCAST_CHECK_COLLECTIVES, above) on or off for every
+  // communicator; collective: every rank at the same point.
+  static void checkCallSites(bool on);
 
  private:
+  void checkCallSite(const std::source_location& where, const char* operation) const;
+  // partners null: all ranks
+  std::vector<std::vector<char>> exchangeWith(std::vector<std::vector<char>> outgoing,
+                                              const std::vector<int>* partners) const;
   Communicator(std::intptr_t handle, bool mpi, int rank, int size)
       : handle_(handle), mpi_(mpi), rank_(rank), size_(size) {}
   std::intptr_t handle_;  // the MPI_Comm (a pointer or an int, by implementation)

@@ -209,6 +209,7 @@ void HaloExchange::checkLayout(const ParticleCloud& cloud) const {
 }
 
 void HaloExchange::refresh(ParticleCloud& cloud, const Communicator& comm) const {
+  if (!built_) return;  // dropped on every rank alike: nothing to refresh until the build
   checkLayout(cloud);
   std::vector<std::vector<char>> outgoing(static_cast<std::size_t>(comm.size()));
   for (int r : partners_) {
@@ -232,6 +233,7 @@ void HaloExchange::refresh(ParticleCloud& cloud, const Communicator& comm) const
 
 void HaloExchange::refresh(ParticleCloud& cloud, const std::vector<std::string>& fields,
                            const Communicator& comm) const {
+  if (!built_) return;  // dropped on every rank alike: nothing to refresh until the build
   checkLayout(cloud);
   std::vector<std::vector<char>> outgoing(static_cast<std::size_t>(comm.size()));
   for (int r : partners_) {
@@ -267,6 +269,7 @@ void HaloExchange::refresh(ParticleCloud& cloud, const std::vector<std::string>&
 
 void HaloExchange::refresh(const ParticleCloud& cloud, void* values, std::size_t bytesPerParticle,
                            const Communicator& comm) const {
+  if (!built_) return;  // dropped on every rank alike: nothing to refresh until the build
   checkLayout(cloud);
   auto* bytes = static_cast<char*>(values);
   std::vector<std::vector<char>> outgoing(static_cast<std::size_t>(comm.size()));

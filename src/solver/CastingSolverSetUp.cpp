@@ -46,7 +46,10 @@ CastingSolver::CastingSolver(const CaseFolder& caseFolder, const Communicator& c
       inletSetup_(readInletSetup(caseFolder, flowSetup_.fluidCloud,
                                  flowSetup_.enabled ? flowSetup_.settings.dimension : 3)),
       writer_(caseFolder, time_.settings().purgeWrite, comm) {
-  if (parallel_) time_.agreeOnChanges([this](bool changed) { return comm_.any(changed); });
+  if (parallel_) {
+    time_.agreeOnChanges([this](bool changed) { return comm_.any(changed); },
+                         [this](const std::string& text) { return comm_.firstNonEmpty(text); });
+  }
   for (const std::string& repaired : repairedWrites_) {
     info() << "Repaired interrupted write: " << repaired << std::endl;
   }

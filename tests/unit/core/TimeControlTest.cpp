@@ -187,6 +187,24 @@ TEST_F(TimeControlTest, ABrokenEditDuringTheRunKeepsThePreviousSettings) {
   EXPECT_EQ(time.settings().endTime, 1.0);
 }
 
+// A parallel run's ranks: one saw the file change, and every rank parses the text one rank
+// read, not its own (a half-saved file read at different moments would part the ranks).
+TEST_F(TimeControlTest, AnEditIsTakenFromTheTextTheRanksShare) {
+  controlDict("endTime 1; deltaT 0.01; writeInterval 1000;");
+  const CaseFolder caseFolder(tmp.root());
+  TimeControl time(caseFolder);
+  std::string seen;
+  time.agreeOnChanges([](bool) { return true; },  // another rank saw it change
+                      [&](const std::string& mine) {
+                        seen = mine;
+                        return header + "endTime 2; deltaT 0.01; writeInterval 1000;";
+                      });
+  EXPECT_TRUE(time.run());
+  EXPECT_NE(seen.find("endTime 1;"), std::string::npos) << seen;  // this rank's own text
+  EXPECT_EQ(time.settings().endTime, 2.0);                        // the shared one's value
+  EXPECT_EQ(time.takeRereadMessage().rfind("Re-read", 0), 0u);
+}
+
 TEST_F(TimeControlTest, AnUnknownKeyNamesTheNearestValidOne) {
   controlDict("endTme 1; deltaT 0.01; writeInterval 10;");
   const CaseFolder caseFolder(tmp.root());

@@ -230,6 +230,13 @@ TEST(ParticleTransferTest, RefreshFollowsTheOwnersAfterTheyMove) {
   EXPECT_TRUE(followed);
   halo.remove(cloud);
   EXPECT_EQ(cloud.size(), halo.ownedCount());
+  // dropped, the halo refreshes nothing until the next build, though particles were added
+  // (a pour's new layer) and no rank exchanges anything
+  cloud.resize(cloud.size() + 1);
+  EXPECT_NO_THROW(halo.refresh(cloud, world));
+  EXPECT_NO_THROW(halo.refresh(cloud, {"U"}, world));
+  EXPECT_EQ(cloud.size(), halo.ownedCount() + 1);
+  cloud.resize(cloud.size() - 1);
   // a refresh of a cloud whose particle count changed since the build is refused
   HaloExchange rebuilt;
   rebuilt.build(cloud, rcb, radius, PeriodicBox(), world);

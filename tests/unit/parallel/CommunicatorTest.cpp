@@ -1,0 +1,63 @@
+// The collectives' safety nets: a rank that takes another path than the others is an error
+// naming every rank's call (with SPHCAST_CHECK_COLLECTIVES), not a hang; an exchange with no
+// partners sends and receives nothing while the others exchange among themselves.
+// Collective: every rank runs every test (under mpirun -np 1, 2 and 4 in CTest).
+#include "parallel/Communicator.h"
+
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+#include "core/Error.h"
+
+namespace sphcast {
+namespace {
+
+TEST(CommunicatorTest, ARankOnAnotherPathIsAnErrorNamingEveryRanksCall) {
+  const Communicator world = Communicator::world();
+  if (world.size() < 2) GTEST_SKIP() << "needs 2 ranks or more";
+  Communicator::checkCallSites(true);
+  EXPECT_EQ(world.sum(1.0), world.size());  // the same call on every rank passes
+  std::string message;
+  try {
+    if (world.master()) {
+      world.sum(1.0);
+    } else {
+      world.max(1.0);
+    }
+  } catch (const CollectiveError& error) {
+    message = error.what();
+  }
+  Communicator::checkCallSites(false);
+  EXPECT_NE(message.find("the ranks took different paths"), std::string::npos) << message;
+  EXPECT_NE(message.find("rank 0, collective call 2: sum at "), std::string::npos) << message;
+  EXPECT_NE(message.find("rank 1, collective call 2: max at "), std::string::npos) << message;
+  EXPECT_NE(message.find("CommunicatorTest.cpp:"), std::string::npos) << message;
+  // unchecked again, and every rank still in step
+  EXPECT_EQ(world.sum(2.0), 2.0 * world.size());
+}
+
+TEST(CommunicatorTest, AnExchangeWithNoPartnersSendsNothing) {
+  const Communicator world = Communicator::world();
+  // ranks 0 and 1 are partners; the others have none
+  std::vector<int> partners;
+  if (world.size() > 1 && world.rank() < 2) partners.push_back(1 - world.rank());
+  std::vector<std::vector<char>> outgoing(static_cast<std::size_t>(world.size()));
+  for (int r = 0; r < world.size(); ++r) {
+    outgoing[static_cast<std::size_t>(r)].assign(3, static_cast<char>('a' + world.rank()));
+  }
+  const auto incoming = world.exchange(outgoing, partners);
+  for (int r = 0; r < world.size(); ++r) {
+    const auto& from = incoming[static_cast<std::size_t>(r)];
+    const bool expected = r == world.rank() || (world.rank() < 2 && r < 2);
+    EXPECT_EQ(from.size(), expected ? 3u : 0u) << "from rank " << r;
+    if (expected) {
+      EXPECT_EQ(from[0], static_cast<char>('a' + r));
+    }
+  }
+  EXPECT_EQ(world.sum(1.0), world.size());  // and no rank was left waiting
+}
+
+}  // namespace
+}  // namespace sphcast
