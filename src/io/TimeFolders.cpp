@@ -10,6 +10,7 @@
 #include "io/PvdIndex.h"
 #include "io/PvtpCloud.h"
 #include "io/VtpCloud.h"
+#include "parallel/ParticleTransfer.h"
 
 namespace fs = std::filesystem;
 
@@ -151,10 +152,9 @@ std::vector<std::string> timeFolderCloudNames(const CaseFolder& caseFolder,
 }
 
 std::vector<ParticleCloud> readTimeFolderClouds(const CaseFolder& caseFolder,
-                                                const std::string& timeName, int piece, int pieces,
-                                                std::vector<bool>* readWhole) {
+                                                const std::string& timeName,
+                                                const Communicator& comm) {
   std::vector<ParticleCloud> clouds;
-  if (readWhole) readWhole->clear();
   for (const fs::path& file : cloudFilesIn(caseFolder.root() / timeName)) {
     const std::string name = file.stem().string();
     if (!clouds.empty() && clouds.back().name() == name) {
@@ -162,10 +162,17 @@ std::vector<ParticleCloud> readTimeFolderClouds(const CaseFolder& caseFolder,
                   ".pvtp (a parallel run's) and " + name +
                   ".vtp (a serial run's): remove the one that is not wanted");
     }
-    const bool pieceByPiece = file.extension() == ".pvtp";
-    clouds.push_back(pieceByPiece ? readCloudPvtp(file, name, piece, pieces)
-                                  : readCloudVtp(file, name));
-    if (readWhole) readWhole->push_back(!pieceByPiece || pieces == 1);
+    const bool pieceByPiece = file.extension() == ".pvtp" && readPvtpPieces(file).size() > 1;
+    if (pieceByPiece) {
+      clouds.push_back(readCloudPvtp(file, name, comm.rank(), comm.size()));
+    } else {
+      clouds.push_back(readOnMaster(
+          [&] {
+            return file.extension() == ".pvtp" ? readCloudPvtp(file, name, 0, 1)
+                                               : readCloudVtp(file, name);
+          },
+          comm));
+    }
   }
   return clouds;
 }

@@ -45,13 +45,13 @@ std::vector<std::string> timeFolderCloudNames(const CaseFolder& caseFolder,
                                               const std::string& timeName);
 
 // Every cloud stored in a time folder (a .vtp each, or a parallel run's .pvtp with its pieces),
-// sorted by name. Rank `piece` of `pieces` reads pieces piece, piece + pieces, ... of each
-// .pvtp, and a .vtp whole (readWhole, when given, says which: the decomposition then keeps
-// each rank's part of those, and sends the others' particles to their ranks). A serial tool
-// reads everything.
+// sorted by name. Collective: rank r of comm's N reads pieces r, r + N, ... of each .pvtp of
+// several pieces; a .vtp (a serial run's, setCastFields') or a .pvtp of one piece rank 0 alone
+// reads, whole, and the other ranks get the cloud's fields without particles (a start of 10^8
+// particles is read once, not once per rank; the decomposition then sends every particle to
+// its rank). A serial tool reads everything.
 std::vector<ParticleCloud> readTimeFolderClouds(const CaseFolder& caseFolder,
-                                                const std::string& timeName, int piece = 0,
-                                                int pieces = 1,
-                                                std::vector<bool>* readWhole = nullptr);
+                                                const std::string& timeName,
+                                                const Communicator& comm = Communicator::self());
 
 }  // namespace sphcast

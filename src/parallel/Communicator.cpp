@@ -10,6 +10,7 @@
 #include <map>
 #include <string>
 #include <type_traits>
+#include <utility>
 
 #include "core/CommandLine.h"
 #include "core/Error.h"
@@ -167,6 +168,24 @@ std::string Communicator::firstNonEmpty(const std::string& text, std::source_loc
   return shared;
 }
 
+std::string Communicator::broadcast(const std::string& text, std::source_location where) const {
+  checkCallSite(where, "broadcast");
+  if (!mpi_ || size_ == 1) return text;
+#ifdef SPHCAST_WITH_MPI
+  std::int64_t length = static_cast<std::int64_t>(text.size());
+  MPI_Bcast(&length, 1, MPI_INT64_T, 0, toComm(handle_));
+  std::string shared = master() ? text : std::string(static_cast<std::size_t>(length), '\0');
+  constexpr std::int64_t chunk = std::int64_t(1) << 30;  // an int count of bytes per message
+  for (std::int64_t offset = 0; offset < length; offset += chunk) {
+    MPI_Bcast(shared.data() + offset, static_cast<int>(std::min(chunk, length - offset)), MPI_CHAR,
+              0, toComm(handle_));
+  }
+  return shared;
+#else
+  return text;
+#endif
+}
+
 std::vector<std::vector<char>> Communicator::exchange(std::vector<std::vector<char>> outgoing,
                                                       std::source_location where) const {
   checkCallSite(where, "exchange");
@@ -277,7 +296,7 @@ bool& checkingCallSites() {
 }
 }  // namespace
 
-void Communicator::checkCallSites(bool on) { checkingCallSites() = on; }
+bool Communicator::checkCallSites(bool on) { return std::exchange(checkingCallSites(), on); }
 
 void Communicator::checkCallSite(const std::source_location& where, const char* operation) const {
 #ifdef SPHCAST_WITH_MPI

@@ -52,6 +52,10 @@ class Communicator {
   std::string firstNonEmpty(const std::string& text,
                             std::source_location where = std::source_location::current()) const;
 
+  // Rank 0's text, on every rank.
+  std::string broadcast(const std::string& text,
+                        std::source_location where = std::source_location::current()) const;
+
   // Collective: sends outgoing[r] to rank r and returns what each rank sent here, by rank
   // (outgoing has size() entries; outgoing[rank()] comes back as it is). Every rank with every
   // rank (the counts by all-to-all: a migration, a rebalance).
@@ -67,8 +71,8 @@ class Communicator {
   void barrier(std::source_location where = std::source_location::current()) const;
 
   // Turns the call-site check (SPHCAST_CHECK_COLLECTIVES, above) on or off for every
-  // communicator; collective: every rank at the same point.
-  static void checkCallSites(bool on);
+  // communicator and returns whether it was on; collective: every rank at the same point.
+  static bool checkCallSites(bool on);
 
  private:
   void checkCallSite(const std::source_location& where, const char* operation) const;

@@ -33,12 +33,12 @@ void DomainDecomposition::distribute(std::vector<Cloud> clouds) {
   }
 }
 
-// The bisection of every cloud's owned particles (a cloud every rank holds whole counts once).
+// The bisection of every cloud's owned particles, wherever they are (at the start a serial
+// file's are all on rank 0).
 void DomainDecomposition::decompose() {
   std::vector<Vector> points;
   std::vector<std::int64_t> weights;
   for (const Cloud& entry : clouds_) {
-    if (entry.wholeOnEveryRank && !comm_.master()) continue;
     const ParticleCloud& cloud = *entry.cloud;
     const auto& x = cloud.positions();
     points.insert(points.end(), x.begin(), x.begin() + static_cast<long>(cloud.ownedSize()));
@@ -48,22 +48,9 @@ void DomainDecomposition::decompose() {
 }
 
 void DomainDecomposition::redistribute(std::size_t c) {
-  Cloud& entry = clouds_[c];
-  ParticleCloud& cloud = *entry.cloud;
+  ParticleCloud& cloud = *clouds_[c].cloud;
   halos_[c].remove(cloud);
-  if (entry.wholeOnEveryRank) {  // every rank keeps its own; nothing to send
-    std::vector<std::size_t> order, others;
-    for (std::size_t i = 0; i < cloud.size(); ++i) {
-      (bisection_.owner(cloud.positions()[i]) == comm_.rank() ? order : others).push_back(i);
-    }
-    const std::size_t kept = order.size();
-    order.insert(order.end(), others.begin(), others.end());
-    cloud.reorder(order);
-    cloud.resize(kept);
-    entry.wholeOnEveryRank = false;
-  } else {
-    migrateParticles(cloud, bisection_, comm_);
-  }
+  migrateParticles(cloud, bisection_, comm_);
   // neighbours close in memory, as the serial search's reorder leaves them
   if (cloud.size() > 1) {
     CellGrid grid(static_cast<Real>(haloRadius_), periodic_);

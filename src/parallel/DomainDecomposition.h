@@ -25,15 +25,15 @@ class DomainDecomposition : public HaloSync {
     ParticleCloud* cloud = nullptr;
     bool moves = false;             // migrates at every rebuild (the metal); else at re-balances
     std::int64_t weight = 1;        // one particle's share of a rank's work
-    bool wholeOnEveryRank = false;  // read whole by every rank (a serial file): kept in part
   };
 
   // haloRadius: the neighbour search's reach (support radius plus skin).
   DomainDecomposition(const Communicator& comm, DecompositionSettings settings, double haloRadius,
                       const PeriodicBox& periodic, int dimension);
 
-  // Collective: cuts space by the particles of every cloud and leaves each rank its own, in
-  // cell order, with their halos. The clouds must stay where they are while this lives.
+  // Collective: cuts space by the particles of every cloud, wherever they are (a serial start's
+  // all on rank 0, a restart's as its pieces fell), and leaves each rank its own, in cell
+  // order, with their halos. The clouds must stay where they are while this lives.
   void distribute(std::vector<Cloud> clouds);
 
   // Collective: the search of a step. The moving clouds' halos are refreshed; then, when

@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <cstring>
+#include <optional>
 
 #include "core/Error.h"
 
@@ -120,6 +121,109 @@ void unpackParticles(const std::vector<char>& buffer, ParticleCloud& cloud) {
   cloud.resize(start + static_cast<std::size_t>(header.count));
   readParticles(in, cloud, start, static_cast<std::size_t>(header.count));
   if (!in.atEnd()) throw Error("particle transfer: a message is longer than its particles");
+}
+
+namespace {
+
+void putText(std::string& bytes, const std::string& text) {
+  const auto length = static_cast<std::int64_t>(text.size());
+  bytes.append(reinterpret_cast<const char*>(&length), sizeof length);
+  bytes += text;
+}
+
+// Reads what putText and memcpy'd values wrote; throws when it runs short.
+class TextReader {
+ public:
+  explicit TextReader(const std::string& bytes) : bytes_(bytes) {}
+  template <class T>
+  T get() {
+    T value;
+    need(sizeof(T));
+    std::memcpy(&value, bytes_.data() + offset_, sizeof(T));
+    offset_ += sizeof(T);
+    return value;
+  }
+  std::string text() {
+    const auto length = get<std::int64_t>();
+    if (length < 0) throw Error("particle transfer: a corrupt cloud layout");
+    need(static_cast<std::size_t>(length));
+    std::string value = bytes_.substr(offset_, static_cast<std::size_t>(length));
+    offset_ += static_cast<std::size_t>(length);
+    return value;
+  }
+  bool atEnd() const { return offset_ == bytes_.size(); }
+
+ private:
+  void need(std::size_t count) const {
+    if (offset_ + count > bytes_.size()) throw Error("particle transfer: a cloud layout ran short");
+  }
+  const std::string& bytes_;
+  std::size_t offset_ = 0;
+};
+
+template <class Fields>
+void putNames(std::string& bytes, const Fields& fields) {
+  const auto count = static_cast<std::int64_t>(fields.size());
+  bytes.append(reinterpret_cast<const char*>(&count), sizeof count);
+  for (const auto& [name, field] : fields) putText(bytes, name);
+}
+
+}  // namespace
+
+std::string packLayout(const ParticleCloud& cloud) {
+  std::string bytes;
+  putText(bytes, cloud.name());
+  const auto attributes = static_cast<std::int64_t>(cloud.attributes().size());
+  bytes.append(reinterpret_cast<const char*>(&attributes), sizeof attributes);
+  for (const auto& [name, value] : cloud.attributes()) {
+    putText(bytes, name);
+    bytes.append(reinterpret_cast<const char*>(&value), sizeof value);
+  }
+  putNames(bytes, cloud.scalarFields());
+  putNames(bytes, cloud.vectorFields());
+  putNames(bytes, cloud.idFields());
+  return bytes;
+}
+
+ParticleCloud unpackLayout(const std::string& bytes) {
+  TextReader in(bytes);
+  ParticleCloud cloud(in.text());
+  const auto attributes = in.get<std::int64_t>();
+  for (std::int64_t k = 0; k < attributes; ++k) {
+    std::string name = in.text();
+    cloud.attributes()[name] = in.get<double>();
+  }
+  for (std::int64_t k = 0, count = in.get<std::int64_t>(); k < count; ++k) {
+    cloud.addScalarField(in.text());
+  }
+  for (std::int64_t k = 0, count = in.get<std::int64_t>(); k < count; ++k) {
+    cloud.addVectorField(in.text());
+  }
+  for (std::int64_t k = 0, count = in.get<std::int64_t>(); k < count; ++k) {
+    cloud.addIdField(in.text());
+  }
+  if (!in.atEnd()) throw Error("particle transfer: a cloud layout is longer than its fields");
+  return cloud;
+}
+
+ParticleCloud readOnMaster(const std::function<ParticleCloud()>& read, const Communicator& comm) {
+  if (comm.size() == 1) return read();
+  std::optional<ParticleCloud> cloud;
+  std::string message;  // rank 0's: 'c' and the cloud's layout, or 'e' and its error
+  if (comm.master()) {
+    try {
+      cloud = read();
+      message = 'c' + packLayout(*cloud);
+    } catch (const std::exception& error) {
+      message = std::string("e") + error.what();
+    }
+  }
+  message = comm.broadcast(message);
+  if (message.empty() || message.front() != 'c') {
+    throw CollectiveError(message.empty() ? "rank 0 read no cloud" : message.substr(1));
+  }
+  if (cloud) return std::move(*cloud);
+  return unpackLayout(message.substr(1));
 }
 
 std::size_t migrateParticles(ParticleCloud& cloud, const RecursiveBisection& decomposition,

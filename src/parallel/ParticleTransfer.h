@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstddef>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -20,6 +21,17 @@ void packParticles(const ParticleCloud& cloud, const std::vector<std::size_t>& i
                    std::vector<char>& buffer);
 // Appends the particles of a buffer packParticles wrote to the cloud.
 void unpackParticles(const std::vector<char>& buffer, ParticleCloud& cloud);
+
+// A cloud without its particles: its name, attributes and fields, as bytes, and back (an empty
+// cloud ready to receive the particles of the packed one).
+std::string packLayout(const ParticleCloud& cloud);
+ParticleCloud unpackLayout(const std::string& bytes);
+
+// Collective: the cloud `read` returns on rank 0, whole there; every other rank gets an empty
+// cloud with its name, attributes and fields and does not read (a start of 10^8 particles is
+// read once, not once per rank; the decomposition then sends each particle to its rank). An
+// error of rank 0's read is a CollectiveError with its message on every rank.
+ParticleCloud readOnMaster(const std::function<ParticleCloud()>& read, const Communicator& comm);
 
 // Collective: sends every particle of cloud to the rank whose subdomain holds its position, and
 // appends what the other ranks send (those that stay keep their order, the arrivals follow by

@@ -145,7 +145,6 @@ class CastingSolver {
   BodySetup bodySetup_;
   InletSetup inletSetup_;
   std::vector<ParticleCloud> clouds_;        // of the time folders: read, stepped, written
-  std::vector<bool> cloudReadWhole_;         // by every rank (a serial time folder's .vtp)
   std::vector<ParticleCloud> staticClouds_;  // of constant/particles: read only
   // The cell grids and pair lists of every model, built once per step (with flow or heat).
   std::unique_ptr<Neighbourhood> neighbourhood_;

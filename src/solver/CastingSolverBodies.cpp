@@ -9,6 +9,7 @@
 
 #include "core/Error.h"
 #include "io/VtpCloud.h"
+#include "parallel/ParticleTransfer.h"
 #include "solver/CastingSolver.h"
 
 namespace sphcast {
@@ -37,7 +38,7 @@ void CastingSolver::loadBodyClouds() {
                                     "' is neither in time " + time_.startTimeName() +
                                     " nor in constant/particles (run particleizeMold)");
     }
-    clouds_.push_back(readCloudVtp(file, body.cloud));
+    clouds_.push_back(readOnMaster([&] { return readCloudVtp(file, body.cloud); }, comm_));
     info() << "Cloud " << body.cloud << ": from constant/particles (a rigid body: written from "
            << "now on)\n";
   }

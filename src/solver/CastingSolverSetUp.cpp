@@ -13,6 +13,7 @@
 #include "core/dictionary/Dictionary.h"
 #include "io/VtpCloud.h"
 #include "parallel/DecompositionSettings.h"
+#include "parallel/ParticleTransfer.h"
 #include "sph/CorrectedGradient.h"
 
 namespace sphcast {
@@ -55,8 +56,7 @@ CastingSolver::CastingSolver(const CaseFolder& caseFolder, const Communicator& c
   }
   info() << "Starting from time " << time_.startTimeName() << " (index " << time_.timeIndex()
          << ")\n";
-  clouds_ = readTimeFolderClouds(caseFolder_, time_.startTimeName(), comm_.rank(), comm_.size(),
-                                 &cloudReadWhole_);
+  clouds_ = readTimeFolderClouds(caseFolder_, time_.startTimeName(), comm_);
   if (clouds_.empty()) {
     throw Error("time folder " + (caseFolder_.root() / time_.startTimeName()).string() +
                 " holds no cloud (.vtp) to run");
@@ -152,7 +152,7 @@ void CastingSolver::loadHeatClouds() {
                                                      time_.startTimeName() + " (which holds (" +
                                                      present + " )) nor in constant/particles");
     }
-    clouds_.push_back(readCloudVtp(file, name));
+    clouds_.push_back(readOnMaster([&] { return readCloudVtp(file, name); }, comm_));
     info() << "Cloud " << name << ": from constant/particles (carries heat: written from now on)\n";
   }
 }
@@ -189,7 +189,7 @@ void CastingSolver::setUpNeighbourhood() {
         throw Error("wall cloud '" + wallName + "' is neither in time " + time_.startTimeName() +
                     " nor in constant/particles (run particleizeMold)");
       }
-      staticClouds_.push_back(readCloudVtp(file, wallName));
+      staticClouds_.push_back(readOnMaster([&] { return readCloudVtp(file, wallName); }, comm_));
     }
     for (const ParticleCloud& wall : staticClouds_) wallClouds_.push_back(&wall);
     for (const ParticleCloud* wall : wallClouds_) neighbourhood_->addFixedCloud(*wall);
@@ -240,12 +240,6 @@ void CastingSolver::decompose() {
       comm_, decomposeParDict,
       static_cast<double>(neighbourhood_->radius() + neighbourhood_->skin()), settings.periodic,
       settings.dimension);
-  auto readWhole = [&](const ParticleCloud& cloud) {
-    for (std::size_t c = 0; c < clouds_.size() && c < cloudReadWhole_.size(); ++c) {
-      if (&clouds_[c] == &cloud) return static_cast<bool>(cloudReadWhole_[c]);
-    }
-    return true;  // constant/particles (a heat cloud's too): every rank read it
-  };
   auto writable = [&](const ParticleCloud* cloud) -> ParticleCloud* {
     for (ParticleCloud& c : clouds_) {
       if (&c == cloud) return &c;
@@ -262,12 +256,12 @@ void CastingSolver::decompose() {
   // split it (14.5 and 14.7 s).
   constexpr std::int64_t fluidWeight = 30, wallWeight = 1;
   ParticleCloud& fluid = cloudNamed(flowSetup_.fluidCloud);
-  std::vector<DomainDecomposition::Cloud> decomposed{{&fluid, true, fluidWeight, readWhole(fluid)}};
+  std::vector<DomainDecomposition::Cloud> decomposed{{&fluid, true, fluidWeight}};
   // a moving mold's particles migrate as the fluid's do
   for (const ParticleCloud* wall : wallClouds_) {
     bool moving = false;
     for (const RigidBodySettings& body : bodySetup_.bodies) moving |= body.cloud == wall->name();
-    decomposed.push_back({writable(wall), moving, wallWeight, readWhole(*wall)});
+    decomposed.push_back({writable(wall), moving, wallWeight});
   }
   decomposition_->distribute(decomposed);
   neighbourhood_->setHaloSync(decomposition_.get());

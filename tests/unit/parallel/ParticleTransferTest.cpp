@@ -244,6 +244,61 @@ TEST(ParticleTransferTest, RefreshFollowsTheOwnersAfterTheyMove) {
   EXPECT_THROW(rebuilt.refresh(cloud, world), Error);
 }
 
+TEST(ParticleTransferTest, ALayoutGivesTheCloudsNameAttributesAndFieldsWithoutParticles) {
+  ParticleCloud cloud = block(0, 1);
+  cloud.attributes()["spacing"] = 0.1 / 3;  // not a round number in decimal
+  cloud.attributes()["internalEnergyAtStart"] = -1.5e7;
+  const ParticleCloud empty = unpackLayout(packLayout(cloud));
+  EXPECT_EQ(empty.name(), "metal");
+  EXPECT_EQ(empty.size(), 0u);
+  EXPECT_EQ(empty.attributes(), cloud.attributes());  // bit for bit
+  EXPECT_TRUE(empty.hasScalarField("mass") && empty.hasScalarField("rho"));
+  EXPECT_TRUE(empty.hasVectorField("U") && empty.hasIdField("id"));
+  EXPECT_EQ(empty.scalarFields().size(), 2u);
+  // it takes the packed cloud's particles (the same fields)
+  ParticleCloud receiver = unpackLayout(packLayout(cloud));
+  std::vector<char> buffer;
+  packParticles(cloud, {0, 7}, buffer);
+  unpackParticles(buffer, receiver);
+  EXPECT_EQ(receiver.idField("id")[1], 7);
+  std::string truncated = packLayout(cloud);
+  truncated.pop_back();
+  EXPECT_THROW(unpackLayout(truncated), Error);
+}
+
+// A serial start: rank 0 alone reads the cloud, the others get its fields, and the migration
+// leaves every particle on its subdomain's rank, none lost; rank 0's read error is everyone's.
+TEST(ParticleTransferTest, ACloudReadOnRankZeroReachesEveryRankWhole) {
+  const Communicator world = Communicator::world();
+  int reads = 0;
+  ParticleCloud cloud = readOnMaster(
+      [&] {
+        ++reads;
+        return block(0, 1);
+      },
+      world);
+  EXPECT_EQ(reads, world.master() ? 1 : 0);
+  EXPECT_EQ(cloud.size(), world.master() ? 4608u : 0u);
+  EXPECT_TRUE(cloud.hasVectorField("U") && cloud.hasIdField("id"));
+  const auto rcb = decompose(cloud, world);
+  migrateParticles(cloud, rcb, world);
+  EXPECT_EQ(world.sum(static_cast<std::int64_t>(cloud.size())), 4608);
+  double idSum = 0;
+  bool home = true;
+  for (std::size_t i = 0; i < cloud.size(); ++i) {
+    idSum += static_cast<double>(cloud.idField("id")[i]);
+    home = home && rcb.owner(cloud.positions()[i]) == world.rank();
+  }
+  EXPECT_EQ(world.sum(idSum), 4607.0 * 4608.0 / 2);
+  EXPECT_TRUE(home);
+  try {
+    readOnMaster([]() -> ParticleCloud { throw Error("metal.vtp: no such file"); }, world);
+    FAIL() << "no error";
+  } catch (const Error& error) {  // on 1 rank the read's own; on more a CollectiveError
+    EXPECT_EQ(std::string(error.what()), "metal.vtp: no such file");
+  }
+}
+
 TEST(ParticleTransferTest, AMessageForOtherFieldsIsAnError) {
   ParticleCloud sender("metal"), receiver("metal");
   sender.resize(3);
