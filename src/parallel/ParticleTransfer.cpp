@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <cstring>
 #include <optional>
+#include <string_view>
 
 #include "core/Error.h"
 
@@ -30,8 +31,9 @@ std::uint64_t layoutHash(const ParticleCloud& cloud) {
   return hash;
 }
 
-template <class T>
-void put(std::vector<char>& buffer, const T& value) {
+// buffer: a std::vector<char> (particles) or a std::string (a layout)
+template <class Buffer, class T>
+void put(Buffer& buffer, const T& value) {
   const std::size_t at = buffer.size();
   buffer.resize(at + sizeof(T));
   std::memcpy(buffer.data() + at, &value, sizeof(T));
@@ -51,7 +53,8 @@ void putField(std::vector<char>& buffer, const std::vector<T>& field,
 // Reads the buffer from `offset` on; throws when it runs short (a corrupt message).
 class Reader {
  public:
-  explicit Reader(const std::vector<char>& buffer) : buffer_(buffer) {}
+  explicit Reader(const std::vector<char>& buffer) : buffer_(buffer.data(), buffer.size()) {}
+  explicit Reader(std::string_view buffer) : buffer_(buffer) {}
   template <class T>
   T get() {
     T value;
@@ -68,13 +71,22 @@ class Reader {
     }
     offset_ += count * sizeof(T);
   }
+  // a text putText wrote: its length, then its characters
+  std::string text() {
+    const auto length = get<std::int64_t>();
+    if (length < 0) throw Error("particle transfer: a corrupt message");
+    need(static_cast<std::size_t>(length));
+    std::string value(buffer_.substr(offset_, static_cast<std::size_t>(length)));
+    offset_ += static_cast<std::size_t>(length);
+    return value;
+  }
   bool atEnd() const { return offset_ == buffer_.size(); }
 
  private:
   void need(std::size_t bytes) const {
     if (offset_ + bytes > buffer_.size()) throw Error("particle transfer: a message ran short");
   }
-  const std::vector<char>& buffer_;
+  std::string_view buffer_;
   std::size_t offset_ = 0;
 };
 
@@ -126,45 +138,13 @@ void unpackParticles(const std::vector<char>& buffer, ParticleCloud& cloud) {
 namespace {
 
 void putText(std::string& bytes, const std::string& text) {
-  const auto length = static_cast<std::int64_t>(text.size());
-  bytes.append(reinterpret_cast<const char*>(&length), sizeof length);
+  put(bytes, static_cast<std::int64_t>(text.size()));
   bytes += text;
 }
 
-// Reads what putText and memcpy'd values wrote; throws when it runs short.
-class TextReader {
- public:
-  explicit TextReader(const std::string& bytes) : bytes_(bytes) {}
-  template <class T>
-  T get() {
-    T value;
-    need(sizeof(T));
-    std::memcpy(&value, bytes_.data() + offset_, sizeof(T));
-    offset_ += sizeof(T);
-    return value;
-  }
-  std::string text() {
-    const auto length = get<std::int64_t>();
-    if (length < 0) throw Error("particle transfer: a corrupt cloud layout");
-    need(static_cast<std::size_t>(length));
-    std::string value = bytes_.substr(offset_, static_cast<std::size_t>(length));
-    offset_ += static_cast<std::size_t>(length);
-    return value;
-  }
-  bool atEnd() const { return offset_ == bytes_.size(); }
-
- private:
-  void need(std::size_t count) const {
-    if (offset_ + count > bytes_.size()) throw Error("particle transfer: a cloud layout ran short");
-  }
-  const std::string& bytes_;
-  std::size_t offset_ = 0;
-};
-
 template <class Fields>
 void putNames(std::string& bytes, const Fields& fields) {
-  const auto count = static_cast<std::int64_t>(fields.size());
-  bytes.append(reinterpret_cast<const char*>(&count), sizeof count);
+  put(bytes, static_cast<std::int64_t>(fields.size()));
   for (const auto& [name, field] : fields) putText(bytes, name);
 }
 
@@ -173,11 +153,10 @@ void putNames(std::string& bytes, const Fields& fields) {
 std::string packLayout(const ParticleCloud& cloud) {
   std::string bytes;
   putText(bytes, cloud.name());
-  const auto attributes = static_cast<std::int64_t>(cloud.attributes().size());
-  bytes.append(reinterpret_cast<const char*>(&attributes), sizeof attributes);
+  put(bytes, static_cast<std::int64_t>(cloud.attributes().size()));
   for (const auto& [name, value] : cloud.attributes()) {
     putText(bytes, name);
-    bytes.append(reinterpret_cast<const char*>(&value), sizeof value);
+    put(bytes, value);
   }
   putNames(bytes, cloud.scalarFields());
   putNames(bytes, cloud.vectorFields());
@@ -186,7 +165,7 @@ std::string packLayout(const ParticleCloud& cloud) {
 }
 
 ParticleCloud unpackLayout(const std::string& bytes) {
-  TextReader in(bytes);
+  Reader in(bytes);
   ParticleCloud cloud(in.text());
   const auto attributes = in.get<std::int64_t>();
   for (std::int64_t k = 0; k < attributes; ++k) {
