@@ -192,9 +192,14 @@ std::vector<std::vector<char>> Communicator::exchange(std::vector<std::vector<ch
   return exchangeWith(std::move(outgoing), nullptr);
 }
 
-// a partners' exchange is not collective over all ranks: its number (below) checks it
+// A partners' exchange sends to its partners only, but every rank makes the call: its number
+// (below) is checked with each partner, and its call site with every rank like a collective's
+// (a rank that skipped one would otherwise wait in the next collective while its partner waits
+// for its messages).
 std::vector<std::vector<char>> Communicator::exchange(std::vector<std::vector<char>> outgoing,
-                                                      const std::vector<int>& partners) const {
+                                                      const std::vector<int>& partners,
+                                                      std::source_location where) const {
+  checkCallSite(where, "exchange with partners");
   return exchangeWith(std::move(outgoing), &partners);
 }
 

@@ -64,9 +64,11 @@ class Communicator {
       std::source_location where = std::source_location::current()) const;
   // The same with the partners only: the ranks this one may exchange anything with, the same
   // relation seen from both sides (a rank lists r exactly when r lists it); an empty list sends
-  // and receives nothing. Every rank still makes the call (the exchanges are numbered).
-  std::vector<std::vector<char>> exchange(std::vector<std::vector<char>> outgoing,
-                                          const std::vector<int>& partners) const;
+  // and receives nothing. Every rank still makes the call: the exchanges are numbered, and the
+  // call-site check compares `where` over every rank as for the collectives.
+  std::vector<std::vector<char>> exchange(
+      std::vector<std::vector<char>> outgoing, const std::vector<int>& partners,
+      std::source_location where = std::source_location::current()) const;
 
   void barrier(std::source_location where = std::source_location::current()) const;
 

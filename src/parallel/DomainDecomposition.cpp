@@ -114,12 +114,13 @@ std::size_t DomainDecomposition::indexOf(const ParticleCloud& cloud) const {
 }
 
 void DomainDecomposition::refresh(const ParticleCloud& cloud, void* values,
-                                  std::size_t bytesPerParticle) {
-  halos_[indexOf(cloud)].refresh(cloud, values, bytesPerParticle, comm_);
+                                  std::size_t bytesPerParticle, const std::source_location& where) {
+  halos_[indexOf(cloud)].refresh(cloud, values, bytesPerParticle, comm_, where);
 }
 
-void DomainDecomposition::refresh(ParticleCloud& cloud, const std::vector<std::string>& fields) {
-  halos_[indexOf(cloud)].refresh(cloud, fields, comm_);
+void DomainDecomposition::refresh(ParticleCloud& cloud, const std::vector<std::string>& fields,
+                                  const std::source_location& where) {
+  halos_[indexOf(cloud)].refresh(cloud, fields, comm_, where);
 }
 
 std::string DomainDecomposition::describe() const {

@@ -47,8 +47,10 @@ class DomainDecomposition : public HaloSync {
   // new layer); the next update() rebuilds.
   void dropHalo(ParticleCloud& cloud);
 
-  void refresh(const ParticleCloud& cloud, void* values, std::size_t bytesPerParticle) override;
-  void refresh(ParticleCloud& cloud, const std::vector<std::string>& fields) override;
+  void refresh(const ParticleCloud& cloud, void* values, std::size_t bytesPerParticle,
+               const std::source_location& where) override;
+  void refresh(ParticleCloud& cloud, const std::vector<std::string>& fields,
+               const std::source_location& where) override;
 
   const Communicator& communicator() const { return comm_; }
   const RecursiveBisection& bisection() const { return bisection_; }

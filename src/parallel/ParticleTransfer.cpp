@@ -315,7 +315,7 @@ void HaloExchange::refresh(ParticleCloud& cloud, const Communicator& comm) const
 }
 
 void HaloExchange::refresh(ParticleCloud& cloud, const std::vector<std::string>& fields,
-                           const Communicator& comm) const {
+                           const Communicator& comm, std::source_location where) const {
   if (!built_) return;  // dropped on every rank alike: nothing to refresh until the build
   checkLayout(cloud);
   std::vector<std::vector<char>> outgoing(static_cast<std::size_t>(comm.size()));
@@ -332,7 +332,7 @@ void HaloExchange::refresh(ParticleCloud& cloud, const std::vector<std::string>&
       }
     }
   }
-  const auto incoming = comm.exchange(std::move(outgoing), partners_);
+  const auto incoming = comm.exchange(std::move(outgoing), partners_, where);
   for (int r : partners_) {
     Reader in(incoming[static_cast<std::size_t>(r)]);
     const std::size_t start = haloStart_[static_cast<std::size_t>(r)];
@@ -351,7 +351,7 @@ void HaloExchange::refresh(ParticleCloud& cloud, const std::vector<std::string>&
 }
 
 void HaloExchange::refresh(const ParticleCloud& cloud, void* values, std::size_t bytesPerParticle,
-                           const Communicator& comm) const {
+                           const Communicator& comm, std::source_location where) const {
   if (!built_) return;  // dropped on every rank alike: nothing to refresh until the build
   checkLayout(cloud);
   auto* bytes = static_cast<char*>(values);
@@ -365,7 +365,7 @@ void HaloExchange::refresh(const ParticleCloud& cloud, void* values, std::size_t
                   bytesPerParticle);
     }
   }
-  const auto incoming = comm.exchange(std::move(outgoing), partners_);
+  const auto incoming = comm.exchange(std::move(outgoing), partners_, where);
   for (int r : partners_) {
     const auto& buffer = incoming[static_cast<std::size_t>(r)];
     if (buffer.size() != haloSize_[static_cast<std::size_t>(r)] * bytesPerParticle) {

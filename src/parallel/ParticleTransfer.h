@@ -2,6 +2,7 @@
 
 #include <cstddef>
 #include <functional>
+#include <source_location>
 #include <string>
 #include <vector>
 
@@ -54,11 +55,13 @@ class HaloExchange {
   void refresh(ParticleCloud& cloud, const Communicator& comm) const;
   // Collective: overwrites the named scalar and vector fields only ("position": the positions).
   void refresh(ParticleCloud& cloud, const std::vector<std::string>& fields,
-               const Communicator& comm) const;
+               const Communicator& comm,
+               std::source_location where = std::source_location::current()) const;
   // Collective: overwrites the halo's entries of an array indexed like the cloud's particles
   // (a model's own per-particle values, bytesPerParticle each) with their owners'.
   void refresh(const ParticleCloud& cloud, void* values, std::size_t bytesPerParticle,
-               const Communicator& comm) const;
+               const Communicator& comm,
+               std::source_location where = std::source_location::current()) const;
   // Drops the halo (before a migration, a write or a count); the cloud then holds its owned
   // particles only, until the next build. Refreshes do nothing until then (every rank's halo
   // must be dropped alike), and particles may be added.

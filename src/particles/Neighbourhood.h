@@ -3,6 +3,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <memory>
+#include <source_location>
 #include <string>
 #include <vector>
 
@@ -18,10 +19,12 @@ class HaloSync {
  public:
   virtual ~HaloSync() = default;
   // Collective: the halo's entries of `values` (indexed like the cloud's particles) from their
-  // owners.
-  virtual void refresh(const ParticleCloud& cloud, void* values, std::size_t bytesPerParticle) = 0;
+  // owners. `where`: the model's call, which the call-site check compares over the ranks.
+  virtual void refresh(const ParticleCloud& cloud, void* values, std::size_t bytesPerParticle,
+                       const std::source_location& where) = 0;
   // Collective: the halo's entries of the named fields of the cloud from their owners.
-  virtual void refresh(ParticleCloud& cloud, const std::vector<std::string>& fields) = 0;
+  virtual void refresh(ParticleCloud& cloud, const std::vector<std::string>& fields,
+                       const std::source_location& where) = 0;
 };
 
 // How a cloud is stored along the grid after a search.
@@ -89,11 +92,13 @@ class Neighbourhood {
   bool decomposed() const { return haloSync_ != nullptr; }
   // (values: plain values, as Real, Vector or an Eigen matrix, one per particle of the cloud)
   template <class T>
-  void syncHalo(const ParticleCloud& cloud, std::vector<T>& values) const {
-    if (haloSync_) haloSync_->refresh(cloud, values.data(), sizeof(T));
+  void syncHalo(const ParticleCloud& cloud, std::vector<T>& values,
+                std::source_location where = std::source_location::current()) const {
+    if (haloSync_) haloSync_->refresh(cloud, values.data(), sizeof(T), where);
   }
-  void syncHalo(ParticleCloud& cloud, const std::vector<std::string>& fields) const {
-    if (haloSync_) haloSync_->refresh(cloud, fields);
+  void syncHalo(ParticleCloud& cloud, const std::vector<std::string>& fields,
+                std::source_location where = std::source_location::current()) const {
+    if (haloSync_) haloSync_->refresh(cloud, fields, where);
   }
 
   // The list requested for (a, b), as of the last update(); throws Error if never requested.

@@ -184,11 +184,13 @@ void WeaklyCompressibleFlow::computeRatesFor() {
   // melt moving against them would change. One hop is not enough: the melt feels the pressure of
   // the frozen particles within h, and theirs depends on their own frozen neighbours (measured:
   // with one hop a pocket of melt in frozen metal settled 0.7 dx lower, its particles to 0.44 dx).
-  const Real* frozen =
-      fluid_.hasScalarField("frozen") ? fluid_.scalarField("frozen").data() : nullptr;
+  // (decided by the field, not by its storage: a rank that has held no metal yet has none, and
+  // every rank must take part in markFrozenNearMelt's halo refresh)
+  const bool solidifies = fluid_.hasScalarField("frozen");
+  const Real* frozen = solidifies ? fluid_.scalarField("frozen").data() : nullptr;
   const std::uint8_t* nearMelt = nullptr;
   std::uint64_t skipped = 0;
-  if (frozen) {
+  if (solidifies) {
     skipped = markFrozenNearMelt();
     nearMelt = frozenNearMelt_.data();
   }

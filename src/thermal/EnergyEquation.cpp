@@ -179,9 +179,11 @@ void EnergyEquation::computeRates() {
   }
   // The heat the held particles take in left the system through them (summed in particle
   // order: the same bits on any thread count).
+  // (decided by the settings, not by the field's storage, which a rank that has held none of
+  // the cloud's particles lacks: every rank must take part in the sum)
   for (HeatCloud& heat : context_.clouds) {
+    if (!heat.holdsAny()) continue;
     const Real* held = heldTemperatures(heat);
-    if (!held) continue;
     const auto& mass = heat.cloud->scalarField("mass");
     const auto& rate = heat.cloud->scalarField("energyRate");
     double absorbed = 0;

@@ -206,6 +206,61 @@ void writePourCase(const fs::path& root, int ranks, const std::string& surfaceTe
   writeCloudVtp(lid, root / "0/lid.vtp");
 }
 
+// A melt freezing in one corner of a long mold, a chill held at 300 K at the far end: on 2 and
+// 4 ranks some subdomains hold no metal and some no chill, not even as halo, while their
+// neighbours do. 6 x 3 metal particles (dx = 4 mm), the bottom row at 845 K (frozen: above the
+// frozen solid fraction 0.5) and the others at 870 K, in a tank 120 spacings long and 6 high of
+// iron at 500 K; the chill, 3 x 3 spacings of iron, sits on the right-hand wall.
+void writeFreezingCornerCase(const fs::path& root, int ranks) {
+  writeText(root / "system/controlDict",
+            "application sphCastFoam; startFrom latestTime; stopAt endTime; endTime 0.02;\n"
+            "deltaT 1e-5; adjustTimeStep yes; maxCo 0.25; writeControl adjustableRunTime;\n"
+            "writeInterval 0.01; logInterval 100000;\n"
+            "functions { books { type energyBalance; clouds (metal mold chill); } }\n");
+  writeText(root / "system/sphSchemes",
+            "densityScheme riemann; viscousForm Morris; supportRadius 0.012;\n"
+            "soundSpeed 20; wallDissipation normalApproach;\n");
+  writeText(root / "system/decomposeParDict",
+            "numberOfSubdomains " + std::to_string(ranks) + "; method recursiveBisection;\n");
+  writeText(root / "constant/physicsModels",
+            "dimension 2; materials { metal alloy; mold iron; chill iron; }\n"
+            "flow { model weaklyCompressible; fluid metal; walls (mold chill); }\n"
+            "heatTransfer { clouds (metal mold chill); conduction on;\n"
+            "  fixedTemperature { chill 300; } }\n"
+            "solidification { model frozenSolid; frozenSolidFraction 0.5; }\n");
+  // AC4CH's tables (etc/materials/AC4CH)
+  writeText(root / "constant/physicalProperties",
+            "alloy { liquidus 888.64; solidus 830.44;\n"
+            "  temperatures (803.0 830.44 848 873 888.64 973);\n"
+            "  internalEnergy (7.89e5 8.44e5 1.11e6 1.23e6 1.33e6 1.431e6);\n"
+            "  viscosity (4.88e4 4.73e4 2.154e3 1.86e2 1.57e-3 1.28e-3);\n"
+            "  density (2571.9 2565.5 2517 2474.3 2426.6 2398.8);\n"
+            "  conductivity (174.35 175.34 114.78 98.33 83.3 86.05); }\n"
+            "iron { density 7874; conductivity 26; specificHeat 700; }\n");
+  writeText(root / "constant/g", "dimensions [0 1 -2 0 0 0 0]; value (0 -9.81 0);\n");
+  ParticleCloud metal = testing::fluidBlock2D(6, 3, pourDx, Vector::Zero(), 2450, Real(1.5e-3));
+  ParticleCloud mold = testing::tankWalls2D(120, 6, pourDx);
+  ParticleCloud chill = testing::emptyWall();
+  testing::addWallCells(
+      chill, 120, 123, 6, 9, pourDx, Vector::Zero(), [](int, int) { return Vector(-1, 0, 0); },
+      [](int column, int) { return (Real(column - 120) + Real(0.5)) * pourDx; });
+  const std::pair<ParticleCloud*, Real> clouds[] = {{&metal, 870}, {&mold, 500}, {&chill, 300}};
+  for (const auto& [cloud, temperature] : clouds) {
+    auto& id = cloud->addIdField("id");
+    auto& T = cloud->addScalarField("T");
+    for (std::size_t i = 0; i < cloud->size(); ++i) {
+      id[i] = static_cast<std::int64_t>(i);
+      T[i] = temperature;
+    }
+    cloud->attributes()["spacing"] = pourDx;
+  }
+  for (std::size_t i = 0; i < 6; ++i) metal.scalarField("T")[i] = 845;  // the bottom row
+  fs::create_directories(root / "0");
+  writeCloudVtp(metal, root / "0/metal.vtp");
+  writeCloudVtp(mold, root / "0/mold.vtp");
+  writeCloudVtp(chill, root / "0/chill.vtp");
+}
+
 struct CloudDifference {
   bool sameParticles = false;  // the same ids
   double positions = 0;        // largest |x - x_serial| / dx
@@ -384,6 +439,41 @@ TEST(ParallelSolverTest, APourWithABodyHeatAndSurfaceTensionIsTheSerialRunWithin
     fs::remove_all(decomposed);
   }
   if (world.master()) fs::remove_all(scratch);
+}
+
+// The models that hold a field only where a cloud holds particles (the frozen metal's halo
+// refresh, the heat a held chill takes in, summed over the ranks) take part in their exchanges
+// and reductions on every rank, also on ranks that never held a particle of that cloud (they
+// skipped them, and the ranks waited for each other for ever).
+TEST(ParallelSolverTest, AMeltFreezingFarFromSomeRanksIsTheSerialRunWithinRoundOff) {
+  const Communicator world = Communicator::world();
+  const fs::path scratch = sharedScratch(world);
+  const fs::path serial = scratch / "serial", decomposed = scratch / "decomposed";
+  silenceInfo(true);
+  if (world.master()) {
+    writeFreezingCornerCase(serial, world.size());
+    fs::copy(serial, decomposed, fs::copy_options::recursive);
+    CastingSolver(CaseFolder(serial), Communicator::self()).run();
+  }
+  world.barrier();
+  CastingSolver(CaseFolder(decomposed), world).run();
+  silenceInfo(!world.master());
+  if (world.master()) {
+    for (const char* time : {"0.01", "0.02"}) {
+      for (const char* cloud : {"metal", "mold", "chill"}) {
+        const CloudDifference d = compareCloud(serial, decomposed, time, cloud, pourDx);
+        EXPECT_TRUE(d.sameParticles) << cloud << " at " << time;
+        EXPECT_LT(d.positions, roundOffPositions) << cloud << " at " << time;
+        EXPECT_LT(d.temperatures, 1e-6) << cloud << " at " << time;
+      }
+    }
+    const double books =
+        functionObjectDifference(serial, decomposed, "books", "energyBalance", 1, 5);
+    EXPECT_LT(books, 1e-8);
+    std::cout << "    " << world.size() << " rank(s): the energy books within " << books
+              << " of the serial run's\n";
+    fs::remove_all(scratch);
+  }
 }
 
 }  // namespace
