@@ -162,9 +162,19 @@ std::vector<ParticleCloud> readTimeFolderClouds(const CaseFolder& caseFolder,
                   ".pvtp (a parallel run's) and " + name +
                   ".vtp (a serial run's): remove the one that is not wanted");
     }
-    const bool pieceByPiece = file.extension() == ".pvtp" && readPvtpPieces(file).size() > 1;
-    if (pieceByPiece) {
-      clouds.push_back(readCloudPvtp(file, name, comm.rank(), comm.size()));
+    const int pieces =
+        file.extension() == ".pvtp" ? static_cast<int>(readPvtpPieces(file).size()) : 1;
+    if (pieces > 1) {
+      // rank r of n reads pieces r, r + n, ...; a rank beyond the pieces (a restart onto more
+      // ranks) reads none and takes the cloud's fields and attributes from rank 0's
+      ParticleCloud cloud = comm.rank() < pieces
+                                ? readCloudPvtp(file, name, comm.rank(), comm.size())
+                                : ParticleCloud(name);
+      if (comm.size() > pieces) {
+        const std::string layout = comm.broadcast(comm.master() ? packLayout(cloud) : "");
+        if (comm.rank() >= pieces) cloud = unpackLayout(layout);
+      }
+      clouds.push_back(std::move(cloud));
     } else {
       clouds.push_back(readOnMaster(
           [&] {

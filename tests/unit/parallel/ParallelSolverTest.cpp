@@ -30,6 +30,7 @@
 #include <vector>
 
 #include "core/Log.h"
+#include "io/PvtpCloud.h"
 #include "io/TimeFolders.h"
 #include "io/VtpCloud.h"
 #include "post/FunctionObject.h"
@@ -474,6 +475,57 @@ TEST(ParallelSolverTest, AMeltFreezingFarFromSomeRanksIsTheSerialRunWithinRoundO
               << " of the serial run's\n";
     fs::remove_all(scratch);
   }
+}
+
+// A restart onto more ranks than the written pieces (2 pieces on 4 ranks): ranks 0 and 1 read
+// one piece each, ranks 2 and 3 none (they take the cloud's fields and attributes from rank 0);
+// on fewer ranks each reads its share of the pieces. Every particle arrives once.
+TEST(ParallelSolverTest, APieceByPieceStartOnMoreRanksThanPiecesGivesEachParticleOnce) {
+  const Communicator world = Communicator::world();
+  const fs::path scratch = sharedScratch(world);
+  constexpr int pieces = 2;
+  ParticleCloud metal = testing::fluidBlock2D(20, 10, pourDx, Vector::Zero(), 2400, Real(1e-3));
+  auto& id = metal.addIdField("id");
+  for (std::size_t i = 0; i < metal.size(); ++i) id[i] = static_cast<std::int64_t>(i);
+  metal.attributes()["internalEnergyAtStart"] = 1.0 / 3;
+  if (world.master()) {
+    writeText(scratch / "system/controlDict", "application sphCastFoam;\n");
+    const fs::path index = scratch / "0.5/metal.pvtp";
+    fs::create_directories(pieceFile(index, 0).parent_path());
+    for (int p = 0; p < pieces; ++p) {
+      ParticleCloud piece = metal;
+      std::vector<std::size_t> mine;
+      for (std::size_t i = 0; i < metal.size(); ++i) {
+        if (static_cast<int>(i % pieces) == p) mine.push_back(i);
+      }
+      piece.reorder([&] {  // this piece's particles first
+        std::vector<std::size_t> order = mine;
+        for (std::size_t i = 0; i < metal.size(); ++i) {
+          if (static_cast<int>(i % pieces) != p) order.push_back(i);
+        }
+        return order;
+      }());
+      piece.resize(mine.size());
+      writeCloudVtp(piece, pieceFile(index, p));
+    }
+    writeCloudPvtpIndex(metal, index, pieces);
+  }
+  world.barrier();
+  const std::vector<ParticleCloud> clouds = readTimeFolderClouds(CaseFolder(scratch), "0.5", world);
+  ASSERT_EQ(clouds.size(), 1u);
+  const ParticleCloud& read = clouds.front();
+  EXPECT_EQ(read.name(), "metal");
+  EXPECT_EQ(read.attributes(), metal.attributes());  // also where no piece was read
+  EXPECT_TRUE(read.hasVectorField("U") && read.hasScalarField("rho") && read.hasIdField("id"));
+  // (1 rank reads both pieces; 2 and 4 ranks one piece on ranks 0 and 1)
+  const std::size_t expected = world.size() == 1 ? 200 : world.rank() < pieces ? 100 : 0;
+  EXPECT_EQ(read.size(), expected) << "rank " << world.rank();
+  double idSum = 0;
+  for (std::size_t i = 0; i < read.size(); ++i) idSum += static_cast<double>(read.idField("id")[i]);
+  EXPECT_EQ(world.sum(static_cast<std::int64_t>(read.size())), 200);
+  EXPECT_EQ(world.sum(idSum), 199.0 * 200.0 / 2);
+  world.barrier();
+  if (world.master()) fs::remove_all(scratch);
 }
 
 }  // namespace
