@@ -71,9 +71,9 @@ CastingSolver::CastingSolver(const CaseFolder& caseFolder, const Communicator& c
   loadBodyClouds();
   if (!inletSetup_.inlets.empty() && !flowSetup_.enabled) {
     const std::string& name = inletSetup_.inlets.front().name;
-    throw DictionaryError(inletSetup_.declaredAt.at(name),
-                          "inlet '" + name +
-                              "' feeds the flow's fluid, but constant/physicsModels has no flow");
+    throw DictionaryError(
+        inletSetup_.declaredAt.at(name),
+        "inlet '" + name + "' feeds the flow's fluid, but constant/physicsModels has no flow");
   }
   if (flowSetup_.enabled || heatSetup_.enabled) {
     setUpNeighbourhood();
@@ -115,8 +115,10 @@ std::vector<std::string> CastingSolver::fieldInventory(const std::vector<Particl
   std::vector<std::string> names;
   for (const ParticleCloud& cloud : clouds) {
     names.push_back(cloud.name());
-    for (const auto& [name, field] : cloud.scalarFields()) names.push_back(cloud.name() + "." + name);
-    for (const auto& [name, field] : cloud.vectorFields()) names.push_back(cloud.name() + "." + name);
+    for (const auto& [name, field] : cloud.scalarFields())
+      names.push_back(cloud.name() + "." + name);
+    for (const auto& [name, field] : cloud.vectorFields())
+      names.push_back(cloud.name() + "." + name);
     for (const auto& [name, field] : cloud.idFields()) names.push_back(cloud.name() + "." + name);
   }
   std::sort(names.begin(), names.end());
@@ -169,8 +171,7 @@ void CastingSolver::setUpNeighbourhood() {
     throw Error("internal: flow and heat read different supportRadius");
   }
   // pair lists reused over steps only where particles move (a heat-only case has no flow)
-  const Real skin =
-      flowSetup_.enabled ? flowSetup_.settings.neighbourListSkin * radius : Real(0);
+  const Real skin = flowSetup_.enabled ? flowSetup_.settings.neighbourListSkin * radius : Real(0);
   neighbourhood_ = std::make_unique<Neighbourhood>(radius, periodic, skin);
   if (flowSetup_.enabled) {
     ParticleCloud& fluid = cloudNamed(flowSetup_.fluidCloud);
@@ -202,20 +203,25 @@ void CastingSolver::setUpNeighbourhood() {
       evolving_.push_back(&cloud);
     }
   }
+  if (parallel_ && !flowSetup_.enabled) decompose();
   for (ParticleCloud* cloud : evolving_) lastGood_.push_back(*cloud);
 }
 
-// -parallel decomposes the flow's fluid and walls: every model of a casting runs on them. A case
-// without a flow (heat alone, ballistic clouds), or with heat in a cloud that is neither, is
-// refused. Every rank refuses alike (a CollectiveError: rank 0 says it).
+// -parallel decomposes the flow's fluid and walls (every model of a casting runs on them), or,
+// without a flow, the heat clouds. A case with neither (ballistic clouds alone), or with heat
+// in a cloud that is neither the fluid nor a wall, is refused. Every rank refuses alike (a
+// CollectiveError: rank 0 says it).
 void CastingSolver::checkParallelSupport() const {
   auto refuse = [&](const std::string& what) {
     throw CollectiveError("-parallel: " + what +
                           " does not run decomposed in this version; run the case serial "
                           "(without mpirun and -parallel). Decomposed runs take the flow's fluid "
-                          "and walls with every model on them.");
+                          "and walls with every model on them, or the heat clouds without a flow.");
   };
-  if (!flowSetup_.enabled) refuse("a case without a flow (constant/physicsModels: flow)");
+  if (!flowSetup_.enabled && !heatSetup_.enabled) {
+    refuse("a case without a flow or heat (constant/physicsModels: flow, heatTransfer)");
+  }
+  if (!flowSetup_.enabled) return;
   // the heat clouds must be decomposed: the flow's fluid or its walls
   for (const std::string& name : heatSetup_.clouds) {
     const auto& walls = flowSetup_.wallClouds;
@@ -227,9 +233,10 @@ void CastingSolver::checkParallelSupport() const {
 }
 
 // Cuts space among the ranks by system/decomposeParDict, and leaves each rank the fluid and
-// wall particles of its subdomain with their halos (the neighbour search's reach, h + skin).
+// wall particles of its subdomain with their halos (the neighbour search's reach, h + skin);
+// without a flow, the heat clouds' particles, every one of equal weight (each costs its
+// conduction pairs), none migrating (nothing moves).
 void CastingSolver::decompose() {
-  const FlowSettings& settings = flowSetup_.settings;
   DecompositionSettings decomposeParDict;
   try {
     decomposeParDict = readDecompositionSettings(caseFolder_, comm_.size());
@@ -238,8 +245,17 @@ void CastingSolver::decompose() {
   }
   decomposition_ = std::make_unique<DomainDecomposition>(
       comm_, decomposeParDict,
-      static_cast<double>(neighbourhood_->radius() + neighbourhood_->skin()), settings.periodic,
-      settings.dimension);
+      static_cast<double>(neighbourhood_->radius() + neighbourhood_->skin()),
+      neighbourhood_->periodicBox(),
+      flowSetup_.enabled ? flowSetup_.settings.dimension : heatSetup_.dimension);
+  if (!flowSetup_.enabled) {
+    std::vector<DomainDecomposition::Cloud> decomposed;
+    for (const std::string& name : heatSetup_.clouds) decomposed.push_back({&cloudNamed(name)});
+    decomposition_->distribute(decomposed);
+    neighbourhood_->setHaloSync(decomposition_.get());
+    info() << "Decomposition: " << decomposition_->describe() << '\n';
+    return;
+  }
   auto writable = [&](const ParticleCloud* cloud) -> ParticleCloud* {
     for (ParticleCloud& c : clouds_) {
       if (&c == cloud) return &c;
@@ -343,8 +359,8 @@ void CastingSolver::setUpFlow() {
   if (surfaceTensionSetup_.enabled) {
     SurfaceTensionSettings tension = surfaceTensionSetup_.settings;
     tension.spacing = static_cast<Real>(fluid.attributes().at("spacing"));
-    surfaceTension_ = makeSurfaceTensionModel(surfaceTensionSetup_.model, tension, fluid, walls,
-                                              *neighbourhood_);
+    surfaceTension_ =
+        makeSurfaceTensionModel(surfaceTensionSetup_.model, tension, fluid, walls, *neighbourhood_);
     flow_->addForceModel(*surfaceTension_);
     info() << "Surface tension: " << surfaceTension_->summary(settings.soundSpeed) << '\n';
     const std::string warned = surfaceTension_->settingsWarning(settings.soundSpeed);

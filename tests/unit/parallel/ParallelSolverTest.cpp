@@ -14,7 +14,10 @@
 // melt and presses it), with surface tension (the continuum surface force with a contact angle,
 // and the paper's surface energy), conduction, mold contact, air and radiation on every cloud.
 // Same particles, positions, temperatures, the lid's travel and the energy books within
-// round-off growth of the serial run's.
+// round-off growth of the serial run's. Also: a melt freezing far from some ranks (models that
+// must take part in halo refreshes and sums on ranks that hold none of a cloud), heat alone
+// (the heat clouds decomposed), a start from fewer pieces than ranks, and the refusal of a case
+// with neither a flow nor heat.
 #include "solver/CastingSolver.h"
 
 #include <gtest/gtest.h>
@@ -260,6 +263,49 @@ void writeFreezingCornerCase(const fs::path& root, int ranks) {
   writeCloudVtp(metal, root / "0/metal.vtp");
   writeCloudVtp(mold, root / "0/mold.vtp");
   writeCloudVtp(chill, root / "0/chill.vtp");
+}
+
+// Heat alone (no flow): a block of metal 20 x 10 spacings at 950 K in a tank of iron at 500 K
+// (dx = 4 mm), conduction, mold contact, air and radiation, solidifying (frozenSolid), 0 .. 2 s.
+void writeHeatOnlyCase(const fs::path& root, int ranks) {
+  writeText(root / "system/controlDict",
+            "application sphCastFoam; startFrom latestTime; stopAt endTime; endTime 2;\n"
+            "deltaT 0.01; adjustTimeStep yes; maxCo 0.25; writeControl adjustableRunTime;\n"
+            "writeInterval 1; logInterval 100000;\n"
+            "functions { books { type energyBalance; clouds (metal mold); } }\n");
+  writeText(root / "system/sphSchemes", "supportRadius 0.012;\n");
+  writeText(root / "system/decomposeParDict",
+            "numberOfSubdomains " + std::to_string(ranks) + "; method recursiveBisection;\n");
+  writeText(root / "constant/physicsModels",
+            "dimension 2; materials { metal alloy; mold iron; }\n"
+            "heatTransfer { clouds (metal mold); conduction on;\n"
+            "  moldContact { coefficients ((alloy iron 2000)); }\n"
+            "  atmosphere { T 300; coefficients ((iron 80) (alloy 20)); }\n"
+            "  radiation { T 300; materials (iron alloy); } }\n"
+            "solidification { model frozenSolid; frozenSolidFraction 0.5; cloud metal; }\n");
+  writeText(root / "constant/physicalProperties",
+            "alloy { liquidus 888.64; solidus 830.44; emissivity 0.1;\n"
+            "  temperatures (803.0 830.44 848 873 888.64 973);\n"
+            "  internalEnergy (7.89e5 8.44e5 1.11e6 1.23e6 1.33e6 1.431e6);\n"
+            "  viscosity (4.88e4 4.73e4 2.154e3 1.86e2 1.57e-3 1.28e-3);\n"
+            "  density (2571.9 2565.5 2517 2474.3 2426.6 2398.8);\n"
+            "  conductivity (174.35 175.34 114.78 98.33 83.3 86.05); }\n"
+            "iron { density 7874; conductivity 26; specificHeat 700; emissivity 0.3; }\n");
+  ParticleCloud metal = testing::fluidBlock2D(20, 10, pourDx, Vector::Zero(), 2400, Real(1e-3));
+  ParticleCloud mold = testing::tankWalls2D(20, 10, pourDx);
+  const std::pair<ParticleCloud*, Real> clouds[] = {{&metal, 950}, {&mold, 500}};
+  for (const auto& [cloud, temperature] : clouds) {
+    auto& id = cloud->addIdField("id");
+    auto& T = cloud->addScalarField("T");
+    for (std::size_t i = 0; i < cloud->size(); ++i) {
+      id[i] = static_cast<std::int64_t>(i);
+      T[i] = temperature;
+    }
+    cloud->attributes()["spacing"] = pourDx;
+  }
+  fs::create_directories(root / "0");
+  writeCloudVtp(metal, root / "0/metal.vtp");
+  writeCloudVtp(mold, root / "0/mold.vtp");
 }
 
 struct CloudDifference {
@@ -524,6 +570,71 @@ TEST(ParallelSolverTest, APieceByPieceStartOnMoreRanksThanPiecesGivesEachParticl
   for (std::size_t i = 0; i < read.size(); ++i) idSum += static_cast<double>(read.idField("id")[i]);
   EXPECT_EQ(world.sum(static_cast<std::int64_t>(read.size())), 200);
   EXPECT_EQ(world.sum(idSum), 199.0 * 200.0 / 2);
+  world.barrier();
+  if (world.master()) fs::remove_all(scratch);
+}
+
+// Heat alone: the heat clouds are decomposed (none migrates: nothing moves), and every path
+// (conduction, contact, air, radiation, latent heat) is the serial run's within round-off.
+TEST(ParallelSolverTest, HeatAloneIsTheSerialRunWithinRoundOff) {
+  const Communicator world = Communicator::world();
+  const fs::path scratch = sharedScratch(world);
+  const fs::path serial = scratch / "serial", decomposed = scratch / "decomposed";
+  silenceInfo(true);
+  if (world.master()) {
+    writeHeatOnlyCase(serial, world.size());
+    fs::copy(serial, decomposed, fs::copy_options::recursive);
+    CastingSolver(CaseFolder(serial), Communicator::self()).run();
+  }
+  world.barrier();
+  CastingSolver(CaseFolder(decomposed), world).run();
+  silenceInfo(!world.master());
+  if (world.master()) {
+    for (const char* time : {"1", "2"}) {
+      for (const char* cloud : {"metal", "mold"}) {
+        const CloudDifference d = compareCloud(serial, decomposed, time, cloud, pourDx);
+        EXPECT_TRUE(d.sameParticles) << cloud << " at " << time;
+        EXPECT_EQ(d.positions, 0.0) << cloud << " at " << time;  // nothing moves
+        EXPECT_LT(d.temperatures, 1e-6) << cloud << " at " << time;
+        std::cout << "    " << world.size() << " rank(s), " << cloud << " at " << time
+                  << " s: T within " << d.temperatures << " K\n";
+      }
+    }
+    const double books =
+        functionObjectDifference(serial, decomposed, "books", "energyBalance", 1, 5);
+    EXPECT_LT(books, 2e-9);
+    std::cout << "    the energy books within " << books << " of the serial run's\n";
+    fs::remove_all(scratch);
+  }
+}
+
+// Neither a flow nor heat (clouds moving ballistically): nothing to decompose by; refused on
+// every rank alike, with what to do.
+TEST(ParallelSolverTest, ACaseWithNeitherFlowNorHeatIsRefusedOnEveryRank) {
+  const Communicator world = Communicator::world();
+  if (world.size() == 1) GTEST_SKIP() << "a decomposed run needs 2 ranks or more";
+  const fs::path scratch = sharedScratch(world);
+  if (world.master()) {
+    writeText(scratch / "system/controlDict",
+              "application sphCastFoam; startFrom latestTime; stopAt endTime; endTime 0.1;\n"
+              "deltaT 0.01; writeControl timeStep; writeInterval 10;\n");
+    writeText(
+        scratch / "system/decomposeParDict",
+        "numberOfSubdomains " + std::to_string(world.size()) + "; method recursiveBisection;\n");
+    writeText(scratch / "constant/physicsModels", "dimension 2;\n");
+    fs::create_directories(scratch / "0");
+    writeCloudVtp(testing::fluidBlock2D(4, 4, pourDx, Vector::Zero(), 1000, Real(1e-3)),
+                  scratch / "0/stones.vtp");
+  }
+  world.barrier();
+  std::string message;
+  try {
+    CastingSolver(CaseFolder(scratch), world).run();
+  } catch (const CollectiveError& error) {
+    message = error.what();
+  }
+  EXPECT_NE(message.find("-parallel: a case without a flow or heat"), std::string::npos) << message;
+  EXPECT_NE(message.find("run the case serial"), std::string::npos) << message;
   world.barrier();
   if (world.master()) fs::remove_all(scratch);
 }
