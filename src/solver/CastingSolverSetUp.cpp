@@ -248,36 +248,32 @@ void CastingSolver::decompose() {
       static_cast<double>(neighbourhood_->radius() + neighbourhood_->skin()),
       neighbourhood_->periodicBox(),
       flowSetup_.enabled ? flowSetup_.settings.dimension : heatSetup_.dimension);
+  std::vector<DomainDecomposition::Cloud> decomposed;
   if (!flowSetup_.enabled) {
-    std::vector<DomainDecomposition::Cloud> decomposed;
     for (const std::string& name : heatSetup_.clouds) decomposed.push_back({&cloudNamed(name)});
-    decomposition_->distribute(decomposed);
-    neighbourhood_->setHaloSync(decomposition_.get());
-    info() << "Decomposition: " << decomposition_->describe() << '\n';
-    return;
-  }
-  auto writable = [&](const ParticleCloud* cloud) -> ParticleCloud* {
-    for (ParticleCloud& c : clouds_) {
-      if (&c == cloud) return &c;
+  } else {
+    auto writable = [&](const ParticleCloud* cloud) -> ParticleCloud* {
+      for (ParticleCloud& c : clouds_) {
+        if (&c == cloud) return &c;
+      }
+      for (ParticleCloud& c : staticClouds_) {
+        if (&c == cloud) return &c;
+      }
+      throw Error("internal: a wall cloud the solver does not hold");
+    };
+    // The weights: what a particle costs a step. A wall particle costs only where fluid is
+    // within h of it (its extrapolated pressure, its place in the fluid's lists), most of a
+    // mold's particles nothing. Measured on the 3D dam break (10,850 water, 24,682 wall
+    // particles, 2 ranks): fluid 3 : wall 1 left nearly all the water on one rank (17.8 s),
+    // 30 : 1 and 1 : 0 split it (14.5 and 14.7 s).
+    constexpr std::int64_t fluidWeight = 30, wallWeight = 1;
+    decomposed.push_back({&cloudNamed(flowSetup_.fluidCloud), true, fluidWeight});
+    // a moving mold's particles migrate as the fluid's do
+    for (const ParticleCloud* wall : wallClouds_) {
+      bool moving = false;
+      for (const RigidBodySettings& body : bodySetup_.bodies) moving |= body.cloud == wall->name();
+      decomposed.push_back({writable(wall), moving, wallWeight});
     }
-    for (ParticleCloud& c : staticClouds_) {
-      if (&c == cloud) return &c;
-    }
-    throw Error("internal: a wall cloud the solver does not hold");
-  };
-  // The weights: what a particle costs a step. A wall particle costs only where fluid is within
-  // h of it (its extrapolated pressure, its place in the fluid's lists), most of a mold's
-  // particles nothing. Measured on the 3D dam break (10,850 water, 24,682 wall particles, 2
-  // ranks): fluid 3 : wall 1 left nearly all the water on one rank (17.8 s), 30 : 1 and 1 : 0
-  // split it (14.5 and 14.7 s).
-  constexpr std::int64_t fluidWeight = 30, wallWeight = 1;
-  ParticleCloud& fluid = cloudNamed(flowSetup_.fluidCloud);
-  std::vector<DomainDecomposition::Cloud> decomposed{{&fluid, true, fluidWeight}};
-  // a moving mold's particles migrate as the fluid's do
-  for (const ParticleCloud* wall : wallClouds_) {
-    bool moving = false;
-    for (const RigidBodySettings& body : bodySetup_.bodies) moving |= body.cloud == wall->name();
-    decomposed.push_back({writable(wall), moving, wallWeight});
   }
   decomposition_->distribute(decomposed);
   neighbourhood_->setHaloSync(decomposition_.get());

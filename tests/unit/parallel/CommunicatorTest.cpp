@@ -15,6 +15,14 @@
 namespace sphcast {
 namespace {
 
+// The check's line for a rank: "rank r, collective call n: <operation> at <file>:<line>
+// (<function>)", one line per rank; empty if the message has none.
+std::string callOf(const std::string& message, int rank) {
+  const std::string start = "rank " + std::to_string(rank) + ", collective call ";
+  const auto at = message.find(start);
+  return at == std::string::npos ? std::string() : message.substr(at, message.find('\n', at) - at);
+}
+
 TEST(CommunicatorTest, ARankOnAnotherPathIsAnErrorNamingEveryRanksCall) {
   const Communicator world = Communicator::world();
   if (world.size() < 2) GTEST_SKIP() << "needs 2 ranks or more";
@@ -32,15 +40,8 @@ TEST(CommunicatorTest, ARankOnAnotherPathIsAnErrorNamingEveryRanksCall) {
   }
   Communicator::checkCallSites(wasChecking);
   EXPECT_NE(message.find("the ranks took different paths"), std::string::npos) << message;
-  // "rank r, collective call n: <operation> at <file>:<line> (<function>)", one line per rank
-  auto callOf = [&](int rank) {
-    const std::string start = "rank " + std::to_string(rank) + ", collective call ";
-    const auto at = message.find(start);
-    return at == std::string::npos ? std::string()
-                                   : message.substr(at, message.find('\n', at) - at);
-  };
-  EXPECT_NE(callOf(0).find(": sum at "), std::string::npos) << message;
-  EXPECT_NE(callOf(1).find(": max at "), std::string::npos) << message;
+  EXPECT_NE(callOf(message, 0).find(": sum at "), std::string::npos) << message;
+  EXPECT_NE(callOf(message, 1).find(": max at "), std::string::npos) << message;
   EXPECT_NE(message.find("CommunicatorTest.cpp:"), std::string::npos) << message;
   // as before, and every rank still in step
   EXPECT_EQ(world.sum(2.0), 2.0 * world.size());
@@ -67,14 +68,8 @@ TEST(CommunicatorTest, PartnersInDifferentExchangesAreAnErrorNamingBothCalls) {
   }
   Communicator::checkCallSites(wasChecking);
   EXPECT_NE(message.find("the ranks took different paths"), std::string::npos) << message;
-  auto callOf = [&](int rank) {
-    const std::string start = "rank " + std::to_string(rank) + ", collective call ";
-    const auto at = message.find(start);
-    return at == std::string::npos ? std::string()
-                                   : message.substr(at, message.find('\n', at) - at);
-  };
   // "...: exchange with partners at <this file>:<line> (...)", the two lines differing
-  const std::string mine = callOf(world.rank()), theirs = callOf(partner);
+  const std::string mine = callOf(message, world.rank()), theirs = callOf(message, partner);
   EXPECT_NE(mine.find(": exchange with partners at "), std::string::npos) << message;
   EXPECT_NE(theirs.find(": exchange with partners at "), std::string::npos) << message;
   EXPECT_NE(mine.substr(mine.find(" at ")), theirs.substr(theirs.find(" at "))) << message;

@@ -26,7 +26,9 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <map>
+#include <numeric>
 #include <random>
 #include <string>
 #include <utility>
@@ -157,6 +159,42 @@ double functionObjectDifference(const fs::path& a, const fs::path& b, const std:
 // 0.08 s; a lid of iron 13 x 3 spacings, 20 mm above the melt, held until 0.02 s, falls along y.
 constexpr Real pourDx = 0.004;
 
+// A heat case's cloud: ids 0, 1, ..., every particle at T, the spacing pourDx.
+void addIdsAndTemperature(ParticleCloud& cloud, Real temperature) {
+  auto& id = cloud.addIdField("id");
+  auto& T = cloud.addScalarField("T");
+  for (std::size_t i = 0; i < cloud.size(); ++i) {
+    id[i] = static_cast<std::int64_t>(i);
+    T[i] = temperature;
+  }
+  cloud.attributes()["spacing"] = pourDx;
+}
+
+// AC4CH's tables (etc/materials/AC4CH), as physicalProperties' material `alloy`.
+const char* const solidifyingAlloy =
+    "alloy { liquidus 888.64; solidus 830.44; emissivity 0.1;\n"
+    "  temperatures (803.0 830.44 848 873 888.64 973);\n"
+    "  internalEnergy (7.89e5 8.44e5 1.11e6 1.23e6 1.33e6 1.431e6);\n"
+    "  viscosity (4.88e4 4.73e4 2.154e3 1.86e2 1.57e-3 1.28e-3);\n"
+    "  density (2571.9 2565.5 2517 2474.3 2426.6 2398.8);\n"
+    "  conductivity (174.35 175.34 114.78 98.33 83.3 86.05); }\n";
+
+// The serial run of a case (on rank 0, with its own communicator) and the decomposed run of a
+// copy of it on every rank of `world`; writeCase writes the case for that many ranks.
+void runSerialAndDecomposed(const Communicator& world, const fs::path& serial,
+                            const fs::path& decomposed,
+                            const std::function<void(const fs::path&, int)>& writeCase) {
+  silenceInfo(true);
+  if (world.master()) {
+    writeCase(serial, world.size());
+    fs::copy(serial, decomposed, fs::copy_options::recursive);
+    CastingSolver(CaseFolder(serial), Communicator::self()).run();
+  }
+  world.barrier();
+  CastingSolver(CaseFolder(decomposed), world).run();
+  silenceInfo(!world.master());
+}
+
 void writePourCase(const fs::path& root, int ranks, const std::string& surfaceTension) {
   writeText(root / "system/controlDict",
             "application sphCastFoam; startFrom latestTime; stopAt endTime; endTime 0.12;\n"
@@ -195,15 +233,7 @@ void writePourCase(const fs::path& root, int ranks, const std::string& surfaceTe
       lid, 22, 35, 10, 13, pourDx, Vector::Zero(), [](int, int) { return Vector(0, -1, 0); },
       [](int, int row) { return (Real(row - 10) + Real(0.5)) * pourDx; });
   const std::pair<ParticleCloud*, Real> clouds[] = {{&metal, 950}, {&mold, 500}, {&lid, 500}};
-  for (const auto& [cloud, temperature] : clouds) {
-    auto& id = cloud->addIdField("id");
-    auto& T = cloud->addScalarField("T");
-    for (std::size_t i = 0; i < cloud->size(); ++i) {
-      id[i] = static_cast<std::int64_t>(i);
-      T[i] = temperature;
-    }
-    cloud->attributes()["spacing"] = pourDx;
-  }
+  for (const auto& [cloud, temperature] : clouds) addIdsAndTemperature(*cloud, temperature);
   fs::create_directories(root / "0");
   writeCloudVtp(metal, root / "0/metal.vtp");  // the file names the cloud
   writeCloudVtp(mold, root / "0/mold.vtp");
@@ -232,15 +262,9 @@ void writeFreezingCornerCase(const fs::path& root, int ranks) {
             "heatTransfer { clouds (metal mold chill); conduction on;\n"
             "  fixedTemperature { chill 300; } }\n"
             "solidification { model frozenSolid; frozenSolidFraction 0.5; }\n");
-  // AC4CH's tables (etc/materials/AC4CH)
   writeText(root / "constant/physicalProperties",
-            "alloy { liquidus 888.64; solidus 830.44;\n"
-            "  temperatures (803.0 830.44 848 873 888.64 973);\n"
-            "  internalEnergy (7.89e5 8.44e5 1.11e6 1.23e6 1.33e6 1.431e6);\n"
-            "  viscosity (4.88e4 4.73e4 2.154e3 1.86e2 1.57e-3 1.28e-3);\n"
-            "  density (2571.9 2565.5 2517 2474.3 2426.6 2398.8);\n"
-            "  conductivity (174.35 175.34 114.78 98.33 83.3 86.05); }\n"
-            "iron { density 7874; conductivity 26; specificHeat 700; }\n");
+            std::string(solidifyingAlloy) +
+                "iron { density 7874; conductivity 26; specificHeat 700; }\n");
   writeText(root / "constant/g", "dimensions [0 1 -2 0 0 0 0]; value (0 -9.81 0);\n");
   ParticleCloud metal = testing::fluidBlock2D(6, 3, pourDx, Vector::Zero(), 2450, Real(1.5e-3));
   ParticleCloud mold = testing::tankWalls2D(120, 6, pourDx);
@@ -249,15 +273,7 @@ void writeFreezingCornerCase(const fs::path& root, int ranks) {
       chill, 120, 123, 6, 9, pourDx, Vector::Zero(), [](int, int) { return Vector(-1, 0, 0); },
       [](int column, int) { return (Real(column - 120) + Real(0.5)) * pourDx; });
   const std::pair<ParticleCloud*, Real> clouds[] = {{&metal, 870}, {&mold, 500}, {&chill, 300}};
-  for (const auto& [cloud, temperature] : clouds) {
-    auto& id = cloud->addIdField("id");
-    auto& T = cloud->addScalarField("T");
-    for (std::size_t i = 0; i < cloud->size(); ++i) {
-      id[i] = static_cast<std::int64_t>(i);
-      T[i] = temperature;
-    }
-    cloud->attributes()["spacing"] = pourDx;
-  }
+  for (const auto& [cloud, temperature] : clouds) addIdsAndTemperature(*cloud, temperature);
   for (std::size_t i = 0; i < 6; ++i) metal.scalarField("T")[i] = 845;  // the bottom row
   fs::create_directories(root / "0");
   writeCloudVtp(metal, root / "0/metal.vtp");
@@ -284,25 +300,12 @@ void writeHeatOnlyCase(const fs::path& root, int ranks) {
             "  radiation { T 300; materials (iron alloy); } }\n"
             "solidification { model frozenSolid; frozenSolidFraction 0.5; cloud metal; }\n");
   writeText(root / "constant/physicalProperties",
-            "alloy { liquidus 888.64; solidus 830.44; emissivity 0.1;\n"
-            "  temperatures (803.0 830.44 848 873 888.64 973);\n"
-            "  internalEnergy (7.89e5 8.44e5 1.11e6 1.23e6 1.33e6 1.431e6);\n"
-            "  viscosity (4.88e4 4.73e4 2.154e3 1.86e2 1.57e-3 1.28e-3);\n"
-            "  density (2571.9 2565.5 2517 2474.3 2426.6 2398.8);\n"
-            "  conductivity (174.35 175.34 114.78 98.33 83.3 86.05); }\n"
-            "iron { density 7874; conductivity 26; specificHeat 700; emissivity 0.3; }\n");
+            std::string(solidifyingAlloy) +
+                "iron { density 7874; conductivity 26; specificHeat 700; emissivity 0.3; }\n");
   ParticleCloud metal = testing::fluidBlock2D(20, 10, pourDx, Vector::Zero(), 2400, Real(1e-3));
   ParticleCloud mold = testing::tankWalls2D(20, 10, pourDx);
   const std::pair<ParticleCloud*, Real> clouds[] = {{&metal, 950}, {&mold, 500}};
-  for (const auto& [cloud, temperature] : clouds) {
-    auto& id = cloud->addIdField("id");
-    auto& T = cloud->addScalarField("T");
-    for (std::size_t i = 0; i < cloud->size(); ++i) {
-      id[i] = static_cast<std::int64_t>(i);
-      T[i] = temperature;
-    }
-    cloud->attributes()["spacing"] = pourDx;
-  }
+  for (const auto& [cloud, temperature] : clouds) addIdsAndTemperature(*cloud, temperature);
   fs::create_directories(root / "0");
   writeCloudVtp(metal, root / "0/metal.vtp");
   writeCloudVtp(mold, root / "0/mold.vtp");
@@ -448,15 +451,9 @@ TEST(ParallelSolverTest, APourWithABodyHeatAndSurfaceTensionIsTheSerialRunWithin
       {"surfaceEnergy", "model surfaceEnergy;"}};
   for (const auto& [model, surfaceTension] : models) {
     const fs::path serial = scratch / (model + "Serial"), decomposed = scratch / model;
-    silenceInfo(true);
-    if (world.master()) {
-      writePourCase(serial, world.size(), surfaceTension);
-      fs::copy(serial, decomposed, fs::copy_options::recursive);
-      CastingSolver(CaseFolder(serial), Communicator::self()).run();
-    }
-    world.barrier();
-    CastingSolver(CaseFolder(decomposed), world).run();
-    silenceInfo(!world.master());
+    runSerialAndDecomposed(world, serial, decomposed, [&](const fs::path& root, int ranks) {
+      writePourCase(root, ranks, surfaceTension);
+    });
     if (!world.master()) continue;
     for (const char* time : {"0.04", "0.08", "0.12"}) {
       for (const char* cloud : {"metal", "mold", "lid"}) {
@@ -496,15 +493,7 @@ TEST(ParallelSolverTest, AMeltFreezingFarFromSomeRanksIsTheSerialRunWithinRoundO
   const Communicator world = Communicator::world();
   const fs::path scratch = sharedScratch(world);
   const fs::path serial = scratch / "serial", decomposed = scratch / "decomposed";
-  silenceInfo(true);
-  if (world.master()) {
-    writeFreezingCornerCase(serial, world.size());
-    fs::copy(serial, decomposed, fs::copy_options::recursive);
-    CastingSolver(CaseFolder(serial), Communicator::self()).run();
-  }
-  world.barrier();
-  CastingSolver(CaseFolder(decomposed), world).run();
-  silenceInfo(!world.master());
+  runSerialAndDecomposed(world, serial, decomposed, writeFreezingCornerCase);
   if (world.master()) {
     for (const char* time : {"0.01", "0.02"}) {
       for (const char* cloud : {"metal", "mold", "chill"}) {
@@ -539,19 +528,13 @@ TEST(ParallelSolverTest, APieceByPieceStartOnMoreRanksThanPiecesGivesEachParticl
     const fs::path index = scratch / "0.5/metal.pvtp";
     fs::create_directories(pieceFile(index, 0).parent_path());
     for (int p = 0; p < pieces; ++p) {
-      ParticleCloud piece = metal;
-      std::vector<std::size_t> mine;
-      for (std::size_t i = 0; i < metal.size(); ++i) {
-        if (static_cast<int>(i % pieces) == p) mine.push_back(i);
-      }
-      piece.reorder([&] {  // this piece's particles first
-        std::vector<std::size_t> order = mine;
-        for (std::size_t i = 0; i < metal.size(); ++i) {
-          if (static_cast<int>(i % pieces) != p) order.push_back(i);
-        }
-        return order;
-      }());
-      piece.resize(mine.size());
+      ParticleCloud piece = metal;  // particles p, p + pieces, ...: the others dropped
+      std::vector<std::size_t> order(metal.size());
+      std::iota(order.begin(), order.end(), std::size_t(0));
+      std::stable_partition(order.begin(), order.end(),
+                            [&](std::size_t i) { return static_cast<int>(i % pieces) == p; });
+      piece.reorder(order);
+      piece.resize(metal.size() / pieces);
       writeCloudVtp(piece, pieceFile(index, p));
     }
     writeCloudPvtpIndex(metal, index, pieces);
@@ -580,15 +563,7 @@ TEST(ParallelSolverTest, HeatAloneIsTheSerialRunWithinRoundOff) {
   const Communicator world = Communicator::world();
   const fs::path scratch = sharedScratch(world);
   const fs::path serial = scratch / "serial", decomposed = scratch / "decomposed";
-  silenceInfo(true);
-  if (world.master()) {
-    writeHeatOnlyCase(serial, world.size());
-    fs::copy(serial, decomposed, fs::copy_options::recursive);
-    CastingSolver(CaseFolder(serial), Communicator::self()).run();
-  }
-  world.barrier();
-  CastingSolver(CaseFolder(decomposed), world).run();
-  silenceInfo(!world.master());
+  runSerialAndDecomposed(world, serial, decomposed, writeHeatOnlyCase);
   if (world.master()) {
     for (const char* time : {"1", "2"}) {
       for (const char* cloud : {"metal", "mold"}) {
