@@ -18,7 +18,7 @@ class Dictionary;
 using Matrix3 = Eigen::Matrix<Real, 3, 3>;
 using Quaternion = Eigen::Quaternion<Real>;
 
-// What a body is and how it may move (constant/dynamicBodies, solver/BodySetup.h reads it).
+// What a body is and how it may move (constant/dynamicBodies, bodies/BodySetup.h reads it).
 struct RigidBodySettings {
   std::string name;   // the body's (its sub-dictionary's) name
   std::string cloud;  // the mold cloud that moves as the body
@@ -127,7 +127,7 @@ class RigidBody {
   void computeMassProperties();
   // Held where it is during every step that starts before releaseTime.
   bool held(double stepStart) const;
-  void holdStill();  // no speed, no spin: the particles' U and acceleration zero
+  void holdStill();        // no speed, no spin: the particles' U and acceleration zero
   void halfKick(Real dt);  // v and L by dt/2 of the last acceleration and torque
   Vector stopDirection() const { return settings_.endStop->normalized(); }
   Vector constrained(const Vector& linear) const;

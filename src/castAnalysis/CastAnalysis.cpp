@@ -124,10 +124,19 @@ std::string formatPoint(const Vector& x) {
          formatNumber(x.z(), 4) + ") m";
 }
 
-const std::vector<std::string>& castAnalysisTypes() {
-  static const std::vector<std::string> types{
-      "cloudSummary",      "timeSeries", "thermocouples", "solidificationMaps",
-      "shrinkageCavities", "slice",      "hotSpots",      "bodyMotion"};
+CastAnalysisTypes& castAnalysisTypes() {
+  static CastAnalysisTypes types = [] {
+    CastAnalysisTypes registry("castPostProcess analysis");
+    registry.add<CloudSummaryAnalysis>("cloudSummary");
+    registry.add<TimeSeries>("timeSeries");
+    registry.add<Thermocouples>("thermocouples");
+    registry.add<SolidificationMaps>("solidificationMaps");
+    registry.add<ShrinkageCavities>("shrinkageCavities");
+    registry.add<Slice>("slice");
+    registry.add<HotSpots>("hotSpots");
+    registry.add<BodyMotion>("bodyMotion");
+    return registry;
+  }();
   return types;
 }
 
@@ -141,24 +150,8 @@ std::vector<std::unique_ptr<CastAnalysis>> readCastAnalyses(const Dictionary& di
                                 " is not an analysis: each entry is name { type ...; }");
     }
     const Dictionary& entry = dict.subDict(name);
-    const std::string type = entry.getChoice("type", castAnalysisTypes());
-    if (type == "cloudSummary") {
-      analyses.push_back(std::make_unique<CloudSummaryAnalysis>(name, entry, context));
-    } else if (type == "timeSeries") {
-      analyses.push_back(std::make_unique<TimeSeries>(name, entry, context));
-    } else if (type == "thermocouples") {
-      analyses.push_back(std::make_unique<Thermocouples>(name, entry, context));
-    } else if (type == "solidificationMaps") {
-      analyses.push_back(std::make_unique<SolidificationMaps>(name, entry, context));
-    } else if (type == "shrinkageCavities") {
-      analyses.push_back(std::make_unique<ShrinkageCavities>(name, entry, context));
-    } else if (type == "slice") {
-      analyses.push_back(std::make_unique<Slice>(name, entry, context));
-    } else if (type == "bodyMotion") {
-      analyses.push_back(std::make_unique<BodyMotion>(name, entry, context));
-    } else {
-      analyses.push_back(std::make_unique<HotSpots>(name, entry, context));
-    }
+    analyses.push_back(
+        castAnalysisTypes().build(castAnalysisTypes().choose(entry, "type"), name, entry, context));
   }
   return analyses;
 }

@@ -8,6 +8,7 @@
 
 #include "core/CaseFolder.h"
 #include "core/Real.h"
+#include "core/Registry.h"
 #include "core/dictionary/Dictionary.h"
 #include "materials/Material.h"
 #include "particles/ParticleCloud.h"
@@ -108,7 +109,11 @@ std::vector<std::unique_ptr<CastAnalysis>> readCastAnalyses(const Dictionary& di
 std::string formatNumber(double value, int digits);
 std::string formatPoint(const Vector& x);
 
-// The types readCastAnalyses knows, for messages and docs.
-const std::vector<std::string>& castAnalysisTypes();
+// The analyses by the type names castPostProcessDict gives them, each built from its name, its
+// sub-dictionary and the context; registered in CastAnalysis.cpp (castPostProcess -help lists
+// them).
+using CastAnalysisTypes =
+    Registry<CastAnalysis, const std::string&, const Dictionary&, const AnalysisContext&>;
+CastAnalysisTypes& castAnalysisTypes();
 
 }  // namespace sphcast

@@ -10,7 +10,6 @@
 #include "core/Error.h"
 #include "core/Gravity.h"
 #include "core/Log.h"
-#include "materials/MaterialLibrary.h"
 #include "core/dictionary/Dictionary.h"
 #include "geometry/FillRegion.h"
 #include "geometry/InitialDensity.h"
@@ -18,6 +17,7 @@
 #include "geometry/LatticeSolid.h"
 #include "geometry/MoldObstacles.h"
 #include "geometry/PackingRelaxation.h"
+#include "materials/MaterialLibrary.h"
 #include "particles/CellGrid.h"
 #include "particles/Domain.h"
 #include "particles/NeighbourList.h"
@@ -27,7 +27,7 @@ namespace sphcast {
 namespace {
 
 constexpr double defaultMaxParticles = 2e7;
-constexpr double defaultWallClearance = 0.75;  // x spacing; see CastFieldsSetup.h
+constexpr double defaultMoldClearance = 0.75;  // x spacing; see CastFieldsSetup.h
 constexpr double defaultSupportRadius = 3.0;   // x spacing, without system/sphSchemes
 const Dimensions length{{0, 1, 0, 0, 0, 0, 0}};
 const Dimensions speed{{0, 1, -1, 0, 0, 0, 0}};
@@ -64,7 +64,7 @@ namespace {
 
 struct RegionFill {
   std::unique_ptr<FillRegion> region;
-  bool ownLattice;  // a top-level box: today's lattice centred in the box
+  bool ownLattice;          // a top-level box: today's lattice centred in the box
   std::string name;         // for the messages
   SourceLocation location;  // where the region is given
 };
@@ -87,33 +87,31 @@ struct CloudPlan {
   std::optional<DensityStart> density;
 };
 
-// What the whole case knows about the physics a fill may need, read when first asked for.
+// What the whole case knows about the physics a fill may need (case/CaseDescription.h: each
+// file read when first asked for, once).
 class CaseSettings {
  public:
-  explicit CaseSettings(const CaseFolder& caseFolder) : caseFolder_(caseFolder) {}
+  explicit CaseSettings(const CaseDescription& description) : description_(description) {}
 
-  const MaterialLibrary& materials() {
-    if (!materials_)
-      materials_ = MaterialLibrary::read(caseFolder_.constantFile("physicalProperties"));
-    return *materials_;
+  const MaterialLibrary& materials() { return description_.materials(); }
+  Vector gravity() {
+    // without constant/g, reading it gives the missing file's error
+    return description_.gravity() ? *description_.gravity() : readGravity(description_.folder());
   }
-  Vector gravity() { return readGravity(caseFolder_); }
   // The material constant/physicsModels' `materials { cloud material; }` gives the cloud, and
   // where; nothing when the file or the entry is absent.
   std::optional<std::pair<std::string, SourceLocation>> mappedMaterial(const std::string& cloud) {
-    if (!models_) {
-      const auto file = caseFolder_.constantFile("physicsModels");
-      models_ = std::filesystem::exists(file) ? Dictionary::read(file) : Dictionary();
-    }
-    if (!models_->found("materials") || !models_->subDict("materials").found(cloud)) {
-      return std::nullopt;
-    }
-    const Dictionary& mapping = models_->subDict("materials");
-    return std::make_pair(mapping.get<std::string>(cloud), mapping.location(cloud));
+    const Dictionary* mapping = description_.modelsEntry("materials");
+    if (!mapping || !mapping->found(cloud)) return std::nullopt;
+    return std::make_pair(mapping->get<std::string>(cloud), mapping->location(cloud));
   }
-  const Dictionary& schemes() {
-    if (!schemes_) schemes_ = Dictionary::read(caseFolder_.systemFile("sphSchemes"));
-    return *schemes_;
+  const Dictionary& schemes() { return description_.schemes(); }
+  // The flow's wallClearance (system/sphSchemes, in spacings to a wall surface), else its
+  // default: setCastFields keeps the metal as far from the walls as the flow will.
+  double flowWallClearance() {
+    return description_.hasSchemes()
+               ? schemes().getOrDefault<double>("wallClearance", wallClearanceInSpacings)
+               : wallClearanceInSpacings;
   }
   double soundSpeed() {
     const double c = schemes().get<double>("soundSpeed", speed);
@@ -125,8 +123,7 @@ class CaseSettings {
   }
   // supportRadius of system/sphSchemes, else defaultSupportRadius dx (said in the log).
   double supportRadius(double spacing) {
-    if (std::filesystem::exists(caseFolder_.systemFile("sphSchemes")) &&
-        schemes().found("supportRadius")) {
+    if (description_.hasSchemes() && schemes().found("supportRadius")) {
       const double h = schemes().get<double>("supportRadius", length);
       if (!(h > spacing)) {
         throw DictionaryError(schemes().location("supportRadius"),
@@ -140,10 +137,7 @@ class CaseSettings {
   }
 
  private:
-  const CaseFolder& caseFolder_;
-  std::optional<MaterialLibrary> materials_;
-  std::optional<Dictionary> schemes_;
-  std::optional<Dictionary> models_;
+  const CaseDescription& description_;
 };
 
 // Points of the shared lattice inside the region's bounding box grown by `margin` cells; in a
@@ -265,9 +259,8 @@ std::optional<DensityStart> readDensityStart(const Dictionary& cloudDict,
 
   const std::string asked = "rho " + choice.model + " (of cloud '" + cloudName + "')";
   const MaterialLibrary& materials =
-      neededBy(fields.location("rho"), asked, [&]() -> const MaterialLibrary& {
-        return settings.materials();
-      });
+      neededBy(fields.location("rho"), asked,
+               [&]() -> const MaterialLibrary& { return settings.materials(); });
   // the cloud's material: setCastFieldsDict's `material`, else physicsModels' `materials` map
   // (which the solver reads), else the cloud's name; the two files may not disagree
   const auto mapped = settings.mappedMaterial(cloudName);
@@ -289,9 +282,9 @@ std::optional<DensityStart> readDensityStart(const Dictionary& cloudDict,
   if (!materials.has(materialName)) {
     std::string present;
     for (const auto& name : materials.names()) present += " " + name;
-    throw DictionaryError(namedAt, "rho " + choice.model + " needs the material '" +
-                                       materialName + "' in " + materials.file() +
-                                       ", which has (" + present + " )");
+    throw DictionaryError(namedAt, "rho " + choice.model + " needs the material '" + materialName +
+                                       "' in " + materials.file() + ", which has (" + present +
+                                       " )");
   }
   const TemperatureTable& restDensity =
       materials.get(materialName, namedAt, "material").requireDensity("rho " + choice.model);
@@ -421,8 +414,8 @@ std::vector<Vector> fillRegions(const CloudPlan& plan, double spacing, int dimen
       message << "region '" << fill.name << "' of cloud '" << plan.name
               << "' holds no lattice point of spacing " << spacing << " m: ";
       if (offPlane) {
-        message << "it does not reach the plane z = 0 of a 2D case (its z runs from "
-                << lower.z() << " to " << upper.z() << " m)";
+        message << "it does not reach the plane z = 0 of a 2D case (its z runs from " << lower.z()
+                << " to " << upper.z() << " m)";
       } else {
         message << "it is thinner than a spacing, or lies between the lattice points (the "
                    "lattice is at (i + 1/2) spacing; a top-level box keeps its own); make it "
@@ -472,15 +465,14 @@ void checkFillAgainstMold(const CloudPlan& plan, const std::vector<std::size_t>&
     std::ostringstream message;
     message << "region '" << plan.regions[k].name << "' of cloud '" << plan.name
             << "' is filled by no particle: all of its " << filled[k]
-            << " lattice points lie within wallClearance " << mold.clearance()
+            << " lattice points lie within moldClearance " << mold.clearance()
             << " m of a mold particle (the region lies inside the mold, or is thinner than the "
                "gap the clearance leaves between the walls)";
     throw DictionaryError(plan.regions[k].location, message.str());
   }
-  const auto outside = static_cast<std::size_t>(
-      std::count_if(centres.begin(), centres.end(), [&](const Vector& x) {
-        return (x.array() < domain.lower.array()).any() ||
-               (x.array() > domain.upper.array()).any();
+  const auto outside =
+      static_cast<std::size_t>(std::count_if(centres.begin(), centres.end(), [&](const Vector& x) {
+        return (x.array() < domain.lower.array()).any() || (x.array() > domain.upper.array()).any();
       }));
   if (outside == 0) return;
   std::ostringstream where;
@@ -511,13 +503,13 @@ ParticleCloud fillCloud(const CloudPlan& plan, double spacing, int dimension,
     checkFillAgainstMold(plan, regionOf, clear, centres, mold, domain);
     centres = keptPoints(centres, clear);
     info() << "Cloud " << plan.name << ": left out " << before - centres.size()
-           << " particles closer than wallClearance " << mold.clearance()
+           << " particles closer than moldClearance " << mold.clearance()
            << " m to a mold particle\n";
     // Between the particles of a curved wall a lattice point can lie right on the wall surface
-    // and still be wallClearance from every mold particle. Such a point is moved back along the
+    // and still be moldClearance from every mold particle. Such a point is moved back along the
     // wall normal to the flow's default wall clearance (the flow would do it at its first step);
     // it keeps its mass, which leaving it out would lose (5 % of a column 10 dx across).
-    const Real minimumGap = static_cast<Real>(wallClearanceInSpacings * spacing);
+    const Real minimumGap = static_cast<Real>(settings.flowWallClearance() * spacing);
     const auto surfaces = mold.wallSurfaceDistances(centres, 1.5 * spacing);
     std::size_t moved = 0;
     for (std::size_t i = 0; i < centres.size(); ++i) {
@@ -526,7 +518,7 @@ ParticleCloud fillCloud(const CloudPlan& plan, double spacing, int dimension,
       ++moved;
     }
     info() << "Cloud " << plan.name << ": moved " << moved << " particles closer than "
-           << wallClearanceInSpacings << " dx to a wall surface back to that distance\n";
+           << settings.flowWallClearance() << " dx to a wall surface back to that distance\n";
   }
 
   const double dx3 = spacing * spacing * spacing;
@@ -574,7 +566,7 @@ ParticleCloud fillCloud(const CloudPlan& plan, double spacing, int dimension,
       if (!beyond.empty()) beyondGrid.build(beyond);
       NeighbourList nearBeyond;
       // ... and no move brings a particle nearer a wall surface than the flow's clearance
-      const Real minimumGap = static_cast<Real>(wallClearanceInSpacings * spacing);
+      const Real minimumGap = static_cast<Real>(settings.flowWallClearance() * spacing);
       auto allowed = [&](const std::vector<Vector>& trial) {
         std::vector<bool> ok = mold.clear(trial);
         if (!beyond.empty()) nearBeyond.buildBetween(trial, beyond, beyondGrid);
@@ -630,31 +622,55 @@ int readRelaxation(const Dictionary& owner, int fallback) {
   return iterations;
 }
 
+// moldClearance, m; its former name wallClearance is still read, with a warning (the flow's
+// wallClearance of system/sphSchemes is another length: spacings to the wall surface).
+double readMoldClearance(const Dictionary& dict, double spacing) {
+  if (dict.found("moldClearance") && dict.found("wallClearance")) {
+    throw DictionaryError(
+        dict.location("wallClearance"),
+        "give 'moldClearance' alone in " + dict.name() + " ('wallClearance' is its former name)");
+  }
+  if (dict.found("wallClearance")) {
+    warning(dict.location("wallClearance").str() + ": 'wallClearance' in " + dict.name() +
+            " is now 'moldClearance' (the distance, in metres, from a mold particle's centre "
+            "within which no metal particle is filled); read as that");
+    return dict.get<double>("wallClearance", length);
+  }
+  return dict.getOrDefault<double>("moldClearance", defaultMoldClearance * spacing);
+}
+
 }  // namespace
 
-std::vector<ParticleCloud> buildCastClouds(const CaseFolder& caseFolder,
+std::vector<ParticleCloud> buildCastClouds(const CaseDescription& description,
                                            const std::vector<ParticleCloud>& moldClouds) {
+  const CaseFolder& caseFolder = description.folder();
   const Dictionary dict = Dictionary::read(caseFolder.systemFile("setCastFieldsDict"));
-  dict.checkKeys({"dimension", "spacing", "maxParticles", "wallClearance", "relaxation", "clouds",
-                  "setFields"});
-  const int dimension = dict.getOrDefault<int>("dimension", 3);
+  dict.checkKeys({"dimension", "spacing", "maxParticles", "moldClearance", "wallClearance",
+                  "relaxation", "clouds", "setFields"});
+  // the case's (constant/physicsModels), unless given here too, where it must agree
+  const int dimension = dict.getOrDefault<int>("dimension", description.dimension());
   if (dimension != 2 && dimension != 3) {
     throw DictionaryError(dict.location("dimension"),
                           "'dimension' must be 2 or 3 in " + dict.name());
+  }
+  if (description.hasPhysicsModels() && dimension != description.dimension()) {
+    throw DictionaryError(dict.location("dimension"),
+                          "'dimension' is " + std::to_string(dimension) + " in " + dict.name() +
+                              " but " + std::to_string(description.dimension()) +
+                              " in constant/physicsModels: give it once, there");
   }
   const double spacing = dict.get<double>("spacing", length);
   if (!(spacing > 0.0)) {
     throw DictionaryError(dict.location("spacing"), "'spacing' must be positive in " + dict.name());
   }
   const double maxParticles = dict.getOrDefault<double>("maxParticles", defaultMaxParticles);
-  const double clearance = dict.found("wallClearance") ? dict.get<double>("wallClearance", length)
-                                                       : defaultWallClearance * spacing;
+  const double clearance = readMoldClearance(dict, spacing);
   const int globalRelaxation = readRelaxation(dict, 0);
   const auto geometryFolder = caseFolder.constant() / "geometry";
   const Dictionary noClouds;
   const Dictionary& cloudsDict = dict.found("clouds") ? dict.subDict("clouds") : noClouds;
 
-  CaseSettings settings(caseFolder);
+  CaseSettings settings(description);
   // Read every region and count first: a spacing that makes 10^9 particles is refused before
   // any memory is taken.
   double total = 0.0;

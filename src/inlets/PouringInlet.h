@@ -15,7 +15,7 @@ namespace sphcast {
 
 class Dictionary;
 
-// What a pouring inlet is (constant/inlets, solver/InletSetup.h reads it).
+// What a pouring inlet is (constant/inlets, inlets/InletSetup.h reads it).
 struct PouringInletSettings {
   std::string name;
   std::string cloud;  // the fluid cloud it feeds

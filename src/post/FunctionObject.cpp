@@ -142,29 +142,28 @@ std::string formatSample(const Vector& value) {
          formatSample(double(value.z())) + ')';
 }
 
+FunctionObjectTypes& functionObjectTypes() {
+  static FunctionObjectTypes types = [] {
+    FunctionObjectTypes registry("function object");
+    registry.add<Probes>("probes");
+    registry.add<SurfaceHeights>("surfaceHeights");
+    registry.add<FluidFront>("front");
+    registry.add<FieldMinMax>("fieldMinMax");
+    registry.add<MassAverage>("massAverage");
+    registry.add<EnergyBalance>("energyBalance");
+    return registry;
+  }();
+  return types;
+}
+
 FunctionObjectList::FunctionObjectList(const Dictionary& controlDict,
                                        const FunctionObjectContext& context) {
   if (!controlDict.found("functions")) return;
   const Dictionary& functions = controlDict.subDict("functions");
-  const std::vector<std::string> types = {"probes",      "surfaceHeights", "front",
-                                          "fieldMinMax", "massAverage",    "energyBalance"};
   for (const std::string& name : functions.keys()) {
     const Dictionary& dict = functions.subDict(name);
-    // Explicit registration: one line per type.
-    const std::string type = dict.getChoice("type", types);
-    if (type == "probes") {
-      objects_.push_back(std::make_unique<Probes>(name, dict, context));
-    } else if (type == "surfaceHeights") {
-      objects_.push_back(std::make_unique<SurfaceHeights>(name, dict, context));
-    } else if (type == "front") {
-      objects_.push_back(std::make_unique<FluidFront>(name, dict, context));
-    } else if (type == "energyBalance") {
-      objects_.push_back(std::make_unique<EnergyBalance>(name, dict, context));
-    } else if (type == "massAverage") {
-      objects_.push_back(std::make_unique<MassAverage>(name, dict, context));
-    } else {
-      objects_.push_back(std::make_unique<FieldMinMax>(name, dict, context));
-    }
+    objects_.push_back(functionObjectTypes().build(functionObjectTypes().choose(dict, "type"), name,
+                                                   dict, context));
   }
 }
 

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "core/Real.h"
+#include "core/Registry.h"
 #include "core/TimeControl.h"
 #include "core/dictionary/Dictionary.h"
 #include "parallel/Communicator.h"
@@ -97,13 +98,19 @@ class FunctionObject {
 std::string formatSample(double value);
 std::string formatSample(const Vector& value);  // "(x y z)"
 
+// The function objects by the type names controlDict's `functions` give them, each built from
+// its name, its sub-dictionary and the run's context; registered in FunctionObject.cpp.
+using FunctionObjectTypes =
+    Registry<FunctionObject, const std::string&, const Dictionary&, const FunctionObjectContext&>;
+FunctionObjectTypes& functionObjectTypes();
+
 // Every object of controlDict's `functions`, built in file order, in one list.
 class FunctionObjectList {
  public:
   FunctionObjectList() = default;
-  // Types: probes, surfaceHeights, front, fieldMinMax, massAverage, energyBalance. An unknown
-  // type, a missing or unknown cloud or field, a bad location: DictionaryError naming file, line
-  // and key. In a decomposed run (context.comm of more than one rank) each sums over the ranks.
+  // Types: those of functionObjectTypes(). An unknown type (listing the valid ones), a missing or
+  // unknown cloud or field, a bad location: DictionaryError naming file, line and key. In a
+  // decomposed run (context.comm of more than one rank) each sums over the ranks.
   FunctionObjectList(const Dictionary& controlDict, const FunctionObjectContext& context);
 
   void execute(const TimeState& time, bool caseWriteTime);

@@ -1,5 +1,5 @@
 // sphCastFoam's time loop: the step's length, the flow and heat steps, the cooling mode, the
-// writes (construction and set-up: CastingSolverSetUp.cpp; the log: CastingSolverLog.cpp; the
+// writes (construction and set-up: CastingSolverSetup.cpp; the log: CastingSolverLog.cpp; the
 // health checks: CastingSolverHealth.cpp).
 #include "solver/CastingSolver.h"
 
@@ -40,8 +40,8 @@ double CastingSolver::stableDeltaT(std::string& limiter) const {
         limiter = "body " + body->settings().name + "'s acceleration";
       }
     }
-    // with a flow and `interval auto` the heat takes steps of its own (heatStepsWithFlow)
-    if (energy_ && (!flow_ || heatSetup_.heatEveryFlowStep)) {
+    // with a flow and `interval auto` the heat takes steps of its own (HeatStepSchedule)
+    if (energy_ && heatSchedule_.everyStep()) {
       std::string heatLimiter;
       const double heat = energy_->stableDeltaT(heatLimiter);
       if (heat < stable) {
@@ -61,7 +61,8 @@ double CastingSolver::stableDeltaT(std::string& limiter) const {
   return stable;
 }
 
-// One step: the models' passes over one neighbourhood search, kick-drift-kick.
+// One step: the models' passes over one neighbourhood search, kick-drift-kick (doc/design.md
+// §4.1). A heat step, when the schedule makes this one, wraps the flow's search and rates.
 void CastingSolver::evolve(double deltaT) {
   if (cooling_) {
     evolveCooling(deltaT);
@@ -73,38 +74,48 @@ void CastingSolver::evolve(double deltaT) {
     }
     return;
   }
-  const bool heatThisStep = energy_ && heatStepsWithFlow(deltaT);
-  // the first kicks with the rates of the current state, and the drift
-  if (flow_) {
-    flow_->kickAndDrift(deltaT);
-    driftBodies(deltaT);
-    pour();
-  }
-  if (heatThisStep) addWallTime(heatSeconds_, [&] { energy_->halfKick(heatDeltaT_); });
+  const bool heatThisStep =
+      energy_ && heatSchedule_.stepsAfter(deltaT, time_.writeTime() || time_.progress() >= 1, [&] {
+        std::string limiter;
+        return energy_->stableDeltaT(limiter);
+      });
+  if (flow_) flowFirstKickAndDrift(deltaT);
+  if (heatThisStep) addWallTime(heatSeconds_, [&] { energy_->halfKick(heatSchedule_.deltaT()); });
   // the search at the new positions (nothing moves without a flow), the quantities models share
   if (flow_) searchAndKeepClear(deltaT, true);
   if (heatThisStep && flow_ && exposedArea_) {
     addWallTime(heatSeconds_, [&] { exposedArea_->compute(); });
   }
-  // the rates at the new positions and the second kicks
-  if (flow_) {
-    flow_->computeRatesAndKick(deltaT);
-    kickBodies(deltaT);
-    holdInletBuffers();
-  }
+  if (flow_) flowRatesAndSecondKick(deltaT);
   if (heatThisStep) {
     addWallTime(heatSeconds_, [&] { finishHeatStep(); });
-    ++heatSteps_;
+    heatSchedule_.countStep();
   }
+}
+
+// The first half of a flow step: the fluid's and the bodies' first kicks with the rates of the
+// current state and their drift, then the metal the inlets pour.
+void CastingSolver::flowFirstKickAndDrift(double deltaT) {
+  flow_->kickAndDrift(deltaT);
+  driftBodies(deltaT);
+  pour();
+}
+
+// The second half, after the search: the rates at the new positions and the second kicks, the
+// inlets' buffers held.
+void CastingSolver::flowRatesAndSecondKick(double deltaT) {
+  flow_->computeRatesAndKick(deltaT);
+  kickBodies(deltaT);
+  holdInletBuffers();
 }
 
 // The second half of a heat step: the rates at the new state, the second kick, and the
 // solidification that follows the new u.
 void CastingSolver::finishHeatStep() {
   energy_->computeRates();
-  energy_->halfKick(heatDeltaT_);
+  energy_->halfKick(heatSchedule_.deltaT());
   if (solidification_) {
-    solidification_->update(time_.value(), heatDeltaT_);
+    solidification_->update(time_.value(), heatSchedule_.deltaT());
     recordCriticalGradients();
   }
 }
@@ -112,13 +123,13 @@ void CastingSolver::finishHeatStep() {
 // A whole heat step of deltaT with the particles where they are: the first kick, the exposed
 // area, and finishHeatStep.
 void CastingSolver::heatStepInPlace(double deltaT) {
-  heatDeltaT_ = deltaT;
+  heatSchedule_.stepApart(deltaT);
   addWallTime(heatSeconds_, [&] {
     energy_->halfKick(deltaT);
     if (exposedArea_) exposedArea_->compute();
     finishHeatStep();
   });
-  ++heatSteps_;
+  heatSchedule_.countStep();
 }
 
 // The search at the new positions, the fluid's first wall contacts, the bodies kept out of the
@@ -140,10 +151,8 @@ void CastingSolver::searchAndKeepClear(double deltaT, bool lastOfStep) {
 
 // A stop between heat steps (stopAt writeNow) writes the heat brought up to the time written.
 void CastingSolver::flushPendingHeat() {
-  if (!energy_ || pendingHeatTime_ == 0) return;
-  const double deltaT = pendingHeatTime_;
-  pendingHeatTime_ = 0;
-  heatStepInPlace(deltaT);
+  if (!energy_) return;
+  if (const double pending = heatSchedule_.takePending(); pending != 0) heatStepInPlace(pending);
 }
 
 // Once the melt is still, the heat sets the pace (doc/physics.md §10.5): a step of the
@@ -167,13 +176,9 @@ void CastingSolver::evolveCooling(double deltaT) {
       std::string without;
       flowStepsWithoutCooling_ += deltaT / limits.smallest(without);
     }
-    flow_->kickAndDrift(flowDeltaT);
-    driftBodies(flowDeltaT);
-    pour();
+    flowFirstKickAndDrift(flowDeltaT);
     searchAndKeepClear(flowDeltaT, k + 1 == solidificationSetup_.cooling->flowStepsPerHeatStep);
-    flow_->computeRatesAndKick(flowDeltaT);
-    kickBodies(flowDeltaT);
-    holdInletBuffers();
+    flowRatesAndSecondKick(flowDeltaT);
     ++flowSubSteps_;
     lastFlowSubStep_ = flowDeltaT;
   }
@@ -240,40 +245,6 @@ void CastingSolver::updateCoolingMode() {
     }
     info() << ": every step acoustic again\n\n";
   }
-}
-
-// Whether the heat paths run in this step, and over what time (heatDeltaT_). Without a flow,
-// or with `interval everyStep`, every step is a heat step of the step's length. Otherwise the
-// flow's steps (far shorter: acoustic, against the diffusion limit) add up until they reach
-// heatStepFraction of the heat's own stable step, and the heat then takes one step of their
-// sum at the positions of the end (the particles carry their u as they move; what lags is only
-// the exchange between them, by at most that sum). Every written time is a heat step, so that
-// a restart from it starts with nothing pending and reproduces the uninterrupted run.
-//
-// The fraction, measured (a half-full sphere of AC4CH at 900 K sloshing in an iron mold at
-// 300 K, conduction and contact, 0.2 s, 2,621 flow steps; the largest change of T from the
-// start is 16.4 K in the metal, 18.3 K in the mold): against heat at every flow step, the
-// largest difference of a metal particle's T at 0.2 s is 1.20 / 0.61 / 0.13 / 0.015 K (mean
-// 0.15 / 0.074 / 0.017 / 0.0025 K) with the fraction 0.5 / 0.25 / 0.1 / 0.03, in 10 / 20 /
-// 50 / 141 heat steps: the error of the big steps is first order in their length, the steep
-// start of a contact being what they resolve worst. 0.1 costs 50 heat steps instead of 2,621
-// (0.25 s of heat in a 21 s run, against 13.4 s of a 35 s run).
-bool CastingSolver::heatStepsWithFlow(double deltaT) {
-  constexpr double heatStepFraction = 0.1;
-  if (!flow_ || heatSetup_.heatEveryFlowStep) {
-    heatDeltaT_ = deltaT;
-    return true;
-  }
-  if (heatStepDue_ == 0) {  // the first, or just after a heat step: the limit of that state
-    std::string limiter;
-    heatStepDue_ = heatStepFraction * energy_->stableDeltaT(limiter);
-  }
-  pendingHeatTime_ += deltaT;
-  if (pendingHeatTime_ < heatStepDue_ && !time_.writeTime() && time_.progress() < 1) return false;
-  heatDeltaT_ = pendingHeatTime_;
-  pendingHeatTime_ = 0;
-  heatStepDue_ = 0;
-  return true;
 }
 
 void CastingSolver::writeResults() {

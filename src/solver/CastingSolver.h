@@ -7,30 +7,32 @@
 #include <utility>
 #include <vector>
 
+#include "bodies/BodySetup.h"
 #include "bodies/BodyWallContact.h"
 #include "bodies/RigidBody.h"
+#include "case/CaseDescription.h"
 #include "core/CaseFolder.h"
 #include "core/Log.h"
 #include "core/TimeControl.h"
+#include "inlets/InletSetup.h"
 #include "inlets/PouringInlet.h"
+#include "io/CaseWriter.h"
 #include "io/TimeFolders.h"
 #include "parallel/Communicator.h"
 #include "parallel/DomainDecomposition.h"
 #include "particles/ParticleCloud.h"
 #include "post/FunctionObject.h"
+#include "solidification/SolidificationSetup.h"
 #include "solver/BallisticMotion.h"
-#include "solver/BodySetup.h"
-#include "solver/CaseWriter.h"
-#include "solver/FlowSetup.h"
-#include "solver/HeatSetup.h"
-#include "solver/InletSetup.h"
+#include "solver/HeatStepSchedule.h"
 #include "solver/RunHealth.h"
-#include "solver/SolidificationSetup.h"
-#include "solver/SurfaceTensionSetup.h"
 #include "sph/ExposedArea.h"
 #include "sph/FillTime.h"
+#include "sph/FlowSetup.h"
 #include "sph/WeaklyCompressibleFlow.h"
+#include "surface/SurfaceTensionSetup.h"
 #include "thermal/EnergyEquation.h"
+#include "thermal/HeatSetup.h"
 
 namespace sphcast {
 
@@ -101,7 +103,8 @@ class CastingSolver {
   void updateCoolingMode();
   double coolingMaxCo() const;  // the cooling mode's flow steps' Courant number
   void evolveCooling(double deltaT);
-  bool heatStepsWithFlow(double deltaT);
+  void flowFirstKickAndDrift(double deltaT);
+  void flowRatesAndSecondKick(double deltaT);
   void flushPendingHeat();
   void heatStepInPlace(double deltaT);
   void finishHeatStep();
@@ -135,8 +138,8 @@ class CastingSolver {
   // be back in place when latestTime is looked for.
   std::vector<std::string> repairedWrites_;
   TimeControl time_;
-  std::optional<Vector> gravityFile_;  // constant/g, when the case has one
-  Vector gravity_;                     // it, else zero (a case that only conducts heat)
+  CaseDescription description_;  // the case's files read once, and the clouds' roles
+  Vector gravity_;               // constant/g, else zero (a case that only conducts heat)
   BallisticMotion motion_;
   FlowSetup flowSetup_;
   HeatSetup heatSetup_;
@@ -170,10 +173,7 @@ class CastingSolver {
   std::vector<ParticleCloud> lastGood_;
   std::vector<ParticleCloud*> evolving_;
   double searchSeconds_ = 0, heatSeconds_ = 0;
-  double pendingHeatTime_ = 0;  // flow time since the last heat step (interval auto)
-  double heatDeltaT_ = 0;       // the length of this step's heat step
-  double heatStepDue_ = 0;      // when the pending time makes a heat step (0: to be computed)
-  long heatSteps_ = 0;
+  HeatStepSchedule heatSchedule_;  // when the heat steps while a flow steps
   // Cooling to the end (solidificationSetup_.cooling): steps of the heat's length, each with a
   // few flow steps; a fluid cloud attribute (coolingMode) too, so a restart goes on alike.
   bool cooling_ = false;

@@ -14,7 +14,8 @@ void CastingSolver::setUpInlets() {
   if (inletSetup_.inlets.empty()) return;  // the constructor refused inlets without a flow
   const InternalEnergyTable* energy = nullptr;
   if (fluid_->hasScalarField("u")) {
-    energy = &heatSetup_.materialOf(fluid_->name()).requireInternalEnergy("a pouring inlet");
+    energy =
+        &description_.heatCloudMaterial(fluid_->name()).requireInternalEnergy("a pouring inlet");
   }
   std::vector<std::string> unset{FillTime::field};
   if (solidification_) {

@@ -49,11 +49,12 @@ void CastingSolver::logHeat() {
   if (flow_) {
     std::string limiter;
     const double limit = energy_->stableDeltaT(limiter);
-    line << "Heat: " << heatSteps_ << " heat steps in " << stepsTaken_ << " steps ("
+    line << "Heat: " << heatSchedule_.steps() << " heat steps in " << stepsTaken_ << " steps ("
          << (cooling_                       ? "cooling"
              : heatSetup_.heatEveryFlowStep ? "every flow step"
                                             : "interval auto")
-         << ", the last " << heatDeltaT_ << " s long; " << limiter << " limit " << limit << " s)\n";
+         << ", the last " << heatSchedule_.deltaT() << " s long; " << limiter << " limit " << limit
+         << " s)\n";
   }
   for (const HeatCloud& heat : energy_->context().clouds) {
     if (heat.fixedTemperature) continue;
@@ -94,7 +95,7 @@ void CastingSolver::logSolidification() {
   // ETA follows the rise of the solid fraction (CompletionEstimate)
   if (solidificationSetup_.endWhenSolid) solidEstimate_.add(clock_.clockTime(), s.solidFraction);
   if (cooling_) {
-    line << "\n    cooling: heat steps of " << heatDeltaT_ << " s, each with "
+    line << "\n    cooling: heat steps of " << heatSchedule_.deltaT() << " s, each with "
          << solidificationSetup_.cooling->flowStepsPerHeatStep << " flow steps (the last "
          << lastFlowSubStep_ << " s); " << flowSubSteps_ << " flow steps so far";
   }
@@ -161,9 +162,9 @@ void CastingSolver::logWorkSkipped() {
          << perFlowStep * (flowStepsWithoutCooling_ - double(flowSubSteps_)) << " s at "
          << perFlowStep << " s per flow step";
   }
-  if (energy_ && work.flowSteps > std::uint64_t(heatSteps_)) {
+  if (energy_ && work.flowSteps > std::uint64_t(heatSchedule_.steps())) {
     skippedAny = true;
-    line << "\n    heat: " << heatSteps_ << " heat steps for " << work.flowSteps
+    line << "\n    heat: " << heatSchedule_.steps() << " heat steps for " << work.flowSteps
          << " flow steps (each of the heat's own stable length)";
   }
   // the searches the pair lists' skin saved: the "Pair lists" line above

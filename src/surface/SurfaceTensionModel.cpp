@@ -5,43 +5,15 @@
 
 #include <algorithm>
 #include <cmath>
-#include <functional>
 #include <limits>
 #include <numbers>
-#include <utility>
 
 #include "core/Error.h"
 #include "sph/ParticleVolumes.h"
 #include "surface/ContinuumSurfaceForce.h"
-#include "surface/PairwiseForce.h"
 #include "surface/SurfaceEnergyTension.h"
 
 namespace sphcast {
-
-namespace {
-
-using Constructor = std::function<std::unique_ptr<SurfaceTensionModel>(
-    const SurfaceTensionSettings&, ParticleCloud&, std::vector<const ParticleCloud*>,
-    Neighbourhood&)>;
-
-template <class Model>
-Constructor constructorOf() {
-  return [](const SurfaceTensionSettings& settings, ParticleCloud& fluid,
-            std::vector<const ParticleCloud*> walls, Neighbourhood& neighbourhood) {
-    return std::make_unique<Model>(settings, fluid, std::move(walls), neighbourhood);
-  };
-}
-
-const std::vector<std::pair<std::string, Constructor>>& registry() {
-  static const std::vector<std::pair<std::string, Constructor>> models{
-      {"continuumSurfaceForce", constructorOf<ContinuumSurfaceForce>()},
-      {"surfaceEnergy", constructorOf<SurfaceEnergyTension>()},
-      {"pairwiseForce", constructorOf<PairwiseForce>()},
-  };
-  return models;
-}
-
-}  // namespace
 
 void requireTemperatureFor(const TemperatureTable& sigma, const ParticleCloud& fluid) {
   if (sigma.isConstant() || fluid.hasScalarField("T")) return;
@@ -96,24 +68,14 @@ const std::vector<std::vector<Real>>& WallVolumes::of(
   return volumes_;
 }
 
-const std::vector<std::string>& surfaceTensionModelNames() {
-  static const std::vector<std::string> names = [] {
-    std::vector<std::string> list;
-    for (const auto& [name, constructor] : registry()) list.push_back(name);
-    return list;
+SurfaceTensionModels& surfaceTensionModels() {
+  static SurfaceTensionModels models = [] {
+    SurfaceTensionModels registry("surface-tension model");
+    registry.add<ContinuumSurfaceForce>("continuumSurfaceForce");  // the default
+    registry.add<SurfaceEnergyTension>("surfaceEnergy");
+    return registry;
   }();
-  return names;
-}
-
-std::unique_ptr<SurfaceTensionModel> makeSurfaceTensionModel(
-    const std::string& name, const SurfaceTensionSettings& settings, ParticleCloud& fluid,
-    std::vector<const ParticleCloud*> walls, Neighbourhood& neighbourhood) {
-  for (const auto& [known, constructor] : registry()) {
-    if (known == name) return constructor(settings, fluid, std::move(walls), neighbourhood);
-  }
-  std::string valid;
-  for (const std::string& known : surfaceTensionModelNames()) valid += " " + known;
-  throw Error("unknown surface-tension model '" + name + "'; valid:" + valid);
+  return models;
 }
 
 }  // namespace sphcast

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "core/Registry.h"
 #include "particles/Neighbourhood.h"
 #include "particles/ParticleCloud.h"
 #include "sph/FluidForceModel.h"
@@ -52,13 +53,11 @@ class WallVolumes {
 };
 
 // The models by the names constant/physicsModels gives them (surfaceTension { model NAME; }),
-// in the order the error for an unknown name lists them; the first is the default.
-const std::vector<std::string>& surfaceTensionModelNames();
-
-// Builds the model `name` (one of surfaceTensionModelNames()) on the fluid among the walls, in
-// the flow's neighbourhood.
-std::unique_ptr<SurfaceTensionModel> makeSurfaceTensionModel(
-    const std::string& name, const SurfaceTensionSettings& settings, ParticleCloud& fluid,
-    std::vector<const ParticleCloud*> walls, Neighbourhood& neighbourhood);
+// each built on the fluid among the walls, in the flow's neighbourhood; registered in
+// SurfaceTensionModel.cpp, the first the default.
+using SurfaceTensionModels =
+    Registry<SurfaceTensionModel, const SurfaceTensionSettings&, ParticleCloud&,
+             std::vector<const ParticleCloud*>, Neighbourhood&>;
+SurfaceTensionModels& surfaceTensionModels();
 
 }  // namespace sphcast

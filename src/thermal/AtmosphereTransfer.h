@@ -26,6 +26,7 @@ class AtmosphereTransfer : public HeatTransferModel {
   AtmosphereTransfer(const HeatTransferContext& context, const Dictionary& dict);
 
   const char* name() const override { return "atmosphere"; }
+  bool readsExposedArea() const override { return true; }
   std::string description() const override;
   void addEnergyRates() override;
   std::vector<double> powerLeaving() const override { return powerLeaving_; }

@@ -82,6 +82,8 @@ class HeatTransferModel {
   // The longest step this path stays stable and accurate with (s), for the state of the last
   // addEnergyRates().
   virtual double stableDeltaT() const { return std::numeric_limits<double>::infinity(); }
+  // Whether the path reads the exposed area A_i (sph/ExposedArea.h), which is then computed.
+  virtual bool readsExposedArea() const { return false; }
 };
 
 }  // namespace sphcast

@@ -1,5 +1,8 @@
 #include "thermal/HeatTransferRegistration.h"
 
+#include <set>
+#include <utility>
+
 #include "core/Error.h"
 #include "thermal/AtmosphereTransfer.h"
 #include "thermal/HeatConduction.h"
@@ -10,11 +13,11 @@ namespace sphcast {
 
 namespace {
 
-// Whether `key` switches a path on: a sub-dictionary or `on`.
+// Whether `key` switches a path on: a sub-dictionary or a switch (on, yes, true).
 bool switchedOn(const Dictionary& heatTransfer, const std::string& key) {
   if (!heatTransfer.found(key)) return false;
   if (heatTransfer.isDict(key)) return true;
-  return heatTransfer.getChoice(key, {"on", "off"}) == "on";
+  return heatTransfer.get<bool>(key);
 }
 
 // A path whose coefficients must be given: `on` alone is not enough.
@@ -29,11 +32,50 @@ const Dictionary& settingsOf(const Dictionary& heatTransfer, const std::string& 
   return heatTransfer.subDict(key);
 }
 
+const char* const contactExample = "coefficients ((AC4CH iron 150));";
+
 }  // namespace
 
+HeatTransferPaths& heatTransferPaths() {
+  static HeatTransferPaths paths = [] {
+    HeatTransferPaths registry("heat path");
+    registry.add("conduction",
+                 [](const HeatTransferContext& context, const Dictionary& heatTransfer) {
+                   // between the materials moldContact joins, the exchange is the contact's
+                   std::set<std::pair<std::string, std::string>> contactPairs;
+                   if (switchedOn(heatTransfer, "moldContact")) {
+                     for (const auto& entry : MoldContactTransfer::readCoefficients(
+                              context, settingsOf(heatTransfer, "moldContact", contactExample))) {
+                       contactPairs.insert(entry.first);
+                     }
+                   }
+                   return std::make_unique<HeatConduction>(context, std::move(contactPairs));
+                 });
+    registry.add("moldContact",
+                 [](const HeatTransferContext& context, const Dictionary& heatTransfer) {
+                   return std::make_unique<MoldContactTransfer>(
+                       context, settingsOf(heatTransfer, "moldContact", contactExample));
+                 });
+    registry.add(
+        "atmosphere", [](const HeatTransferContext& context, const Dictionary& heatTransfer) {
+          return std::make_unique<AtmosphereTransfer>(
+              context, settingsOf(heatTransfer, "atmosphere", "T 300; coefficients ((iron 80));"));
+        });
+    registry.add("radiation",
+                 [](const HeatTransferContext& context, const Dictionary& heatTransfer) {
+                   return std::make_unique<RadiationTransfer>(
+                       context, settingsOf(heatTransfer, "radiation", "T 300;"));
+                 });
+    return registry;
+  }();
+  return paths;
+}
+
 std::vector<std::string> heatTransferKeys() {
-  return {"clouds",     "fixedTemperature", "conduction",  "moldContact",
-          "atmosphere", "radiation",        "exposedArea", "interval"};
+  std::vector<std::string> keys{"clouds", "fixedTemperature"};
+  for (const std::string& path : heatTransferPaths().names()) keys.push_back(path);
+  keys.insert(keys.end(), {"exposedArea", "interval"});
+  return keys;
 }
 
 std::vector<std::unique_ptr<HeatTransferModel>> buildHeatTransferPaths(
@@ -41,26 +83,10 @@ std::vector<std::unique_ptr<HeatTransferModel>> buildHeatTransferPaths(
   heatTransfer.checkKeys(heatTransferKeys());
   std::vector<std::unique_ptr<HeatTransferModel>> paths;
   needsExposedArea = false;
-  std::set<std::pair<std::string, std::string>> contactPairs;
-  std::unique_ptr<MoldContactTransfer> contact;
-  if (switchedOn(heatTransfer, "moldContact")) {
-    contact = std::make_unique<MoldContactTransfer>(
-        context, settingsOf(heatTransfer, "moldContact", "coefficients ((AC4CH iron 150));"));
-    contactPairs = contact->materialPairs();
-  }
-  if (switchedOn(heatTransfer, "conduction")) {
-    paths.push_back(std::make_unique<HeatConduction>(context, contactPairs));
-  }
-  if (contact) paths.push_back(std::move(contact));
-  if (switchedOn(heatTransfer, "atmosphere")) {
-    paths.push_back(std::make_unique<AtmosphereTransfer>(
-        context, settingsOf(heatTransfer, "atmosphere", "T 300; coefficients ((iron 80));")));
-    needsExposedArea = true;
-  }
-  if (switchedOn(heatTransfer, "radiation")) {
-    paths.push_back(std::make_unique<RadiationTransfer>(
-        context, settingsOf(heatTransfer, "radiation", "T 300;")));
-    needsExposedArea = true;
+  for (const std::string& name : heatTransferPaths().names()) {
+    if (!switchedOn(heatTransfer, name)) continue;
+    paths.push_back(heatTransferPaths().build(name, context, heatTransfer));
+    needsExposedArea = needsExposedArea || paths.back()->readsExposedArea();
   }
   return paths;
 }

@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "core/Registry.h"
 #include "core/dictionary/Dictionary.h"
 #include "thermal/HeatTransferModel.h"
 
@@ -22,14 +23,20 @@ namespace sphcast {
 //       exposedArea      gradient;    // optional: gradient (default) | granularity (eq. (11)),
 //                                     // the A_i of atmosphere and radiation (sph/ExposedArea.h)
 //       interval         auto;        // optional, with a flow: auto (default) | everyStep
-//                                     // (the solver reads it: solver/HeatSetup.h)
+//                                     // (the solver reads it: thermal/HeatSetup.h)
 //   }
 //
-// A path is built when its entry is a sub-dictionary or `on`; `off` or absent: never built,
-// costs nothing. Any other key is an error listing the valid ones.
+// A path is built when its entry is a sub-dictionary or a switch that is on (on, yes, true);
+// off or absent: never built, costs nothing. Any other key is an error listing the valid ones.
 std::vector<std::string> heatTransferKeys();
 
-// Builds the paths heatTransfer switches on, in the order of eq. (17). Sets needsExposedArea
+// The paths by their names, in the order of eq. (17), which is the order their rates are
+// summed; each built from the context and heatTransfer, from which it takes its own entry.
+using HeatTransferPaths =
+    Registry<HeatTransferModel, const HeatTransferContext&, const Dictionary&>;
+HeatTransferPaths& heatTransferPaths();
+
+// Builds the paths heatTransfer switches on, in the registry's order. Sets needsExposedArea
 // when a path reads A_i.
 std::vector<std::unique_ptr<HeatTransferModel>> buildHeatTransferPaths(
     const HeatTransferContext& context, const Dictionary& heatTransfer, bool& needsExposedArea);

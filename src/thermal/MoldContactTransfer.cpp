@@ -44,15 +44,15 @@ Real MoldContactTransfer::contactLength(int dimension, Real supportRadius, Real 
                         : contactLengthIn<3>(supportRadius, spacing);
 }
 
-MoldContactTransfer::MoldContactTransfer(const HeatTransferContext& context, const Dictionary& dict)
-    : context_(context),
-      contactLength_(contactLength(context.dimension, context.supportRadius, context.spacing)) {
+std::map<std::pair<std::string, std::string>, double> MoldContactTransfer::readCoefficients(
+    const HeatTransferContext& context, const Dictionary& dict) {
   dict.checkKeys({"coefficients"});
+  std::map<std::pair<std::string, std::string>, double> coefficients;
   using Row = std::tuple<std::string, std::string, double>;
   const auto rows = dict.get<std::vector<Row>>("coefficients", heatTransferCoefficient);
   for (const auto& [first, second, omega] : rows) {
     for (const std::string& material : {first, second}) {
-      cloudsOfMaterial(context_, material, dict, "coefficients");  // throws when none has it
+      cloudsOfMaterial(context, material, dict, "coefficients");  // throws when none has it
     }
     if (!(omega > 0) || !std::isfinite(omega)) {
       throw DictionaryError(dict.location("coefficients"),
@@ -64,9 +64,16 @@ MoldContactTransfer::MoldContactTransfer(const HeatTransferContext& context, con
                             "a contact coefficient joins two materials; (" + first + " " + second +
                                 ") in " + dict.name() + " names one twice");
     }
-    coefficients_[{first, second}] = omega;
-    coefficients_[{second, first}] = omega;
+    coefficients[{first, second}] = omega;
+    coefficients[{second, first}] = omega;
   }
+  return coefficients;
+}
+
+MoldContactTransfer::MoldContactTransfer(const HeatTransferContext& context, const Dictionary& dict)
+    : context_(context),
+      coefficients_(readCoefficients(context, dict)),
+      contactLength_(contactLength(context.dimension, context.supportRadius, context.spacing)) {
   double shortest = std::numeric_limits<double>::infinity();
   for (std::size_t a = 0; a < context_.clouds.size(); ++a) {
     for (std::size_t b = 0; b < context_.clouds.size(); ++b) {
@@ -93,12 +100,6 @@ double MoldContactTransfer::coefficient(std::size_t a, std::size_t b) const {
   if (A.fixedTemperature && B.fixedTemperature) return 0;
   const auto found = coefficients_.find({A.material->name, B.material->name});
   return found == coefficients_.end() ? 0 : found->second;
-}
-
-std::set<std::pair<std::string, std::string>> MoldContactTransfer::materialPairs() const {
-  std::set<std::pair<std::string, std::string>> pairs;
-  for (const auto& entry : coefficients_) pairs.insert(entry.first);
-  return pairs;
 }
 
 std::string MoldContactTransfer::description() const {

@@ -41,8 +41,11 @@ class MoldContactTransfer : public HeatTransferModel {
   void addEnergyRates() override;
   double stableDeltaT() const override { return stableDeltaT_; }
 
-  // The material pairs, both orders, whose exchange this model takes over from conduction.
-  std::set<std::pair<std::string, std::string>> materialPairs() const;
+  // The coefficient of each material pair, both orders, of `dict` (moldContact's settings),
+  // checked: every material a heat cloud's, omega positive, two materials a pair. Its pairs are
+  // the exchange this model takes over from conduction.
+  static std::map<std::pair<std::string, std::string>, double> readCoefficients(
+      const HeatTransferContext& context, const Dictionary& dict);
 
   // l_W for the kernel of this dimension and h/dx (m).
   static Real contactLength(int dimension, Real supportRadius, Real spacing);

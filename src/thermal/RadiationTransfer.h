@@ -30,6 +30,7 @@ class RadiationTransfer : public HeatTransferModel {
   RadiationTransfer(const HeatTransferContext& context, const Dictionary& dict);
 
   const char* name() const override { return "radiation"; }
+  bool readsExposedArea() const override { return true; }
   std::string description() const override;
   void addEnergyRates() override;
   std::vector<double> powerLeaving() const override { return powerLeaving_; }

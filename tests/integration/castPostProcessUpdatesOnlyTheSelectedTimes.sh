@@ -26,4 +26,9 @@ castPostProcess -latestTime > /dev/null 2>&1 || fail "castPostProcess -latestTim
 [ "$(wc -l < "$csv")" -eq 7 ] && [ "$(tail -n 1 "$csv" | cut -d, -f1)" = 0.25 ] ||
     fail "0.25 not appended: $(cat "$csv")"
 head -n 6 "$csv" | cmp -s - whole.csv || fail "appending 0.25 changed the earlier rows"
-pass "-latestTime and -time update their rows of the cloud summary and keep the others"
+# -help names every analysis type doc/castPostProcess.md describes (a bold **type** there).
+help=$(castPostProcess -help 2>&1) || fail "castPostProcess -help"
+for type in $(grep -oE '^\*\*[a-zA-Z]+\*\*' "$(dirname "$SPHCAST_TEST_TOOLS")/../../doc/castPostProcess.md" | tr -d '*'); do
+    grep -q "\b$type\b" <<< "$help" || fail "castPostProcess -help does not list $type: $help"
+done
+pass "-latestTime and -time update their rows of the cloud summary and keep the others; -help lists every analysis"

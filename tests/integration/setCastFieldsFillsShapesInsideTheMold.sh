@@ -69,7 +69,7 @@ setCastFields > log.setCastFields 2>&1 || fail "setCastFields failed: $(cat log.
 metal=$(count metal)
 # pi 10^2 20 = 6283 dx^3 of cavity; the ring nearest the wall is on the lattice within dx/2.
 awk -v n="$metal" 'BEGIN { exit !(n > 5500 && n <= 6400) }' || fail "gmshVolume: $metal particles"
-grep -q "Cloud metal: left out [0-9]* particles closer than wallClearance 0.0015 m" log.setCastFields ||
+grep -q "Cloud metal: left out [0-9]* particles closer than moldClearance 0.0015 m" log.setCastFields ||
     fail "no clearance line: $(cat log.setCastFields)"
 [ -s 0/metal.vtp ] && [ -s 0/pot.vtp ] || fail "0/ lacks metal.vtp or pot.vtp: $(ls 0)"
 pass "gmsh volume filled ($metal particles) clear of the mold; the mold cloud's T set in 0/pot.vtp"

@@ -5,6 +5,7 @@
 #include <memory>
 #include <utility>
 
+#include "case/CaseDescription.h"
 #include "castAnalysis/CastAnalysis.h"
 #include "castAnalysis/CastReport.h"
 #include "core/CaseFolder.h"
@@ -12,41 +13,31 @@
 #include "core/Error.h"
 #include "core/Log.h"
 #include "io/TimeFolders.h"
-#include "solver/HeatSetup.h"
+#include "thermal/HeatSetup.h"
 
 namespace {
 
 // h and the dimension where the case gives them, and the materials of its heat clouds.
-void readCaseSetup(const sphcast::CaseFolder& caseFolder, sphcast::AnalysisContext& context) {
-  const sphcast::HeatSetup heat = sphcast::readHeatSetup(caseFolder);
-  if (heat.enabled) {
-    context.supportRadius = heat.supportRadius;
-    context.dimension = heat.dimension;
-    for (const std::string& cloud : heat.clouds) {
-      context.materials.emplace(cloud, heat.materialOf(cloud));
-    }
-    return;
+void readCaseSetup(const sphcast::CaseDescription& description, sphcast::AnalysisContext& context) {
+  context.dimension = description.dimension();
+  if (description.hasHeat() ||
+      (description.hasSchemes() && description.schemes().found("supportRadius"))) {
+    context.supportRadius = description.supportRadius();
   }
-  const auto schemes = caseFolder.systemFile("sphSchemes");
-  if (std::filesystem::exists(schemes)) {
-    context.supportRadius =
-        sphcast::Dictionary::read(schemes).getOrDefault<sphcast::Real>("supportRadius", 0);
-  }
-  const auto models = caseFolder.constantFile("physicsModels");
-  if (std::filesystem::exists(models)) {
-    context.dimension = sphcast::Dictionary::read(models).getOrDefault<int>("dimension", 3);
+  for (const std::string& cloud : description.heatClouds()) {
+    context.materials.emplace(cloud, description.heatCloudMaterial(cloud));
   }
 }
 
 int castPostProcess(int argc, const char* const argv[]) {
   sphcast::CommandLine args(
       "castPostProcess",
-      "Runs the analyses named in system/castPostProcessDict (types: cloudSummary, timeSeries, "
-      "thermocouples, solidificationMaps, shrinkageCavities, slice, hotSpots; doc/"
-      "castPostProcess.md) over the written times, each into "
-      "postProcessing/<name>/, and writes postProcessing/castReport.md. Without that file: the "
-      "cloud summary of every cloud (postProcessing/cloudSummary/<cloud>.csv). With -time or "
-      "-latestTime the time series replace or add the rows of those times only.");
+      "Runs the analyses named in system/castPostProcessDict (types: " +
+          sphcast::castAnalysisTypes().listed() +
+          "; doc/castPostProcess.md) over the written times, each into "
+          "postProcessing/<name>/, and writes postProcessing/castReport.md. Without that file: "
+          "the cloud summary of every cloud (postProcessing/cloudSummary/<cloud>.csv). With "
+          "-time or -latestTime the time series replace or add the rows of those times only.");
   args.options()("latestTime", "only the latest time")(
       "time", boost::program_options::value<std::string>()->value_name("LIST"),
       "times to process: 0.1,0.2 or 0.1:0.5 (ranges), comma-separated");
@@ -69,7 +60,7 @@ int castPostProcess(int argc, const char* const argv[]) {
   context.times = times;
   context.allTimes = !args.has("time") && !args.has("latestTime");
   context.clouds = sphcast::timeFolderCloudNames(caseFolder, times.front().name);
-  readCaseSetup(caseFolder, context);
+  readCaseSetup(sphcast::CaseDescription(caseFolder), context);
 
   const auto dictFile = caseFolder.systemFile("castPostProcessDict");
   const bool haveDict = std::filesystem::exists(dictFile);

@@ -3,16 +3,15 @@
 #include <algorithm>
 #include <filesystem>
 
-#include "core/CaseFolder.h"
+#include "case/CaseDescription.h"
 #include "core/CommandLine.h"
-#include "core/Gravity.h"
 #include "core/Log.h"
 #include "core/TimeControl.h"
 #include "geometry/CastFieldsSetup.h"
+#include "io/CaseWriter.h"
 #include "io/TimeFolders.h"
 #include "io/VtpCloud.h"
-#include "solver/CaseWriter.h"
-#include "solver/FlowSetup.h"
+#include "sph/FlowSetup.h"
 
 namespace {
 
@@ -34,11 +33,9 @@ std::vector<sphcast::ParticleCloud> readMoldClouds(const sphcast::CaseFolder& ca
 
 // The flow's fluid gets the pressure the solver starts it with, so that the first frame of the
 // series carries p as every later one (ParaView colours the whole series by it).
-void addStartPressure(const sphcast::CaseFolder& caseFolder,
+void addStartPressure(const sphcast::CaseDescription& description,
                       std::vector<sphcast::ParticleCloud>& clouds) {
-  if (!std::filesystem::exists(caseFolder.constantFile("physicsModels"))) return;
-  const sphcast::FlowSetup flow =
-      sphcast::readFlowSetup(caseFolder, sphcast::readGravityIfPresent(caseFolder));
+  const sphcast::FlowSetup flow = sphcast::readFlowSetup(description);
   if (!flow.enabled) return;
   for (sphcast::ParticleCloud& cloud : clouds) {
     if (cloud.name() != flow.fluidCloud) continue;
@@ -55,8 +52,9 @@ int setCastFields(int argc, const char* const argv[]) {
   const sphcast::CaseFolder caseFolder(args.casePath());
   sphcast::printBanner(args.application(), caseFolder.root().string());
 
-  auto clouds = sphcast::buildCastClouds(caseFolder, readMoldClouds(caseFolder));
-  addStartPressure(caseFolder, clouds);
+  const sphcast::CaseDescription description(caseFolder);
+  auto clouds = sphcast::buildCastClouds(description, readMoldClouds(caseFolder));
+  addStartPressure(description, clouds);
   std::vector<const sphcast::ParticleCloud*> written;
   for (const auto& cloud : clouds) {
     sphcast::info() << "Cloud " << cloud.name() << ": " << cloud.size() << " particles\n";

@@ -1,6 +1,8 @@
 #include "core/dictionary/Dictionary.h"
 
 #include <algorithm>
+#include <map>
+#include <mutex>
 #include <utility>
 
 #include "core/dictionary/Parser.h"
@@ -75,8 +77,26 @@ std::string nearestWord(std::string_view misspelt, const std::vector<std::string
   return nearest;
 }
 
+namespace {
+std::mutex readCountMutex;
+std::map<std::string, int> readCounts;  // absolute path -> reads
+std::string countKey(const std::filesystem::path& file) {
+  return std::filesystem::absolute(file).lexically_normal().string();
+}
+}  // namespace
+
 Dictionary Dictionary::read(const std::filesystem::path& file) {
+  {
+    const std::lock_guard<std::mutex> lock(readCountMutex);
+    ++readCounts[countKey(file)];
+  }
   return dictionary::Parser::readFile(file);
+}
+
+int Dictionary::readCount(const std::filesystem::path& file) {
+  const std::lock_guard<std::mutex> lock(readCountMutex);
+  const auto found = readCounts.find(countKey(file));
+  return found == readCounts.end() ? 0 : found->second;
 }
 
 Dictionary Dictionary::parse(std::string_view text, const std::string& fileName) {

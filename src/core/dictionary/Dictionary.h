@@ -31,6 +31,9 @@ class Dictionary {
 
   // A missing or unreadable file is a DictionaryError naming it.
   static Dictionary read(const std::filesystem::path& file);
+  // How many times read() has parsed `file` in this process (by its absolute path): the tests
+  // hold each tool to one reading of each case file (case/CaseDescription.h).
+  static int readCount(const std::filesystem::path& file);
   // #include paths are relative to fileName's folder; fileName also names the locations.
   static Dictionary parse(std::string_view text, const std::string& fileName = "<string>");
 

@@ -30,7 +30,7 @@ TEST(CastFieldsSetup, OverlappingRegionsFillEachLatticePointOnce) {
                    "spacing 0.001;\nclouds { metal { regions {\n"
                    "  a { type sphere; centre (0 0 0); radius 0.005; }\n"
                    "  b { type sphere; centre (0.004 0 0); radius 0.005; }\n} } }\n");
-  const ParticleCloud metal = buildCastClouds(CaseFolder(folder.root()), {}).at(0);
+  const ParticleCloud metal = buildCastClouds(CaseDescription(CaseFolder(folder.root())), {}).at(0);
   std::set<std::tuple<long, long, long>> unionPoints;
   for (long i = -8; i <= 12; ++i) {
     for (long j = -8; j <= 8; ++j) {
@@ -64,7 +64,7 @@ TEST(CastFieldsSetup, SetFieldsWorksOnTheCloudsItIsGivenAndNamesTheMissingOnes) 
       header +
           "spacing 0.1;\nsetFields\n{\n    mold { fields { T 300; } regions { r { type box; "
           "min (0.5 -1 -1); max (3 1 1); } } }\n}\n");
-  const auto clouds = buildCastClouds(CaseFolder(folder.root()), {mold});
+  const auto clouds = buildCastClouds(CaseDescription(CaseFolder(folder.root())), {mold});
   ASSERT_EQ(clouds.size(), 1u);
   const auto& temperature = clouds[0].scalarField("T");
   EXPECT_EQ(temperature[0], 0.0);
@@ -77,7 +77,7 @@ TEST(CastFieldsSetup, SetFieldsWorksOnTheCloudsItIsGivenAndNamesTheMissingOnes) 
       "system/setCastFieldsDict",
       header + "spacing 0.1;\nsetFields\n{\n    mold { fields { rho hydrostatic; } }\n}\n");
   try {
-    buildCastClouds(CaseFolder(folder.root()), {mold});
+    buildCastClouds(CaseDescription(CaseFolder(folder.root())), {mold});
     FAIL() << "rho hydrostatic accepted on an existing cloud";
   } catch (const DictionaryError& error) {
     const std::string message = error.what();
@@ -88,7 +88,7 @@ TEST(CastFieldsSetup, SetFieldsWorksOnTheCloudsItIsGivenAndNamesTheMissingOnes) 
   folder.write("system/setCastFieldsDict",
                header + "spacing 0.1;\nsetFields\n{\n    lid { fields { T 300; } }\n}\n");
   try {
-    buildCastClouds(CaseFolder(folder.root()), {mold});
+    buildCastClouds(CaseDescription(CaseFolder(folder.root())), {mold});
     FAIL() << "a cloud that is not in constant/particles was accepted";
   } catch (const DictionaryError& error) {
     const std::string message = error.what();
@@ -107,7 +107,7 @@ TEST(CastFieldsSetup, RelaxationOfAFlatCloudIsAnErrorAtTheRelaxationKey) {
                    "min (0 0 0); max (0.1 0.1 0); } }\n        relaxation { iterations 10; }\n"
                    "    }\n}\n");
   try {
-    buildCastClouds(CaseFolder(folder.root()), {});
+    buildCastClouds(CaseDescription(CaseFolder(folder.root())), {});
     FAIL() << "relaxation of a flat cloud accepted";
   } catch (const DictionaryError& error) {
     const std::string message = error.what();
@@ -119,9 +119,10 @@ TEST(CastFieldsSetup, RelaxationOfAFlatCloudIsAnErrorAtTheRelaxationKey) {
 TEST(CastFieldsSetup, TwoDimensionalCloudsHaveTheAreaOfTheirCellAsVolume) {
   TemporaryCase folder;
   folder.write("system/setCastFieldsDict",
-               header + "dimension 2;\nspacing 0.01;\nclouds\n{\n    water\n    {\n        regions "
-                        "{ r { type box; min (0 0 0); max (0.1 0.2 0); } }\n    }\n}\n");
-  const auto clouds = buildCastClouds(CaseFolder(folder.root()), {});
+               header +
+                   "dimension 2;\nspacing 0.01;\nclouds\n{\n    water\n    {\n        regions "
+                   "{ r { type box; min (0 0 0); max (0.1 0.2 0); } }\n    }\n}\n");
+  const auto clouds = buildCastClouds(CaseDescription(CaseFolder(folder.root())), {});
   ASSERT_EQ(clouds.size(), 1u);
   EXPECT_EQ(clouds[0].size(), 200u);
   for (std::size_t i = 0; i < clouds[0].size(); ++i) {
@@ -134,25 +135,26 @@ TEST(CastFieldsSetup, TwoDimensionalCaseFillsTheSectionOfABoxAndRefusesOneOffThe
   // A box with depth in z fills its rectangle in the plane z = 0 (the 200 points of 0.1 x 0.2).
   TemporaryCase folder;
   folder.write("system/setCastFieldsDict",
-               header + "dimension 2;\nspacing 0.01;\nclouds\n{\n    water\n    {\n        regions "
-                        "{ r { type box; min (0 0 -0.05); max (0.1 0.2 0.05); } }\n    }\n}\n");
-  const auto clouds = buildCastClouds(CaseFolder(folder.root()), {});
+               header +
+                   "dimension 2;\nspacing 0.01;\nclouds\n{\n    water\n    {\n        regions "
+                   "{ r { type box; min (0 0 -0.05); max (0.1 0.2 0.05); } }\n    }\n}\n");
+  const auto clouds = buildCastClouds(CaseDescription(CaseFolder(folder.root())), {});
   ASSERT_EQ(clouds.size(), 1u);
   EXPECT_EQ(clouds[0].size(), 200u);
   for (const Vector& x : clouds[0].positions()) EXPECT_EQ(x.z(), 0);
 
   // A box wholly above the plane holds nothing of it: an error at the region, saying why.
   folder.write("system/setCastFieldsDict",
-               header + "dimension 2;\nspacing 0.01;\nclouds\n{\n    water\n    {\n        regions "
-                        "{ r { type box; min (0 0 0.01); max (0.1 0.2 0.05); } }\n    }\n}\n");
+               header +
+                   "dimension 2;\nspacing 0.01;\nclouds\n{\n    water\n    {\n        regions "
+                   "{ r { type box; min (0 0 0.01); max (0.1 0.2 0.05); } }\n    }\n}\n");
   try {
-    buildCastClouds(CaseFolder(folder.root()), {});
+    buildCastClouds(CaseDescription(CaseFolder(folder.root())), {});
     FAIL() << "a 2D region off z = 0 accepted";
   } catch (const DictionaryError& error) {
     const std::string message = error.what();
     EXPECT_NE(message.find("setCastFieldsDict:8:"), std::string::npos) << message;
-    EXPECT_NE(message.find("region 'r' of cloud 'water' holds no lattice point"),
-              std::string::npos)
+    EXPECT_NE(message.find("region 'r' of cloud 'water' holds no lattice point"), std::string::npos)
         << message;
     EXPECT_NE(message.find("does not reach the plane z = 0"), std::string::npos) << message;
   }
@@ -214,25 +216,28 @@ TEST(CastFieldsSetup, TwoDimensionalCaseFillsTheSectionOfEveryRegionType) {
     folder.write("system/setCastFieldsDict",
                  header + "dimension 2;\nspacing 0.001;\nclouds { metal { regions {\n  r " +
                      c.region + "\n} } }\n");
-    const ParticleCloud metal = buildCastClouds(CaseFolder(folder.root()), {}).at(0);
+    const ParticleCloud metal =
+        buildCastClouds(CaseDescription(CaseFolder(folder.root())), {}).at(0);
     const auto expected = planeLatticeInside(dx, 30, c.inside);
     ASSERT_GT(expected.size(), 100u) << c.region;
     EXPECT_EQ(planeLatticeOf(metal, dx), expected) << c.region;
   }
   // gmsh volumes are 3D; a 2D case names a surface (and the reverse).
   folder.write("system/setCastFieldsDict",
-               header + "dimension 2;\nspacing 0.001;\nclouds { metal { regions {\n  r { type "
-                        "gmshVolume; file \"disk.geo\"; group melt; }\n} } }\n");
-  EXPECT_THROW(buildCastClouds(CaseFolder(folder.root()), {}), DictionaryError);
+               header +
+                   "dimension 2;\nspacing 0.001;\nclouds { metal { regions {\n  r { type "
+                   "gmshVolume; file \"disk.geo\"; group melt; }\n} } }\n");
+  EXPECT_THROW(buildCastClouds(CaseDescription(CaseFolder(folder.root())), {}), DictionaryError);
 }
 
 TEST(CastFieldsSetup, EmptyFillIsAnErrorNamingTheCloudTheRegionAndWhy) {
   TemporaryCase folder;
   auto expectError = [&](const std::string& clouds, const std::vector<std::string>& parts,
                          const std::vector<ParticleCloud>& mold) {
-    folder.write("system/setCastFieldsDict", header + "spacing 0.01;\nclouds\n{\n" + clouds + "}\n");
+    folder.write("system/setCastFieldsDict",
+                 header + "spacing 0.01;\nclouds\n{\n" + clouds + "}\n");
     try {
-      buildCastClouds(CaseFolder(folder.root()), mold);
+      buildCastClouds(CaseDescription(CaseFolder(folder.root())), mold);
       ADD_FAILURE() << "an empty fill accepted: " << clouds;
     } catch (const DictionaryError& error) {
       const std::string message = error.what();
@@ -242,11 +247,12 @@ TEST(CastFieldsSetup, EmptyFillIsAnErrorNamingTheCloudTheRegionAndWhy) {
     }
   };
   // thinner than a spacing, between the lattice planes
-  expectError("  disk { regions { thin { type cylinder; point1 (0 0 0.001); point2 (0 0 0.004); "
-              "radius 0.05; } } }\n",
-              {"setCastFieldsDict:5:", "region 'thin' of cloud 'disk' holds no lattice point",
-               "thinner than a spacing"},
-              {});
+  expectError(
+      "  disk { regions { thin { type cylinder; point1 (0 0 0.001); point2 (0 0 0.004); "
+      "radius 0.05; } } }\n",
+      {"setCastFieldsDict:5:", "region 'thin' of cloud 'disk' holds no lattice point",
+       "thinner than a spacing"},
+      {});
   // inside a mold: a block of mold particles on the lattice covers the region
   std::vector<Vector> block;
   for (int i = -5; i < 5; ++i) {
@@ -265,30 +271,32 @@ TEST(CastFieldsSetup, EmptyFillIsAnErrorNamingTheCloudTheRegionAndWhy) {
               {mold});
   // in other units than the mold (a centre in mm, the mold in m): wholly outside its domain
   expectError("  metal { regions { a { type sphere; centre (0 0 20); radius 0.03; } } }\n",
-              {"setCastFieldsDict:5:", "cloud 'metal' lies wholly outside the domain",
-               "units"},
+              {"setCastFieldsDict:5:", "cloud 'metal' lies wholly outside the domain", "units"},
               {mold});
 }
 
 TEST(CastFieldsSetup, TheCloudsMaterialComesFromPhysicsModelsWhenTheDictNamesNone) {
   TemporaryCase folder;
   folder.write("constant/physicalProperties",
-               header + "alloy { density 2500; viscosity 1e-3; }\nwater { density 1000; "
-                        "viscosity 1e-3; }\n");
+               header +
+                   "alloy { density 2500; viscosity 1e-3; }\nwater { density 1000; "
+                   "viscosity 1e-3; }\n");
   folder.write("constant/physicsModels", header + "materials { metal alloy; }\n");
   folder.write("system/setCastFieldsDict",
-               header + "spacing 0.01;\nclouds { metal { regions { a { type box; min (0 0 0); "
-                        "max (0.02 0.02 0.02); } } fields { rho standard; } } }\n");
-  const ParticleCloud metal = buildCastClouds(CaseFolder(folder.root()), {}).at(0);
+               header +
+                   "spacing 0.01;\nclouds { metal { regions { a { type box; min (0 0 0); "
+                   "max (0.02 0.02 0.02); } } fields { rho standard; } } }\n");
+  const ParticleCloud metal = buildCastClouds(CaseDescription(CaseFolder(folder.root())), {}).at(0);
   ASSERT_EQ(metal.size(), 8u);
   for (const Real rho : metal.scalarField("rho")) EXPECT_EQ(rho, Real(2500));
 
   // the two files naming different materials is an error naming both places
   folder.write("system/setCastFieldsDict",
-               header + "spacing 0.01;\nclouds { metal { material water; regions { a { type box; "
-                        "min (0 0 0); max (0.02 0.02 0.02); } } fields { rho standard; } } }\n");
+               header +
+                   "spacing 0.01;\nclouds { metal { material water; regions { a { type box; "
+                   "min (0 0 0); max (0.02 0.02 0.02); } } fields { rho standard; } } }\n");
   try {
-    buildCastClouds(CaseFolder(folder.root()), {});
+    buildCastClouds(CaseDescription(CaseFolder(folder.root())), {});
     FAIL() << "two materials for one cloud accepted";
   } catch (const DictionaryError& error) {
     const std::string message = error.what();
@@ -301,13 +309,13 @@ TEST(CastFieldsSetup, AMissingFileSaysWhatNeedsIt) {
   // rho hydrostatic reads the material, constant/g and system/sphSchemes: a missing one is
   // reported at the rho entry, naming the file.
   TemporaryCase folder;
-  folder.write("constant/physicalProperties",
-               header + "metal { density 2500; viscosity 1e-3; }\n");
+  folder.write("constant/physicalProperties", header + "metal { density 2500; viscosity 1e-3; }\n");
   folder.write("system/setCastFieldsDict",
-               header + "spacing 0.01;\nclouds { metal { regions { a { type box; min (0 0 0); "
-                        "max (0.02 0.02 0.02); } }\n  fields { rho hydrostatic; } } }\n");
+               header +
+                   "spacing 0.01;\nclouds { metal { regions { a { type box; min (0 0 0); "
+                   "max (0.02 0.02 0.02); } }\n  fields { rho hydrostatic; } } }\n");
   try {
-    buildCastClouds(CaseFolder(folder.root()), {});
+    buildCastClouds(CaseDescription(CaseFolder(folder.root())), {});
     FAIL() << "rho hydrostatic without constant/g accepted";
   } catch (const DictionaryError& error) {
     const std::string message = error.what();
@@ -315,6 +323,54 @@ TEST(CastFieldsSetup, AMissingFileSaysWhatNeedsIt) {
     EXPECT_NE(message.find("rho hydrostatic (of cloud 'metal') needs it: "), std::string::npos)
         << message;
     EXPECT_NE(message.find("constant/g"), std::string::npos) << message;
+  }
+}
+
+// setCastFieldsDict's moldClearance (metres to a mold particle's centre) was wallClearance, a
+// name system/sphSchemes gives another length; the old name is still read, both is an error.
+TEST(CastFieldsSetup, MoldClearanceTakesItsFormerNameAndNotBoth) {
+  ParticleCloud mold("mold");  // 3.5 mm beyond the box's right-hand side, and far to its left
+  mold.resize(2);
+  mold.positions() = {Vector(Real(0.0135), Real(0.0005), 0), Vector(Real(-0.02), Real(0.0005), 0)};
+  auto metalWith = [&](const std::string& clearance) {
+    TemporaryCase folder;
+    folder.write("system/setCastFieldsDict",
+                 header + "dimension 2; spacing 0.001;\n" + clearance +
+                     "clouds { metal { regions { r { type box; min (0 0 0); max (0.01 0.001 0); "
+                     "} } } }\n");
+    return buildCastClouds(CaseDescription(CaseFolder(folder.root())), {mold}).at(0).size();
+  };
+  // the 10 particles at x = 0.5 ... 9.5 mm, the mold at 13.5 mm: a clearance of 4.5 mm takes
+  // the last one (4 mm from it; the next is 5 mm off), 0.75 dx none
+  EXPECT_EQ(metalWith(""), 10u);
+  EXPECT_EQ(metalWith("moldClearance 0.0045;\n"), 9u);
+  EXPECT_EQ(metalWith("wallClearance 0.0045;\n"), 9u);
+  EXPECT_THROW(metalWith("moldClearance 0.0045;\nwallClearance 0.0045;\n"), DictionaryError);
+}
+
+// The dimension is the case's (constant/physicsModels): setCastFieldsDict need not repeat it,
+// and may not contradict it.
+TEST(CastFieldsSetup, TheDimensionIsTheCasesUnlessGivenAlike) {
+  TemporaryCase folder;
+  folder.write("constant/physicsModels", header + "dimension 2;\n");
+  folder.write("system/setCastFieldsDict",
+               header +
+                   "spacing 0.001;\n"
+                   "clouds { metal { regions { r { type box; min (0 0 -1); max (0.004 0.003 1); "
+                   "} } } }\n");
+  EXPECT_EQ(buildCastClouds(CaseDescription(CaseFolder(folder.root())), {}).at(0).size(), 12u);
+  folder.write("system/setCastFieldsDict",
+               header +
+                   "dimension 3; spacing 0.001;\n"
+                   "clouds { metal { regions { r { type box; min (0 0 0); max (0.004 0.003 "
+                   "0.001); } } } }\n");
+  try {
+    buildCastClouds(CaseDescription(CaseFolder(folder.root())), {});
+    FAIL() << "a 3D fill of a 2D case accepted";
+  } catch (const DictionaryError& error) {
+    const std::string message = error.what();
+    EXPECT_NE(message.find("setCastFieldsDict:2:"), std::string::npos) << message;
+    EXPECT_NE(message.find("in constant/physicsModels"), std::string::npos) << message;
   }
 }
 

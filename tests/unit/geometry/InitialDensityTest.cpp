@@ -6,9 +6,9 @@
 #include <map>
 #include <string>
 
-#include "materials/TemperatureTable.h"
 #include "geometry/CastFieldsSetup.h"
 #include "geometry/InitialDensity.h"
+#include "materials/TemperatureTable.h"
 #include "support/TemporaryCase.h"
 
 namespace sphcast {
@@ -37,7 +37,7 @@ TEST(TemperatureTable, InterpolatesLinearlyAndClampsAtTheEnds) {
 }
 
 TEST(TemperatureTable, ReadsTheSolversConstantFormatAndTablesWithoutTheWord) {
-  // constant/physicalProperties as src/solver/FlowSetup.cpp reads it today.
+  // constant/physicalProperties as src/sph/FlowSetup.cpp reads it today.
   const auto constant =
       readDensity("metal { density [1 -3 0 0 0 0 0] 2400; viscosity [1 -1 -1 0 0 0 0] 1e-3; }");
   EXPECT_TRUE(constant.isConstant());
@@ -122,7 +122,9 @@ struct ColumnCase {
                      "densityScheme riemann;\nviscousForm Morris;\nsupportRadius 0.0125;\n"
                      "soundSpeed [0 1 -1 0 0 0 0] 20;\n");
   }
-  ParticleCloud metal() const { return buildCastClouds(CaseFolder(folder.root()), {}).at(0); }
+  ParticleCloud metal() const {
+    return buildCastClouds(CaseDescription(CaseFolder(folder.root())), {}).at(0);
+  }
 };
 
 TEST(InitialDensity, HydrostaticColumnStartsWithThePressureOfItsWeight) {

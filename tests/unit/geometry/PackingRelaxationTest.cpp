@@ -56,7 +56,7 @@ class ConeMold {
             "radius2 " +
             std::to_string(radius) + "; } }\n        relaxation { iterations " +
             std::to_string(iterations) + "; }\n    }\n}\n");
-    return buildCastClouds(CaseFolder(folder_.root()), mold_).at(0);
+    return buildCastClouds(CaseDescription(CaseFolder(folder_.root())), mold_).at(0);
   }
 
   const FixedNeighbours& walls() const { return walls_; }

@@ -1,4 +1,4 @@
-#include "solver/CaseWriter.h"
+#include "io/CaseWriter.h"
 
 #include <filesystem>
 
@@ -17,7 +17,8 @@ CaseWriter::CaseWriter(const CaseFolder& caseFolder, int purgeWrite, const Commu
 void CaseWriter::write(const TimeState& time, const std::vector<const ParticleCloud*>& clouds,
                        const std::vector<UniformFile>& uniformFiles) {
   writeTimeFolder(caseFolder_, time, clouds, uniformFiles, comm_);
-  if (writtenTimes_.empty() || writtenTimes_.back() != time.name) writtenTimes_.push_back(time.name);
+  if (writtenTimes_.empty() || writtenTimes_.back() != time.name)
+    writtenTimes_.push_back(time.name);
   if (!comm_.master()) return;
   // purgeWrite as OpenFOAM: only times this run wrote are removed, never the start time.
   while (purgeWrite_ > 0 && writtenTimes_.size() > static_cast<std::size_t>(purgeWrite_)) {

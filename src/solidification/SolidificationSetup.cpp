@@ -1,7 +1,4 @@
-#include "solver/SolidificationSetup.h"
-
-#include <algorithm>
-#include <filesystem>
+#include "solidification/SolidificationSetup.h"
 
 #include "core/Error.h"
 #include "core/dictionary/Dictionary.h"
@@ -14,45 +11,41 @@ const Dimensions pressure{{1, -1, -2, 0, 0, 0, 0}};
 const Dimensions speed{{0, 1, -1, 0, 0, 0, 0}};
 }  // namespace
 
-SolidificationSetup readSolidificationSetup(const CaseFolder& caseFolder, const FlowSetup& flow,
-                                            const HeatSetup& heat) {
+SolidificationSetup readSolidificationSetup(const CaseDescription& description) {
   SolidificationSetup setup;
-  const auto modelsFile = caseFolder.constantFile("physicsModels");
-  if (!std::filesystem::exists(modelsFile)) return setup;
-  const Dictionary models = Dictionary::read(modelsFile);
-  if (!models.found("solidification")) return setup;
-  const Dictionary& dict = models.subDict("solidification");
-  dict.checkKeys({"model", "cloud", "frozenSolidFraction", "cavitationPressure", "cooling",
-                  "endWhenSolid"});
+  const Dictionary* entry = description.modelsEntry("solidification");
+  if (!entry) return setup;
+  const Dictionary& models = description.physicsModels();
+  const Dictionary& dict = *entry;
+  dict.checkKeys(
+      {"model", "cloud", "frozenSolidFraction", "cavitationPressure", "cooling", "endWhenSolid"});
   if (dict.getChoice("model", {"none", "frozenSolid"}) == "none") return setup;
   // the flow's fluid; without a flow, the cloud named (a casting that only conducts heat)
-  if (flow.enabled) {
-    setup.cloud = flow.fluidCloud;
-    if (dict.found("cloud") && dict.get<std::string>("cloud") != flow.fluidCloud) {
+  if (description.hasFlow()) {
+    setup.cloud = description.fluidCloud();
+    if (dict.found("cloud") && dict.get<std::string>("cloud") != setup.cloud) {
       throw DictionaryError(dict.location("cloud"),
-                            "solidification acts on the flow's fluid '" + flow.fluidCloud +
-                                "', not '" + dict.get<std::string>("cloud") + "', in " +
-                                dict.name());
+                            "solidification acts on the flow's fluid '" + setup.cloud + "', not '" +
+                                dict.get<std::string>("cloud") + "', in " + dict.name());
     }
   } else {
     if (!dict.found("cloud")) {
       throw DictionaryError(dict.location("model"),
                             "solidification without a flow needs the 'cloud' that solidifies "
-                            "in " + dict.name() + " (with a flow it is the flow's fluid)");
+                            "in " +
+                                dict.name() + " (with a flow it is the flow's fluid)");
     }
     setup.cloud = dict.get<std::string>("cloud");
     for (const char* key : {"cooling", "cavitationPressure"}) {
       if (dict.found(key)) {
-        throw DictionaryError(dict.location(key), "'" + std::string(key) + "' in " +
-                                                      dict.name() +
+        throw DictionaryError(dict.location(key), "'" + std::string(key) + "' in " + dict.name() +
                                                       " needs a flow: without one nothing moves");
       }
     }
   }
-  const SourceLocation& cloudAt = dict.found("cloud") ? dict.location("cloud")
-                                                      : dict.location("model");
-  if (!heat.enabled ||
-      std::find(heat.clouds.begin(), heat.clouds.end(), setup.cloud) == heat.clouds.end()) {
+  const SourceLocation& cloudAt =
+      dict.found("cloud") ? dict.location("cloud") : dict.location("model");
+  if (!description.carriesHeat(setup.cloud)) {
     throw DictionaryError(cloudAt, "solidification follows the temperature of '" + setup.cloud +
                                        "', but heatTransfer's clouds in " + models.name() +
                                        " do not carry it");
@@ -73,10 +66,11 @@ SolidificationSetup readSolidificationSetup(const CaseFolder& caseFolder, const 
     if (!(setup.cavitationPressure <= 0)) {
       throw DictionaryError(dict.location("cavitationPressure"),
                             "'cavitationPressure' is the suction the melt holds (gauge, Pa): "
-                            "it must be 0 or negative in " + dict.name());
+                            "it must be 0 or negative in " +
+                                dict.name());
     }
   }
-  setup.endWhenSolid = dict.getChoiceOrDefault("endWhenSolid", {"yes", "no"}, "no") == "yes";
+  setup.endWhenSolid = dict.getOrDefault<bool>("endWhenSolid", false);
   if (dict.found("cooling")) {
     const Dictionary& cooling = dict.subDict("cooling");
     cooling.checkKeys({"flowStepsPerHeatStep", "maxCo", "stillSpeed", "movingSpeed"});
@@ -111,7 +105,7 @@ SolidificationSetup readSolidificationSetup(const CaseFolder& caseFolder, const 
     }
     setup.cooling = acceleration;
   }
-  const Material& material = heat.materialOf(setup.cloud);
+  const Material& material = description.heatCloudMaterial(setup.cloud);
   // the checks now, with the material's place in the message, not at the first step
   material.requireFreezingRange("solidification");
   material.requireInternalEnergy("solidification");

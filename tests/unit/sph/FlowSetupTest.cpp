@@ -4,12 +4,14 @@
 
 #include <cmath>
 #include <optional>
+#include <sstream>
 #include <string>
 
+#include "case/CaseDescription.h"
 #include "core/CaseFolder.h"
 #include "core/Error.h"
 #include "core/dictionary/SourceLocation.h"
-#include "solver/FlowSetup.h"
+#include "sph/FlowSetup.h"
 #include "support/TemporaryCase.h"
 
 namespace sphcast {
@@ -27,8 +29,14 @@ struct FlowCase : testing::TemporaryCase {
     write("constant/physicalProperties",
           std::string(header) + "water { density " + density + "; viscosity 1e-3; }\n");
   }
+  // constant/g written with `gravity`, then the case read as the tools read it
   FlowSetup read(const Vector& gravity = Vector(0, -9.81, 0)) const {
-    return readFlowSetup(CaseFolder(root()), gravity);
+    std::ostringstream g;
+    g.precision(17);
+    g << header << "dimensions [0 1 -2 0 0 0 0];\nvalue (" << gravity[0] << ' ' << gravity[1] << ' '
+      << gravity[2] << ");\n";
+    write("constant/g", g.str());
+    return readFlowSetup(CaseDescription(CaseFolder(root())));
   }
 };
 
@@ -142,10 +150,24 @@ TEST(FlowSetup, BadKeysAreErrorsAtTheirLine) {
   expectError(errorOf(FlowCase("periodic { w (0 1); }\n", riemann)), "physicsModels:2", "'w'");
   expectError(errorOf(FlowCase("", "densityScheme delta;\n")), "sphSchemes:2",
               "riemann standard deltaSPH");
-  expectError(errorOf(FlowCase("", riemann + "kernelCorrection yes;\n")), "sphSchemes:3",
+  expectError(errorOf(FlowCase("", riemann + "kernelCorrection maybe;\n")), "sphSchemes:3",
               "kernelCorrection");
   expectError(errorOf(FlowCase("", "densityScheme deltaSPH;\ndeltaSPHCoeffs { delta -1; }\n")),
               "sphSchemes:3", "'delta' must not be negative");
+}
+
+// A switch reads alike in every file: on/off, yes/no, true/false.
+TEST(FlowSetup, ASwitchTakesOnYesOrTrue) {
+  for (const char* on : {"on", "yes", "true"}) {
+    const FlowCase flowCase("",
+                            std::string("densityScheme riemann;\nkernelCorrection ") + on + ";\n");
+    EXPECT_TRUE(flowCase.read().settings.kernelCorrection) << on;
+  }
+  for (const char* off : {"off", "no", "false"}) {
+    const FlowCase flowCase("",
+                            std::string("densityScheme riemann;\nkernelCorrection ") + off + ";\n");
+    EXPECT_FALSE(flowCase.read().settings.kernelCorrection) << off;
+  }
 }
 
 // A zero viscosity would make the harmonic mean of two particles' viscosities 0/0.
@@ -239,7 +261,7 @@ TEST(FlowSetup, PhysicalPropertiesMayHoldOtherMaterialsThanTheFluid) {
 TEST(FlowSetup, AFlowWithoutConstantGIsAnErrorAtTheFlowEntry) {
   const FlowCase flowCase("", "densityScheme riemann;\n");
   try {
-    readFlowSetup(CaseFolder(flowCase.root()), std::nullopt);
+    readFlowSetup(CaseDescription(CaseFolder(flowCase.root())));
     FAIL() << "a flow without gravity accepted";
   } catch (const DictionaryError& error) {
     const std::string message = error.what();

@@ -4,7 +4,7 @@
 #include <vector>
 
 #include "bodies/RigidBody.h"
-#include "core/CaseFolder.h"
+#include "case/CaseDescription.h"
 #include "core/dictionary/Dictionary.h"
 
 namespace sphcast {
@@ -36,7 +36,7 @@ struct BodySetup {
   std::map<std::string, SourceLocation> declaredAt;  // body name -> its sub-dictionary
 };
 
-BodySetup readBodySetup(const CaseFolder& caseFolder);
+BodySetup readBodySetup(const CaseDescription& description);
 
 // The text of <time>/uniform/dynamicBodies for the bodies' state.
 std::string bodyStateFile(const std::string& timeName, const std::vector<const RigidBody*>& bodies);

@@ -5,7 +5,7 @@
 
 #include <optional>
 
-#include "core/CaseFolder.h"
+#include "case/CaseDescription.h"
 #include "core/Real.h"
 #include "materials/TemperatureTable.h"
 #include "parallel/Communicator.h"
@@ -13,16 +13,11 @@
 
 namespace sphcast {
 
-// What constant/physicsModels, system/sphSchemes and constant/physicalProperties ask of the flow:
+// What constant/physicsModels, system/sphSchemes and constant/physicalProperties ask of the flow
+// (the roles, the dimension, h and the periodic axes are the case's: case/CaseDescription.h):
 //
 //   constant/physicsModels:  flow { model weaklyCompressible; fluid metal; walls (mold); }
 //                            (model none, or no flow entry: clouds move ballistically)
-//                            dimension 2;                // optional, 3 by default; 2D cases
-//                                                        // lie in the x-y plane at one z
-//                            periodic { x (0 0.2); }     // optional: periodic axes and their
-//                                                        // intervals, longer than 2 h
-//                            materials { metal AC4CH; }  // optional: the fluid's material
-//                                                        // (default: named like the cloud)
 //   system/sphSchemes:       densityScheme riemann;      // riemann | standard | deltaSPH
 //                            kernelCorrection on;        // optional, off by default
 //                            deltaSPHCoeffs { delta 0.1; alpha 0.02; }  // optional (deltaSPH)
@@ -43,10 +38,6 @@ struct FlowSetup {
   SourceLocation supportRadiusAt;               // for the check of h against the fluid's spacing
 };
 
-// periodic { x (0 0.2); } of constant/physicsModels: each axis named with its interval
-// [lower, upper), longer than 2 supportRadius; no z in 2D.
-PeriodicBox readPeriodicBox(const Dictionary& periodic, Real supportRadius, int dimension);
-
 // The Mach number the flow will reach, foreseen at its start: the largest speed the metal can
 // gain, from its largest initial speed |U0| and its fall under g from its top to the lowest
 // wall particle (or its own bottom), v = sqrt(|U0|^2 + 2 |g| H), against soundSpeed c. Weakly
@@ -66,16 +57,16 @@ SoundSpeedCheck checkSoundSpeed(const FlowSettings& settings, const ParticleClou
                                 const std::vector<const ParticleCloud*>& walls,
                                 const Communicator& comm = Communicator::self());
 
-// Reads and checks the three dictionaries (errors name file, line and key). A flow needs
-// gravity (constant/g, readGravityIfPresent): without it, an error at the flow's entry.
-FlowSetup readFlowSetup(const CaseFolder& caseFolder, const std::optional<Vector>& gravity);
+// Reads and checks the flow's entries (errors name file, line and key). A flow needs gravity
+// (constant/g): without it, an error at the flow's entry.
+FlowSetup readFlowSetup(const CaseDescription& description);
 
 // Gives the fluid cloud the fields the flow needs that the start time lacks: restDensity and
 // viscosity (rho_s and mu, at each particle's T where they are tables: the cloud must then
 // have T), rho (rho_s), mass (rho volume). Returns what it added, for the log. rho_s and mu
-// keep these start values while the heat moves T (they will follow T with solidification). The cloud must have
-// the attribute spacing (dx), with supportRadius/spacing in [1.2, 6]. (The reader, VtpCloud.h, has
-// refused non-positive rho, mass, volume and viscosity already.)
+// keep these start values while the heat moves T (they will follow T with solidification). The
+// cloud must have the attribute spacing (dx), with supportRadius/spacing in [1.2, 6]. (The reader,
+// VtpCloud.h, has refused non-positive rho, mass, volume and viscosity already.)
 std::vector<std::string> prepareFluidFields(const FlowSetup& setup, ParticleCloud& fluid);
 
 // The pressure the flow starts `fluid` with: eq. (3), p = c^2 (rho - rho_s), on the fields

@@ -1,13 +1,11 @@
-#include "solver/SurfaceTensionSetup.h"
+#include "surface/SurfaceTensionSetup.h"
 
 #include <cmath>
-#include <filesystem>
 #include <numbers>
 #include <string>
 
 #include "core/Error.h"
 #include "core/dictionary/Dictionary.h"
-#include "materials/MaterialLibrary.h"
 
 namespace sphcast {
 
@@ -28,16 +26,14 @@ std::string wettingUnsupported(const std::string& dictName) {
 }
 }  // namespace
 
-SurfaceTensionSetup readSurfaceTensionSetup(const CaseFolder& caseFolder, const FlowSetup& flow) {
+SurfaceTensionSetup readSurfaceTensionSetup(const CaseDescription& description) {
   SurfaceTensionSetup setup;
-  const auto modelsFile = caseFolder.constantFile("physicsModels");
-  if (!std::filesystem::exists(modelsFile)) return setup;
-  const Dictionary models = Dictionary::read(modelsFile);
-  if (!models.found("surfaceTension")) return setup;
-  const Dictionary& dict = models.subDict("surfaceTension");
-  std::vector<std::string> choices{"none"};
-  for (const std::string& name : surfaceTensionModelNames()) choices.push_back(name);
-  setup.model = dict.getChoiceOrDefault("model", choices, surfaceTensionModelNames().front());
+  const Dictionary* entry = description.modelsEntry("surfaceTension");
+  if (!entry) return setup;
+  const Dictionary& models = description.physicsModels();
+  const Dictionary& dict = *entry;
+  setup.model = dict.found("model") ? surfaceTensionModels().choose(dict, "model", {"none"})
+                                    : surfaceTensionModels().names().front();
   const bool energy = setup.model == "surfaceEnergy";
   // each model's keys: a key of the other model is a mistake, not something to ignore (with
   // none, any model's key may wait there)
@@ -48,7 +44,7 @@ SurfaceTensionSetup readSurfaceTensionSetup(const CaseFolder& caseFolder, const 
     dict.checkKeys({"model", "contactAngle"});
   }
   if (setup.model == "none") return setup;
-  if (!flow.enabled) {
+  if (!description.hasFlow()) {
     throw DictionaryError(
         dict.found("model") ? dict.location("model") : models.location("surfaceTension"),
         "surface tension acts on the flow's fluid, but " + models.name() +
@@ -56,8 +52,8 @@ SurfaceTensionSetup readSurfaceTensionSetup(const CaseFolder& caseFolder, const 
   }
   setup.enabled = true;
   SurfaceTensionSettings& settings = setup.settings;
-  settings.dimension = flow.settings.dimension;
-  settings.supportRadius = flow.settings.supportRadius;
+  settings.dimension = description.dimension();
+  settings.supportRadius = description.supportRadius();
 
   if (dict.found("energyFactor")) {
     const std::string mustBe =
@@ -113,17 +109,9 @@ SurfaceTensionSetup readSurfaceTensionSetup(const CaseFolder& caseFolder, const 
     }
   }
 
-  settings.densityCoupling =
-      dict.getChoiceOrDefault("densityCoupling", {"on", "off"}, "on") == "on";
+  settings.densityCoupling = dict.getOrDefault<bool>("densityCoupling", true);
 
-  const MaterialLibrary materials =
-      MaterialLibrary::read(caseFolder.constantFile("physicalProperties"));
-  const bool mapped =
-      models.found("materials") && models.subDict("materials").found(flow.fluidCloud);
-  const Material& fluid =
-      mapped ? materials.get(models.subDict("materials").get<std::string>(flow.fluidCloud),
-                             models.subDict("materials").location(flow.fluidCloud), "materials")
-             : materials.get(flow.fluidCloud, models.subDict("flow").location("fluid"), "fluid");
+  const Material& fluid = description.fluidMaterial();
   settings.gasTension = fluid.requireSurfaceTension("the surface tension");
   return setup;
 }

@@ -1,4 +1,4 @@
-#include "solver/BodySetup.h"
+#include "bodies/BodySetup.h"
 
 #include <cmath>
 #include <filesystem>
@@ -148,9 +148,9 @@ RigidBodySettings readBody(const Dictionary& body, const std::string& name) {
 }
 }  // namespace
 
-BodySetup readBodySetup(const CaseFolder& caseFolder) {
+BodySetup readBodySetup(const CaseDescription& description) {
   BodySetup setup;
-  const auto file = caseFolder.constantFile("dynamicBodies");
+  const auto file = description.folder().constantFile("dynamicBodies");
   if (!std::filesystem::exists(file)) return setup;
   const Dictionary bodies = Dictionary::read(file);
   std::set<std::string> clouds;

@@ -2,24 +2,20 @@
 
 #include <cstdint>
 #include <map>
-#include <optional>
 #include <string>
 #include <vector>
 
-#include "core/CaseFolder.h"
+#include "case/CaseDescription.h"
 #include "core/Real.h"
 #include "core/dictionary/Dictionary.h"
-#include "materials/MaterialLibrary.h"
 #include "particles/CellGrid.h"
 
 namespace sphcast {
 
 // What constant/physicsModels asks of the heat transfer (thermal/HeatTransferRegistration.h
-// lists the paths), and the clouds' materials:
+// lists the paths; the clouds, their materials, the dimension and h are the case's:
+// case/CaseDescription.h):
 //
-//   materials    { metal AC4CH; mold iron; }   // optional: cloud -> material of
-//                                              // constant/physicalProperties (default: a cloud's
-//                                              // material is the one named like the cloud)
 //   heatTransfer
 //   {
 //       clouds           (metal mold);        // the clouds that carry heat: of the start time,
@@ -30,34 +26,25 @@ namespace sphcast {
 //       interval         auto;                // optional: auto | everyStep (see below)
 //       conduction on;  moldContact {...}  atmosphere {...}  radiation {...}
 //   }
-//
-// system/sphSchemes gives supportRadius (h) to a case with heat and no flow.
 struct HeatSetup {
   bool enabled = false;
   Dictionary heatTransfer;  // the sub-dictionary, for the paths to read
   std::vector<std::string> clouds;
-  SourceLocation cloudsAt;
   std::map<std::string, double> fixedTemperature;  // cloud -> K
   // cloud -> (patch id, K) of its held patches, and their names for the log
   std::map<std::string, std::vector<std::pair<std::int64_t, double>>> heldPatches;
   std::map<std::string, std::vector<std::string>> heldPatchNames;
-  std::map<std::string, std::string> materialOfCloud;
-  std::map<std::string, SourceLocation> materialNamedAt;  // where each cloud's material is named
   // How often the heat paths run while a flow steps: every flow step, or (auto) in steps of
   // their own once the flow's steps add up to half of the heat's stable step, and at every
   // write (CastingSolver::evolve).
   bool heatEveryFlowStep = false;
   int dimension = 3;
   Real supportRadius = 0;
-  PeriodicBox periodic;  // physicsModels' periodic axes (the flow's when there is one)
-  std::optional<MaterialLibrary> materials;
-
-  // The material of a heat cloud (error at the place it is named, listing the materials).
-  const Material& materialOf(const std::string& cloud) const;
+  PeriodicBox periodic;  // physicsModels' periodic axes
 };
 
-// Reads and checks physicsModels (and physicalProperties, sphSchemes when heat is on);
-// errors name file, line and key.
-HeatSetup readHeatSetup(const CaseFolder& caseFolder);
+// Reads and checks heatTransfer (and that every heat cloud's material is in
+// physicalProperties); errors name file, line and key.
+HeatSetup readHeatSetup(const CaseDescription& description);
 
 }  // namespace sphcast

@@ -35,17 +35,17 @@ CastingSolver::CastingSolver(const CaseFolder& caseFolder, const Communicator& c
       parallel_(comm.size() > 1),
       repairedWrites_(repairInterruptedWrites(caseFolder, comm)),
       time_(caseFolder),
+      description_(caseFolder),
       // constant/g for a flow or ballistic clouds; a case that only conducts heat needs none
-      gravityFile_(readGravityIfPresent(caseFolder)),
-      gravity_(gravityFile_.value_or(Vector::Zero())),
+      gravity_(description_.gravity().value_or(Vector::Zero())),
       motion_(gravity_),
-      flowSetup_(readFlowSetup(caseFolder, gravityFile_)),
-      heatSetup_(readHeatSetup(caseFolder)),
-      surfaceTensionSetup_(readSurfaceTensionSetup(caseFolder, flowSetup_)),
-      solidificationSetup_(readSolidificationSetup(caseFolder, flowSetup_, heatSetup_)),
-      bodySetup_(readBodySetup(caseFolder)),
-      inletSetup_(readInletSetup(caseFolder, flowSetup_.fluidCloud,
-                                 flowSetup_.enabled ? flowSetup_.settings.dimension : 3)),
+      flowSetup_(readFlowSetup(description_)),
+      heatSetup_(readHeatSetup(description_)),
+      surfaceTensionSetup_(readSurfaceTensionSetup(description_)),
+      solidificationSetup_(readSolidificationSetup(description_)),
+      bodySetup_(readBodySetup(description_)),
+      inletSetup_(readInletSetup(description_)),
+      heatSchedule_(!flowSetup_.enabled || heatSetup_.heatEveryFlowStep),
       writer_(caseFolder, time_.settings().purgeWrite, comm) {
   if (parallel_) {
     time_.agreeOnChanges([this](bool changed) { return comm_.any(changed); },
@@ -97,7 +97,7 @@ CastingSolver::CastingSolver(const CaseFolder& caseFolder, const Communicator& c
     }
   } else {
     // ballistic clouds need constant/g: reading it again gives the missing file's error
-    if (!gravityFile_) readGravity(caseFolder_);
+    if (!description_.gravity()) readGravity(caseFolder_);
     for (const ParticleCloud& cloud : clouds_) {
       info() << "Cloud " << cloud.name() << ": " << cloud.size() << " particles"
              << (cloud.hasVectorField("U") ? ", moving ballistically" : ", static (no U field)")
@@ -150,9 +150,10 @@ void CastingSolver::loadHeatClouds() {
     if (!std::filesystem::exists(file)) {
       std::string present;
       for (const ParticleCloud& cloud : clouds_) present += " " + cloud.name();
-      throw DictionaryError(heatSetup_.cloudsAt, "heat cloud '" + name + "' is neither in time " +
-                                                     time_.startTimeName() + " (which holds (" +
-                                                     present + " )) nor in constant/particles");
+      throw DictionaryError(description_.heatCloudsAt(),
+                            "heat cloud '" + name + "' is neither in time " +
+                                time_.startTimeName() + " (which holds (" + present +
+                                " )) nor in constant/particles");
     }
     clouds_.push_back(readOnMaster([&] { return readCloudVtp(file, name); }, comm_));
     info() << "Cloud " << name << ": from constant/particles (carries heat: written from now on)\n";
@@ -162,14 +163,8 @@ void CastingSolver::loadHeatClouds() {
 // Every cloud a model works on, registered once: the flow's fluid moves, everything else is
 // at rest (a body's mold is registered again as rigid by setUpBodies).
 void CastingSolver::setUpNeighbourhood() {
-  const Real radius =
-      flowSetup_.enabled ? flowSetup_.settings.supportRadius : heatSetup_.supportRadius;
-  const PeriodicBox periodic =
-      flowSetup_.enabled ? flowSetup_.settings.periodic : heatSetup_.periodic;
-  if (flowSetup_.enabled && heatSetup_.enabled &&
-      heatSetup_.supportRadius != flowSetup_.settings.supportRadius) {
-    throw Error("internal: flow and heat read different supportRadius");
-  }
+  const Real radius = description_.supportRadius();
+  const PeriodicBox periodic = description_.periodic();
   // pair lists reused over steps only where particles move (a heat-only case has no flow)
   const Real skin = flowSetup_.enabled ? flowSetup_.settings.neighbourListSkin * radius : Real(0);
   neighbourhood_ = std::make_unique<Neighbourhood>(radius, periodic, skin);
@@ -246,8 +241,7 @@ void CastingSolver::decompose() {
   decomposition_ = std::make_unique<DomainDecomposition>(
       comm_, decomposeParDict,
       static_cast<double>(neighbourhood_->radius() + neighbourhood_->skin()),
-      neighbourhood_->periodicBox(),
-      flowSetup_.enabled ? flowSetup_.settings.dimension : heatSetup_.dimension);
+      neighbourhood_->periodicBox(), description_.dimension());
   std::vector<DomainDecomposition::Cloud> decomposed;
   if (!flowSetup_.enabled) {
     for (const std::string& name : heatSetup_.clouds) decomposed.push_back({&cloudNamed(name)});
@@ -355,8 +349,8 @@ void CastingSolver::setUpFlow() {
   if (surfaceTensionSetup_.enabled) {
     SurfaceTensionSettings tension = surfaceTensionSetup_.settings;
     tension.spacing = static_cast<Real>(fluid.attributes().at("spacing"));
-    surfaceTension_ =
-        makeSurfaceTensionModel(surfaceTensionSetup_.model, tension, fluid, walls, *neighbourhood_);
+    surfaceTension_ = surfaceTensionModels().build(surfaceTensionSetup_.model, tension, fluid,
+                                                   walls, *neighbourhood_);
     flow_->addForceModel(*surfaceTension_);
     info() << "Surface tension: " << surfaceTension_->summary(settings.soundSpeed) << '\n';
     const std::string warned = surfaceTension_->settingsWarning(settings.soundSpeed);
@@ -366,13 +360,13 @@ void CastingSolver::setUpFlow() {
 
 void CastingSolver::setUpHeat() {
   HeatTransferContext context;
-  context.dimension = flowSetup_.enabled ? flowSetup_.settings.dimension : heatSetup_.dimension;
+  context.dimension = description_.dimension();
   context.supportRadius = neighbourhood_->radius();
   context.neighbourhood = neighbourhood_.get();
   double spacing = 0;
   for (const std::string& name : heatSetup_.clouds) {
     ParticleCloud& cloud = cloudNamed(name);
-    HeatCloud heat{&cloud, &heatSetup_.materialOf(name), false, 0, {}};
+    HeatCloud heat{&cloud, &description_.heatCloudMaterial(name), false, 0, {}};
     if (const auto held = heatSetup_.fixedTemperature.find(name);
         held != heatSetup_.fixedTemperature.end()) {
       heat.fixedTemperature = true;
@@ -476,7 +470,7 @@ void CastingSolver::recordCriticalGradients() {
   const std::vector<std::size_t> pending = solidification_->pendingCriticalGradients();
   if (pending.empty()) return;
   ParticleCloud& metal = cloudNamed(solidificationSetup_.cloud);
-  const int dimension = flow_ ? flowSetup_.settings.dimension : heatSetup_.dimension;
+  const int dimension = description_.dimension();
   const std::vector<Real> volume = particleVolumes(metal, dimension);
   const NeighbourList& pairs = neighbourhood_->pairs(metal, metal);
   auto& gradient = metal.scalarField("criticalGradient");

@@ -1,4 +1,4 @@
-#include "solver/InletSetup.h"
+#include "inlets/InletSetup.h"
 
 #include <cmath>
 #include <filesystem>
@@ -68,10 +68,9 @@ PouringInletSettings readInlet(const Dictionary& inlet, const std::string& name,
 }
 }  // namespace
 
-InletSetup readInletSetup(const CaseFolder& caseFolder, const std::string& fluidCloud,
-                          int dimension) {
+InletSetup readInletSetup(const CaseDescription& description) {
   InletSetup setup;
-  const auto file = caseFolder.constantFile("inlets");
+  const auto file = description.folder().constantFile("inlets");
   if (!std::filesystem::exists(file)) return setup;
   const Dictionary inlets = Dictionary::read(file);
   for (const std::string& name : inlets.keys()) {
@@ -80,7 +79,8 @@ InletSetup readInletSetup(const CaseFolder& caseFolder, const std::string& fluid
                             "'" + name + "' in " + inlets.name() +
                                 " is not an inlet: each inlet is a sub-dictionary { centre ...; }");
     }
-    setup.inlets.push_back(readInlet(inlets.subDict(name), name, fluidCloud, dimension));
+    setup.inlets.push_back(
+        readInlet(inlets.subDict(name), name, description.fluidCloud(), description.dimension()));
     setup.declaredAt[name] = inlets.subDict(name).location();
   }
   return setup;

@@ -2,11 +2,9 @@
 
 #include <optional>
 
-#include "core/CaseFolder.h"
+#include "case/CaseDescription.h"
 #include "materials/Material.h"
 #include "solidification/Solidification.h"
-#include "solver/FlowSetup.h"
-#include "solver/HeatSetup.h"
 
 namespace sphcast {
 
@@ -65,7 +63,6 @@ struct SolidificationSetup {
   std::optional<Material> material;  // its
 };
 
-SolidificationSetup readSolidificationSetup(const CaseFolder& caseFolder, const FlowSetup& flow,
-                                            const HeatSetup& heat);
+SolidificationSetup readSolidificationSetup(const CaseDescription& description);
 
 }  // namespace sphcast

@@ -3,8 +3,7 @@
 #include <optional>
 #include <string>
 
-#include "core/CaseFolder.h"
-#include "solver/FlowSetup.h"
+#include "case/CaseDescription.h"
 #include "surface/SurfaceTensionModel.h"
 
 namespace sphcast {
@@ -33,11 +32,10 @@ namespace sphcast {
 // the flow's walls: it needs the flow.
 struct SurfaceTensionSetup {
   bool enabled = false;
-  std::string model;  // a name of surfaceTensionModelNames(), or none
+  std::string model;                // a name of surfaceTensionModels(), or none
   SurfaceTensionSettings settings;  // spacing is the fluid cloud's, set by the solver
 };
 
-SurfaceTensionSetup readSurfaceTensionSetup(const CaseFolder& caseFolder,
-                                            const FlowSetup& flow);
+SurfaceTensionSetup readSurfaceTensionSetup(const CaseDescription& description);
 
 }  // namespace sphcast

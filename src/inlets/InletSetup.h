@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "core/CaseFolder.h"
+#include "case/CaseDescription.h"
 #include "core/dictionary/Dictionary.h"
 #include "inlets/PouringInlet.h"
 
@@ -32,8 +32,8 @@ struct InletSetup {
   std::map<std::string, SourceLocation> declaredAt;
 };
 
-InletSetup readInletSetup(const CaseFolder& caseFolder, const std::string& fluidCloud,
-                          int dimension);
+// They feed the case's fluid (case/CaseDescription.h), in its dimension.
+InletSetup readInletSetup(const CaseDescription& description);
 
 // The text of <time>/uniform/inlets.
 std::string inletStateFile(const std::string& timeName,

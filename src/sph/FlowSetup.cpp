@@ -1,4 +1,4 @@
-#include "solver/FlowSetup.h"
+#include "sph/FlowSetup.h"
 
 #include <algorithm>
 #include <cmath>
@@ -8,14 +8,12 @@
 
 #include "core/Error.h"
 #include "core/dictionary/Dictionary.h"
-#include "materials/MaterialLibrary.h"
 #include "sph/EquationOfState.h"
 
 namespace sphcast {
 
 namespace {
 
-const Dimensions length{{0, 1, 0, 0, 0, 0, 0}};
 const Dimensions speed{{0, 1, -1, 0, 0, 0, 0}};
 
 // The range of h/dx (supportRadius over the particle spacing) a run can trust: below it the
@@ -37,71 +35,39 @@ Value positive(const Dictionary& dict, const std::string& key, const Dimensions&
 
 }  // namespace
 
-// periodic { x (0 0.2); z (-0.01 0.01); }: each axis named with its interval [lower, upper).
-PeriodicBox readPeriodicBox(const Dictionary& periodic, Real supportRadius, int dimension) {
-  PeriodicBox box;
-  const std::vector<std::string> axes{"x", "y", "z"};
-  periodic.checkKeys(axes);
-  for (int axis = 0; axis < 3; ++axis) {
-    const std::string& key = axes[static_cast<std::size_t>(axis)];
-    if (!periodic.found(key)) continue;
-    const auto interval = periodic.get<Eigen::Vector2d>(key, length);
-    const double period = interval[1] - interval[0];
-    // the minimum image is unique only for pairs closer than half a period
-    if (!(period > 2 * static_cast<double>(supportRadius))) {
-      throw DictionaryError(periodic.location(key),
-                            "periodic interval of " + key + " must be longer than twice the " +
-                                "supportRadius (" + std::to_string(supportRadius) + " m) in " +
-                                periodic.name());
-    }
-    if (dimension == 2 && axis == 2) {
-      throw DictionaryError(periodic.location(key), "a 2D case has no periodic z axis");
-    }
-    box.setPeriodic(axis, static_cast<Real>(interval[0]), static_cast<Real>(period));
-  }
-  return box;
-}
-
-FlowSetup readFlowSetup(const CaseFolder& caseFolder, const std::optional<Vector>& gravityFile) {
+FlowSetup readFlowSetup(const CaseDescription& description) {
   FlowSetup setup;
-  const auto modelsFile = caseFolder.constantFile("physicsModels");
-  if (!std::filesystem::exists(modelsFile)) return setup;
-  const Dictionary models = Dictionary::read(modelsFile);
-  models.checkKeys(
-      {"dimension", "periodic", "materials", "flow", "heatTransfer", "surfaceTension",
-       "solidification"});
-  if (!models.found("flow")) return setup;
-  const Dictionary& flow = models.subDict("flow");
-  flow.checkKeys({"model", "fluid", "walls"});
-  if (flow.getChoice("model", {"none", "weaklyCompressible"}) == "none") return setup;
+  const Dictionary* flow = description.modelsEntry("flow");
+  if (!flow) return setup;
+  if (flow->getChoice("model", {"none", "weaklyCompressible"}) == "none") return setup;
   setup.enabled = true;
-  if (!gravityFile) {
+  const Dictionary& models = description.physicsModels();
+  if (!description.gravity()) {
     throw DictionaryError(models.location("flow"),
                           "a flow needs gravity, but " +
-                              caseFolder.constantFile("g").string() +
+                              description.folder().constantFile("g").string() +
                               " does not exist (write 'dimensions [0 1 -2 0 0 0 0]; value (0 0 "
                               "-9.81);' there, or (0 0 0) for none)");
   }
-  const Vector gravity = *gravityFile;
-  setup.fluidCloud = flow.get<std::string>("fluid");
-  setup.wallClouds = flow.getOrDefault<std::vector<std::string>>("walls", {});
+  const Vector gravity = *description.gravity();
+  setup.fluidCloud = description.fluidCloud();
+  setup.wallClouds = description.wallClouds();
 
-  const Dictionary schemes = Dictionary::read(caseFolder.systemFile("sphSchemes"));
+  const Dictionary& schemes = description.schemes();
   schemes.checkKeys({"densityScheme", "kernelCorrection", "viscousForm", "wallSlip",
                      "wallDissipation", "supportRadius", "soundSpeed", "deltaSPHCoeffs",
                      "wallClearance", "neighbourListSkin"});
   FlowSettings& settings = setup.settings;
   settings.densityScheme = schemes.getChoice("densityScheme", {"riemann", "standard", "deltaSPH"});
-  settings.kernelCorrection =
-      schemes.getChoiceOrDefault("kernelCorrection", {"on", "off"}, "off") == "on";
+  settings.kernelCorrection = schemes.getOrDefault<bool>("kernelCorrection", false);
   settings.viscousForm = schemes.getChoice("viscousForm", {"Morris", "Cleary"});
   settings.slipWalls =
       schemes.getChoiceOrDefault("wallSlip", {"noSlip", "slip"}, "noSlip") == "slip";
   settings.wallDissipationNormalApproach =
       schemes.getChoiceOrDefault("wallDissipation", {"relativeVelocity", "normalApproach"},
                                  "relativeVelocity") == "normalApproach";
-  settings.supportRadius = positive<Real>(schemes, "supportRadius", length);
-  setup.supportRadiusAt = schemes.location("supportRadius");
+  settings.supportRadius = description.supportRadius();
+  setup.supportRadiusAt = description.supportRadiusAt();
   settings.soundSpeed = positive<Real>(schemes, "soundSpeed", speed);
   if (schemes.found("deltaSPHCoeffs")) {
     const Dictionary& coeffs = schemes.subDict("deltaSPHCoeffs");
@@ -130,34 +96,20 @@ FlowSetup readFlowSetup(const CaseFolder& caseFolder, const std::optional<Vector
   if (!(settings.neighbourListSkin >= 0 && settings.neighbourListSkin <= 1)) {
     throw DictionaryError(schemes.location("neighbourListSkin"),
                           "'neighbourListSkin' (a fraction of the supportRadius) must lie in "
-                          "[0, 1] in " + schemes.name());
+                          "[0, 1] in " +
+                              schemes.name());
   }
   settings.gravity = gravity;
-  settings.dimension = models.getOrDefault<int>("dimension", 3);
-  if (settings.dimension != 2 && settings.dimension != 3) {
-    throw DictionaryError(models.location("dimension"),
-                          "'dimension' must be 2 or 3 in " + models.name());
-  }
+  settings.dimension = description.dimension();
   if (settings.dimension == 2 && gravity[2] != 0) {
     throw DictionaryError(models.location("dimension"),
                           "a 2D case lies in the x-y plane, but constant/g has a z component");
   }
-  if (models.found("periodic")) {
-    settings.periodic =
-        readPeriodicBox(models.subDict("periodic"), settings.supportRadius, settings.dimension);
-  }
+  settings.periodic = description.periodic();
 
   // The fluid's material must be in physicalProperties, which may hold other materials too
   // (setCastFields' clouds may use them); the error is where the name is written.
-  const MaterialLibrary materials =
-      MaterialLibrary::read(caseFolder.constantFile("physicalProperties"));
-  // the fluid cloud's material: named in `materials { cloud material; }`, else like the cloud
-  const bool mapped =
-      models.found("materials") && models.subDict("materials").found(setup.fluidCloud);
-  const Material& fluid =
-      mapped ? materials.get(models.subDict("materials").get<std::string>(setup.fluidCloud),
-                             models.subDict("materials").location(setup.fluidCloud), "materials")
-             : materials.get(setup.fluidCloud, flow.location("fluid"), "fluid");
+  const Material& fluid = description.fluidMaterial();
   setup.restDensity = fluid.requireDensity("the flow");
   setup.viscosity = fluid.requireViscosity("the flow");
   return setup;
@@ -209,8 +161,8 @@ SoundSpeedCheck checkSoundSpeed(const FlowSettings& settings, const ParticleClou
           << check.initialSpeed << " m/s, a fall H = " << check.fallHeight
           << " m from its top to the lowest wall, or its own bottom): Mach up to " << check.mach;
   if (check.tooLow) {
-    message << ", above " << maxStartMach << ": the density will stray by about Ma^2 = "
-            << 100 * check.mach * check.mach
+    message << ", above " << maxStartMach
+            << ": the density will stray by about Ma^2 = " << 100 * check.mach * check.mach
             << " % from rho_s (the pressure waves with it); raise soundSpeed in "
                "system/sphSchemes to at least "
             << 10 * check.largestSpeed << " m/s (10 times that speed; the step shrinks as 1/c)";

@@ -1,0 +1,139 @@
+#include "case/CaseDescription.h"
+
+#include <algorithm>
+#include <set>
+#include <sstream>
+
+#include "core/Error.h"
+#include "core/Gravity.h"
+
+namespace sphcast {
+
+namespace {
+const Dimensions length{{0, 1, 0, 0, 0, 0, 0}};
+}  // namespace
+
+// periodic { x (0 0.2); z (-0.01 0.01); }: each axis named with its interval [lower, upper).
+PeriodicBox readPeriodicBox(const Dictionary& periodic, Real supportRadius, int dimension) {
+  PeriodicBox box;
+  const std::vector<std::string> axes{"x", "y", "z"};
+  periodic.checkKeys(axes);
+  for (int axis = 0; axis < 3; ++axis) {
+    const std::string& key = axes[static_cast<std::size_t>(axis)];
+    if (!periodic.found(key)) continue;
+    const auto interval = periodic.get<Eigen::Vector2d>(key, length);
+    const double period = interval[1] - interval[0];
+    // the minimum image is unique only for pairs closer than half a period
+    if (!(period > 2 * static_cast<double>(supportRadius))) {
+      throw DictionaryError(periodic.location(key),
+                            "periodic interval of " + key + " must be longer than twice the " +
+                                "supportRadius (" + std::to_string(supportRadius) + " m) in " +
+                                periodic.name());
+    }
+    if (dimension == 2 && axis == 2) {
+      throw DictionaryError(periodic.location(key), "a 2D case has no periodic z axis");
+    }
+    box.setPeriodic(axis, static_cast<Real>(interval[0]), static_cast<Real>(period));
+  }
+  return box;
+}
+
+CaseDescription::CaseDescription(const CaseFolder& caseFolder)
+    : folder_(caseFolder), gravity_(readGravityIfPresent(caseFolder)) {
+  const auto modelsFile = folder_.constantFile("physicsModels");
+  if (!std::filesystem::exists(modelsFile)) return;
+  hasModels_ = true;
+  models_ = Dictionary::read(modelsFile);
+  models_.checkKeys({"dimension", "periodic", "materials", "flow", "heatTransfer", "surfaceTension",
+                     "solidification"});
+  dimension_ = models_.getOrDefault<int>("dimension", 3);
+  if (dimension_ != 2 && dimension_ != 3) {
+    throw DictionaryError(models_.location("dimension"),
+                          "'dimension' must be 2 or 3 in " + models_.name());
+  }
+  if (const Dictionary* flow = modelsEntry("flow")) {
+    flow->checkKeys({"model", "fluid", "walls"});
+    if (flow->get<std::string>("model") != "none") {
+      fluidCloud_ = flow->get<std::string>("fluid");
+      wallClouds_ = flow->getOrDefault<std::vector<std::string>>("walls", {});
+    }
+  }
+  if (const Dictionary* heat = modelsEntry("heatTransfer")) {
+    heatClouds_ = heat->get<std::vector<std::string>>("clouds");
+    heatCloudsAt_ = heat->location("clouds");
+    if (heatClouds_.empty()) {
+      throw DictionaryError(heatCloudsAt_, "'clouds' in " + heat->name() + " names no cloud");
+    }
+    std::set<std::string> unique;
+    for (const std::string& cloud : heatClouds_) {
+      if (!unique.insert(cloud).second) {
+        throw DictionaryError(heatCloudsAt_,
+                              "'clouds' in " + heat->name() + " names '" + cloud + "' twice");
+      }
+    }
+  }
+}
+
+const Dictionary* CaseDescription::modelsEntry(std::string_view key) const {
+  return models_.found(key) ? &models_.subDict(key) : nullptr;
+}
+
+bool CaseDescription::hasSchemes() const {
+  return schemes_ || std::filesystem::exists(folder_.systemFile("sphSchemes"));
+}
+
+const Dictionary& CaseDescription::schemes() const {
+  if (!schemes_) schemes_ = Dictionary::read(folder_.systemFile("sphSchemes"));
+  return *schemes_;
+}
+
+const MaterialLibrary& CaseDescription::materials() const {
+  if (!materials_) materials_ = MaterialLibrary::read(folder_.constantFile("physicalProperties"));
+  return *materials_;
+}
+
+Real CaseDescription::supportRadius() const {
+  const Real h = schemes().get<Real>("supportRadius", length);
+  if (!(h > 0)) {
+    std::ostringstream message;
+    message << "'supportRadius' is " << h << " in " << schemes().name()
+            << "; it must be positive (valid range: > 0)";
+    throw DictionaryError(schemes().location("supportRadius"), message.str());
+  }
+  return h;
+}
+
+SourceLocation CaseDescription::supportRadiusAt() const {
+  return schemes().location("supportRadius");
+}
+
+PeriodicBox CaseDescription::periodic() const {
+  const Dictionary* periodic = modelsEntry("periodic");
+  return periodic ? readPeriodicBox(*periodic, supportRadius(), dimension_) : PeriodicBox();
+}
+
+SourceLocation CaseDescription::fluidCloudAt() const {
+  return models_.subDict("flow").location("fluid");
+}
+
+bool CaseDescription::carriesHeat(const std::string& cloud) const {
+  return std::find(heatClouds_.begin(), heatClouds_.end(), cloud) != heatClouds_.end();
+}
+
+const Material& CaseDescription::materialOf(const std::string& cloud, const SourceLocation& namedAt,
+                                            std::string_view key) const {
+  if (const Dictionary* mapping = modelsEntry("materials"); mapping && mapping->found(cloud)) {
+    return materials().get(mapping->get<std::string>(cloud), mapping->location(cloud), "materials");
+  }
+  return materials().get(cloud, namedAt, key);
+}
+
+const Material& CaseDescription::heatCloudMaterial(const std::string& cloud) const {
+  return materialOf(cloud, heatCloudsAt_, "clouds");
+}
+
+const Material& CaseDescription::fluidMaterial() const {
+  return materialOf(fluidCloud_, fluidCloudAt(), "fluid");
+}
+
+}  // namespace sphcast
