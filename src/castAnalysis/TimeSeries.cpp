@@ -52,11 +52,13 @@ std::vector<std::string> cellsOf(const std::string& row) {
   return cells;
 }
 
-// A CSV cell for the report: 6 significant digits.
+// A CSV cell for the report: 6 significant digits; a quantity the cloud does not have (nan in
+// the CSV: a mold's solid fraction, a fixed cloud's kinetic energy) is a dash.
 std::string shortNumber(const std::string& cell) {
   char* end = nullptr;
   const double value = std::strtod(cell.c_str(), &end);
-  return end == cell.c_str() ? cell : formatNumber(value, 6);
+  if (end == cell.c_str()) return cell;
+  return std::isnan(value) ? "–" : formatNumber(value, 6);
 }
 
 int column(const std::string& name) {
@@ -252,6 +254,7 @@ ReportSection TimeSeries::finish() {
          << cell("frozen") << " / " << cell("flowing") << " | " << cell("kineticEnergy") << " | "
          << cell("internalEnergyChange") << " |\n";
   }
+  text << "\n(–: the cloud has no such quantity, e.g. a mold's solid fraction.)\n";
   if (!lastEnergyRow_.empty()) {
     const auto cells = cellsOf(lastEnergyRow_);
     text << "\nHeat books of every heat cloud at " << shortNumber(cells[0])

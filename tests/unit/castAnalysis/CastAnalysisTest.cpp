@@ -287,6 +287,35 @@ TEST(TimeSeries, HeatBooksBalanceAcrossTheClouds) {
   EXPECT_EQ(cloudRow.rfind("3,8,800,835,870,0.25,6,", 0), 0u) << cloudRow;
 }
 
+// The report's history table: a quantity a cloud does not have (a held mold's solid fraction,
+// its frozen count and its kinetic energy) is a dash, not nan; the metal's are numbers.
+TEST(TimeSeries, TheReportShowsWhatACloudLacksAsADash) {
+  MapsCase maps("");
+  maps.context.clouds = {"metal", "mold"};
+  auto analyses = maps.read("history { type timeSeries; }");
+  ParticleCloud metal = latticeBlock(2, 0.01, 3);
+  metal.addScalarField("T");
+  metal.addScalarField("solidFraction");
+  metal.addScalarField("u");
+  metal.addVectorField("U");
+  ParticleCloud mold = latticeBlock(2, 0.01, 3);
+  mold = ParticleCloud("mold");
+  mold.resize(2);
+  for (Real& m : mold.addScalarField("mass")) m = 1;
+  for (Real& T : mold.addScalarField("T")) T = 300;
+  for (int t = 1; t <= 2; ++t) {
+    WrittenTime time;
+    time.folder = {double(t), std::to_string(t)};
+    time.clouds = {metal, mold};
+    analyses[0]->add(time);
+  }
+  const std::string markdown = analyses[0]->finish().markdown;
+  EXPECT_EQ(markdown.find("nan"), std::string::npos) << markdown;
+  EXPECT_NE(markdown.find("| mold | 2 | 300 / 300 / 300 | – | – / 0 | – |"), std::string::npos)
+      << markdown;
+  EXPECT_NE(markdown.find("| metal | 2 | 0 / 0 / 0 | 0 | "), std::string::npos) << markdown;
+}
+
 // A liquid pool that splits: at t = 1 one region, at t = 2 a pocket of 2 x 2 x 2 particles cut
 // off from it (a solid wall of particles between), at t = 3 the pocket frozen. One hot spot,
 // closed between 1 and 2 s, of 8 dx^3 at the pocket's centre, last seen at 2 s.
