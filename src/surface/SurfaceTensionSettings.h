@@ -30,8 +30,8 @@ struct SurfaceTensionSettings {
   Real coreRadius = 1;
   // surfaceEnergy: the energy depends on the densities too (V_j = m_j / rho_j in s_i, q_i,
   // V_i^(1-1/d)); the continuity equation changes them as the particles move, and that part of
-  // -dE/dt acts as a pressure p_j = rho_j^2 Psi_j / m_j, Psi_j = dE/drho_j. Without it (off
-  // only to compare) the force is -dE/dx at fixed densities alone, and the surface layer's
+  // -dE/dt acts as a pressure p_j = rho_j^2 Psi_j / m_j, Psi_j = dE/drho_j. Without it (a
+  // study's setting, no dictionary key: SurfaceForceTest checks -dE/dx with it off) the force is -dE/dx at fixed densities alone, and the surface layer's
   // crowding is resisted by nothing in the energy: the static drop's pressure came out 10
   // times Laplace's.
   bool densityCoupling = true;

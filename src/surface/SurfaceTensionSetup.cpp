@@ -38,8 +38,8 @@ SurfaceTensionSetup readSurfaceTensionSetup(const CaseDescription& description) 
   // each model's keys: a key of the other model is a mistake, not something to ignore (with
   // none, any model's key may wait there)
   if (energy || setup.model == "none") {
-    dict.checkKeys({"model", "energyFactor", "contactAngle", "solidTension", "wallSmoothing",
-                    "coreRadius", "densityCoupling"});
+    dict.checkKeys(
+        {"model", "energyFactor", "contactAngle", "solidTension", "wallSmoothing", "coreRadius"});
   } else {
     dict.checkKeys({"model", "contactAngle"});
   }
@@ -108,8 +108,6 @@ SurfaceTensionSetup readSurfaceTensionSetup(const CaseDescription& description) 
           "'coreRadius' (in particle spacings) must lie in [0, 1.5) in " + dict.name());
     }
   }
-
-  settings.densityCoupling = dict.getOrDefault<bool>("densityCoupling", true);
 
   const Material& fluid = description.fluidMaterial();
   settings.gasTension = fluid.requireSurfaceTension("the surface tension");

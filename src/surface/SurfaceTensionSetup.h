@@ -26,8 +26,6 @@ namespace sphcast {
 //       solidTension  0.45;           // Gamma_s, N/m, instead of contactAngle
 //       wallSmoothing 0.0045;         // eps of eq. (9), m; supportRadius by default
 //       coreRadius    1;              // r0 of the granularity kernel, in spacings (1 by default)
-//       densityCoupling on;           // on | off: the energy's change through the densities
-//                                     // as a pressure (on by default; off only to compare)
 // A key of the other model is an error. The surface tension acts on the flow's fluid, among
 // the flow's walls: it needs the flow.
 struct SurfaceTensionSetup {
