@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "core/Error.h"
+#include "post/BodyHistory.h"
 #include "post/EnergyBalance.h"
 #include "post/FieldMinMax.h"
 #include "post/MassAverage.h"
@@ -151,6 +152,7 @@ FunctionObjectTypes& functionObjectTypes() {
     registry.add<FieldMinMax>("fieldMinMax");
     registry.add<MassAverage>("massAverage");
     registry.add<EnergyBalance>("energyBalance");
+    registry.add<BodyHistory>("bodyHistory");
     return registry;
   }();
   return types;

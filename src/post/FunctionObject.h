@@ -16,6 +16,8 @@
 
 namespace sphcast {
 
+class RigidBody;
+
 // What a function object may look at, handed over by the solver once the clouds are set up.
 struct FunctionObjectContext {
   std::filesystem::path caseRoot;
@@ -24,6 +26,7 @@ struct FunctionObjectContext {
   Real supportRadius = 0;     // h of the flow (0 without one: a probe must then say)
   Vector gravity = Vector::Zero();
   std::vector<const ParticleCloud*> clouds;  // that the run steps; addresses stay valid
+  std::vector<const RigidBody*> bodies;      // of constant/dynamicBodies (every rank holds all)
   // A decomposed run's ranks: each samples its own particles, rank 0 writes the rows.
   Communicator comm = Communicator::self();
 };
@@ -112,6 +115,9 @@ class FunctionObjectList {
   // unknown cloud or field, a bad location: DictionaryError naming file, line and key. In a
   // decomposed run (context.comm of more than one rank) each sums over the ranks.
   FunctionObjectList(const Dictionary& controlDict, const FunctionObjectContext& context);
+
+  // One more, after those of controlDict (the solver's bodies' history).
+  void add(std::unique_ptr<FunctionObject> object) { objects_.push_back(std::move(object)); }
 
   void execute(const TimeState& time, bool caseWriteTime);
   std::size_t size() const { return objects_.size(); }

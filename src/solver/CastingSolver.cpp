@@ -258,7 +258,6 @@ void CastingSolver::writeResults() {
 void CastingSolver::run() {
   info() << "Starting time loop\n\n";
   functions_.execute(time_.state(), false);
-  writeBodyHistory();
   while (time_.run()) {
     logRereadMessage();
     updateCoolingMode();
@@ -315,10 +314,7 @@ void CastingSolver::run() {
     const bool printBlock = stepsTaken_ % time_.settings().logInterval == 0 || time_.writeTime();
     logStep(printBlock);
     if (time_.writeTime()) addWallTime(outputSeconds_, [&] { writeResults(); });
-    addWallTime(functionSeconds_, [&] {
-      functions_.execute(time_.state(), time_.writeTime());
-      writeBodyHistory();
-    });
+    addWallTime(functionSeconds_, [&] { functions_.execute(time_.state(), time_.writeTime()); });
   }
   logRereadMessage();
   info() << "Stopping: " << time_.stopReason() << " at time " << time_.timeName() << '\n';

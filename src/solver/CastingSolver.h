@@ -98,7 +98,6 @@ class CastingSolver {
   void logInlets();
   // <time>/uniform/dynamicBodies and uniform/inlets, as the case has them
   std::vector<UniformFile> uniformStateFiles(const std::string& timeName) const;
-  void writeBodyHistory();
   void logBodies();
   void updateCoolingMode();
   double coolingMaxCo() const;  // the cooling mode's flow steps' Courant number
@@ -163,11 +162,10 @@ class CastingSolver {
   std::vector<std::vector<const ParticleCloud*>> bodyMolds_;  // the other walls, per body
   std::vector<BodyContact> bodyContacts_;                     // of the last step
   std::vector<std::string> lastGoodBodies_;                   // their state before the step
-  std::vector<std::unique_ptr<std::ofstream>> bodyHistory_;
-  std::vector<std::unique_ptr<PouringInlet>> inlets_;  // feed the fluid
-  std::vector<std::string> lastGoodInlets_;            // their state before the step
-  bool exposedAreaRestored_ = false;                   // read with a restart's clouds
-  std::vector<const ParticleCloud*> wallClouds_;       // the flow's walls
+  std::vector<std::unique_ptr<PouringInlet>> inlets_;         // feed the fluid
+  std::vector<std::string> lastGoodInlets_;                   // their state before the step
+  bool exposedAreaRestored_ = false;                          // read with a restart's clouds
+  std::vector<const ParticleCloud*> wallClouds_;              // the flow's walls
   Domain domain_;
   // The clouds before the step being taken (those that change: the fluid, the heat clouds)
   std::vector<ParticleCloud> lastGood_;

@@ -169,38 +169,6 @@ void CastingSolver::kickBodies(double deltaT) {
   }
 }
 
-// A row per step of every body: time, displacement of the centre, velocity, the fluid's force,
-// the total force, whether at the end stop (flushed: a killed run keeps its rows).
-void CastingSolver::writeBodyHistory() {
-  if (bodies_.empty() || !comm_.master()) return;  // every rank has the bodies' state
-  if (bodyHistory_.empty()) {
-    const auto folder =
-        caseFolder_.root() / "postProcessing" / "dynamicBodies" / time_.startTimeName();
-    std::filesystem::create_directories(folder);
-    for (const auto& body : bodies_) {
-      auto& file = bodyHistory_.emplace_back(
-          std::make_unique<std::ofstream>(folder / (body->settings().name + ".dat")));
-      char startLine[64];
-      std::snprintf(startLine, sizeof startLine, "# startTime %.17g\n", time_.startValue());
-      *file << startLine
-            << "# time displacement(x y z) m  velocity(x y z) m/s  fluidForce(x y z) N  "
-               "force(x y z) N  atEndStop\n";
-    }
-  }
-  for (std::size_t b = 0; b < bodies_.size(); ++b) {
-    const RigidBody& body = *bodies_[b];
-    char row[512];
-    const Vector d = body.displacement(), v = body.velocity(), f = body.fluidForce(),
-                 total = body.force();
-    std::snprintf(row, sizeof row,
-                  "%.10g  %.10g %.10g %.10g  %.10g %.10g %.10g  %.10g %.10g %.10g  %.10g %.10g "
-                  "%.10g  %d\n",
-                  time_.value(), d[0], d[1], d[2], v[0], v[1], v[2], f[0], f[1], f[2], total[0],
-                  total[1], total[2], body.atEndStop() ? 1 : 0);
-    *bodyHistory_[b] << row << std::flush;
-  }
-}
-
 void CastingSolver::logBodies() {
   const Eigen::IOFormat plain(Eigen::StreamPrecision, Eigen::DontAlignCols, " ", " ");
   for (std::size_t b = 0; b < bodies_.size(); ++b) {

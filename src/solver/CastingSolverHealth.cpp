@@ -17,7 +17,7 @@ std::string CastingSolver::checkHealth() {
   for (const ParticleCloud& cloud : clouds_) {
     if (!cloud.hasVectorField("U")) continue;  // at rest: nothing to go bad
     const bool cavities = &cloud == fluid_ && flowSetup_.settings.cavitationPressure >
-                                                   std::numeric_limits<Real>::lowest();
+                                                  std::numeric_limits<Real>::lowest();
     const CloudHealth health = measureCloudHealth(cloud, domain_, cavities);
     if (!health.finiteAndInside()) {
       problem << health.outside << " particle(s) of cloud '" << cloud.name()

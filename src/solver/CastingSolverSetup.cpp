@@ -19,6 +19,9 @@
 namespace sphcast {
 
 namespace {
+// postProcessing/dynamicBodies/<startTime>/<body>.dat (post/BodyHistory.h)
+constexpr const char* bodyHistoryName = "dynamicBodies";
+
 // Rank 0 repairs what a killed write left; the others wait for it before they look for times.
 std::vector<std::string> repairInterruptedWrites(const CaseFolder& caseFolder,
                                                  const Communicator& comm) {
@@ -514,8 +517,23 @@ void CastingSolver::setUpFunctionObjects(const Dictionary& controlDict) {
   context.gravity = gravity_;
   context.comm = comm_;
   for (const ParticleCloud& cloud : clouds_) context.clouds.push_back(&cloud);
+  for (const auto& body : bodies_) context.bodies.push_back(body.get());
   try {
     functions_ = FunctionObjectList(controlDict, context);
+    // the bodies' history, every step, which castPostProcess's bodyMotion reads
+    if (!bodies_.empty()) {
+      const Dictionary history =
+          Dictionary::parse("type bodyHistory;", "sphCastFoam's bodies' history");
+      for (const auto& object : functions_.objects()) {
+        if (object->name() == bodyHistoryName) {
+          throw DictionaryError(controlDict.subDict("functions").location(bodyHistoryName),
+                                "'" + std::string(bodyHistoryName) +
+                                    "' in controlDict's functions is the name of the bodies' "
+                                    "history, which sphCastFoam writes itself: choose another");
+        }
+      }
+      functions_.add(functionObjectTypes().build("bodyHistory", bodyHistoryName, history, context));
+    }
   } catch (const Error& error) {  // read from the dictionaries alone: every rank throws alike
     if (parallel_) throw CollectiveError(error.what());
     throw;

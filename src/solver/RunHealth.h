@@ -39,7 +39,7 @@ struct CloudHealth {
   std::size_t outside = 0;    // finite but outside the domain
   std::size_t firstBad = 0;   // index of the first of either
   Vector firstBadPosition = Vector::Zero();
-  bool hasDensity = false;             // the cloud has rho and restDensity
+  bool hasDensity = false;  // the cloud has rho and restDensity
   // max |rho / rho_s - 1| (fraction); with expansionOpensCavities max(rho / rho_s - 1, 0)
   double largestDensityDeviation = 0;
   std::size_t mostDeviating = 0;
@@ -74,7 +74,6 @@ class HealthWarnings {
   };
   std::map<std::string, Kind> kinds_;
 };
-
 
 // What the log prints of a fluid cloud at a printed step: sums in particle order (the same on
 // any number of threads).

@@ -45,7 +45,7 @@ class FunctionObjectTest : public testing::TemporaryFolderTest {
 TEST_F(FunctionObjectTest, BadEntriesAreErrorsAtTheirKey) {
   EXPECT_EQ(errorOf("P1 { type probe; cloud fluid; }"),
             "controlDict:1:22: unknown type 'probe'; did you mean 'probes'? valid type are: "
-            "(probes surfaceHeights front fieldMinMax massAverage energyBalance)");
+            "(probes surfaceHeights front fieldMinMax massAverage energyBalance bodyHistory)");
   // energyBalance spans clouds: `clouds`, each carrying heat
   const std::string noHeat = errorOf("E { type energyBalance; clouds (fluid); }");
   EXPECT_NE(noHeat.find("controlDict:1:36: cloud 'fluid'"), std::string::npos) << noHeat;
