@@ -33,12 +33,8 @@ double CastingSolver::stableDeltaT(std::string& limiter) const {
   if (flow_ || energy_) {
     double stable = std::numeric_limits<double>::infinity();
     if (flow_) stable = flowStepLimits(time_.settings().maxCo).smallest(limiter);
-    for (const auto& body : bodies_) {
-      const double limit = body->stableDeltaT(fluid_->attributes().at("spacing"));
-      if (limit < stable) {
-        stable = limit;
-        limiter = "body " + body->settings().name + "'s acceleration";
-      }
+    if (!movingMolds_.empty()) {
+      stable = movingMolds_.limitStep(stable, fluid_->attributes().at("spacing"), limiter);
     }
     // with a flow and `interval auto` the heat takes steps of its own (HeatStepSchedule)
     if (energy_ && heatSchedule_.everyStep()) {
@@ -97,7 +93,7 @@ void CastingSolver::evolve(double deltaT) {
 // current state and their drift, then the metal the inlets pour.
 void CastingSolver::flowFirstKickAndDrift(double deltaT) {
   flow_->kickAndDrift(deltaT);
-  driftBodies(deltaT);
+  movingMolds_.drift(deltaT, time_.value());
   pour();
 }
 
@@ -105,7 +101,7 @@ void CastingSolver::flowFirstKickAndDrift(double deltaT) {
 // inlets' buffers held.
 void CastingSolver::flowRatesAndSecondKick(double deltaT) {
   flow_->computeRatesAndKick(deltaT);
-  kickBodies(deltaT);
+  movingMolds_.kick(deltaT, time_.value());
   holdInletBuffers();
 }
 
@@ -141,12 +137,14 @@ void CastingSolver::searchAndKeepClear(double deltaT, bool lastOfStep) {
   const bool written = lastOfStep && (time_.writeTime() || time_.progress() >= 1);
   addWallTime(searchSeconds_, [&] { searchNeighbours(CloudOrder::byCell, false); });
   if (fillTime_) fillTime_->record(*neighbourhood_, time_.value());
-  keepBodiesOutOfMolds();
+  if (!movingMolds_.empty()) {
+    movingMolds_.keepOutOfMolds(static_cast<Real>(fluid_->attributes().at("spacing")));
+  }
   flow_->keepClearOfWalls();
   if (written) {
     addWallTime(searchSeconds_, [&] { searchNeighbours(CloudOrder::keep, true); });
   }
-  pushBodiesByClearance(deltaT);
+  movingMolds_.pushByClearance(deltaT, time_.value());
 }
 
 // A stop between heat steps (stopAt writeNow) writes the heat brought up to the time written.
@@ -214,7 +212,7 @@ void CastingSolver::updateCoolingMode() {
   const double settle = g > 0 ? 2 * cooling.stillSpeed / g : 0;
   const double window = std::max(settle, time_.state().deltaT * (1 + 1e-9));
   std::string bodyMoves;
-  for (const auto& body : bodies_) {
+  for (const auto& body : movingMolds_.bodies()) {
     for (const Vector& v : body->cloud().vectorField("U")) {
       fastest = std::max(fastest, static_cast<double>(v.norm()));
     }
@@ -280,10 +278,7 @@ void CastingSolver::run() {
     const TimeState before = time_.state();
     // reuses their storage: no allocation per step
     for (std::size_t c = 0; c < evolving_.size(); ++c) lastGood_[c] = *evolving_[c];
-    lastGoodBodies_.resize(bodies_.size());
-    for (std::size_t b = 0; b < bodies_.size(); ++b) {
-      lastGoodBodies_[b] = bodies_[b]->stateDictionary();
-    }
+    movingMolds_.saveState();
     lastGoodInlets_.resize(inlets_.size());
     for (std::size_t n = 0; n < inlets_.size(); ++n) {
       lastGoodInlets_[n] = inlets_[n]->stateDictionary();

@@ -25,6 +25,7 @@
 #include "solidification/SolidificationSetup.h"
 #include "solver/BallisticMotion.h"
 #include "solver/HeatStepSchedule.h"
+#include "solver/MovingMolds.h"
 #include "solver/RunHealth.h"
 #include "sph/ExposedArea.h"
 #include "sph/FillTime.h"
@@ -82,14 +83,6 @@ class CastingSolver {
   FlowStepLimits flowStepLimits(double maxCo) const;
   void evolve(double deltaT);
   void searchAndKeepClear(double deltaT, bool lastOfStep);
-  // The bodies' phases beside the flow's: kick and drift, the clearance's impulse, the loads
-  // and the second kick.
-  void driftBodies(double deltaT);
-  void pushBodiesByClearance(double deltaT);
-  void keepBodiesOutOfMolds();
-  void kickBodies(double deltaT);
-  // a and b, each summed over the ranks (a body's loads from every rank's fluid particles)
-  std::pair<Vector, Vector> summedOverRanks(const Vector& a, const Vector& b) const;
   // Each step's new metal from the inlets (after the drift), their buffers held (after the
   // kick); CastingSolverInlets.cpp.
   void setUpInlets();
@@ -98,7 +91,6 @@ class CastingSolver {
   void logInlets();
   // <time>/uniform/dynamicBodies and uniform/inlets, as the case has them
   std::vector<UniformFile> uniformStateFiles(const std::string& timeName) const;
-  void logBodies();
   void updateCoolingMode();
   double coolingMaxCo() const;  // the cooling mode's flow steps' Courant number
   void evolveCooling(double deltaT);
@@ -155,17 +147,14 @@ class CastingSolver {
   std::unique_ptr<SurfaceTensionModel> surfaceTension_;  // a force model of the flow
   ParticleCloud* fluid_ = nullptr;
   std::unique_ptr<EnergyEquation> energy_;
-  std::unique_ptr<Solidification> solidification_;  // follows the fluid's T after heat steps
-  std::unique_ptr<ExposedArea> exposedArea_;        // A_i, when a model reads it
-  std::unique_ptr<FillTime> fillTime_;              // the fluid's first wall contact
-  std::vector<std::unique_ptr<RigidBody>> bodies_;  // moving walls of the flow
-  std::vector<std::vector<const ParticleCloud*>> bodyMolds_;  // the other walls, per body
-  std::vector<BodyContact> bodyContacts_;                     // of the last step
-  std::vector<std::string> lastGoodBodies_;                   // their state before the step
-  std::vector<std::unique_ptr<PouringInlet>> inlets_;         // feed the fluid
-  std::vector<std::string> lastGoodInlets_;                   // their state before the step
-  bool exposedAreaRestored_ = false;                          // read with a restart's clouds
-  std::vector<const ParticleCloud*> wallClouds_;              // the flow's walls
+  std::unique_ptr<Solidification> solidification_;     // follows the fluid's T after heat steps
+  std::unique_ptr<ExposedArea> exposedArea_;           // A_i, when a model reads it
+  std::unique_ptr<FillTime> fillTime_;                 // the fluid's first wall contact
+  MovingMolds movingMolds_;                            // the rigid bodies: moving walls of the flow
+  std::vector<std::unique_ptr<PouringInlet>> inlets_;  // feed the fluid
+  std::vector<std::string> lastGoodInlets_;            // their state before the step
+  bool exposedAreaRestored_ = false;                   // read with a restart's clouds
+  std::vector<const ParticleCloud*> wallClouds_;       // the flow's walls
   Domain domain_;
   // The clouds before the step being taken (those that change: the fluid, the heat clouds)
   std::vector<ParticleCloud> lastGood_;

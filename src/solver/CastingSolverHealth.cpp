@@ -142,10 +142,7 @@ void CastingSolver::stopWithLastGoodState(const TimeState& good, bool restoreSav
   }
   if (restoreSaved) {
     for (std::size_t c = 0; c < evolving_.size(); ++c) *evolving_[c] = lastGood_[c];
-    for (std::size_t b = 0; b < bodies_.size() && b < lastGoodBodies_.size(); ++b) {
-      const Dictionary state = Dictionary::parse(lastGoodBodies_[b], "dynamicBodies");
-      bodies_[b]->readState(state.subDict(bodies_[b]->settings().name), good.value);
-    }
+    movingMolds_.restoreState(good.value);
     for (std::size_t n = 0; n < inlets_.size() && n < lastGoodInlets_.size(); ++n) {
       const Dictionary state = Dictionary::parse(lastGoodInlets_[n], "inlets");
       inlets_[n]->readState(state.subDict(inlets_[n]->settings().name));

@@ -91,10 +91,8 @@ void CastingSolver::holdInletBuffers() {
 
 std::vector<UniformFile> CastingSolver::uniformStateFiles(const std::string& timeName) const {
   std::vector<UniformFile> files;
-  if (!bodies_.empty()) {
-    std::vector<const RigidBody*> bodies;
-    for (const auto& body : bodies_) bodies.push_back(body.get());
-    files.push_back({"dynamicBodies", bodyStateFile(timeName, bodies)});
+  if (!movingMolds_.empty()) {
+    files.push_back({"dynamicBodies", movingMolds_.stateFileText(timeName)});
   }
   if (!inlets_.empty()) {
     std::vector<const PouringInlet*> inlets;

@@ -34,7 +34,7 @@ void CastingSolver::logStep(bool printBlock) {
          << comm_.sum(static_cast<std::int64_t>(flow_->lastWallClearance().corrected)) << '\n';
     info() << line.str();
   }
-  logBodies();
+  if (!movingMolds_.empty()) movingMolds_.log(fluid_->attributes().at("spacing"));
   logInlets();
   if (energy_) logHeat();
   if (solidification_) logSolidification();

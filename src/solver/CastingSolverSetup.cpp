@@ -499,7 +499,8 @@ void CastingSolver::startModels() {
   // bit.
   if (exposedArea_ && !exposedAreaRestored_) exposedArea_->compute();
   if (flow_) flow_->start();
-  if (!restarted) kickBodies(0.0);  // their acceleration under the start state's loads
+  // the bodies' acceleration under the start state's loads
+  if (!restarted) movingMolds_.kick(0.0, time_.value());
   setUpInlets();
   if (energy_) {
     for (const std::string& line : energy_->start()) info() << "    " << line << "\n";
@@ -517,11 +518,11 @@ void CastingSolver::setUpFunctionObjects(const Dictionary& controlDict) {
   context.gravity = gravity_;
   context.comm = comm_;
   for (const ParticleCloud& cloud : clouds_) context.clouds.push_back(&cloud);
-  for (const auto& body : bodies_) context.bodies.push_back(body.get());
+  context.bodies = movingMolds_.bodyList();
   try {
     functions_ = FunctionObjectList(controlDict, context);
     // the bodies' history, every step, which castPostProcess's bodyMotion reads
-    if (!bodies_.empty()) {
+    if (!movingMolds_.empty()) {
       const Dictionary history =
           Dictionary::parse("type bodyHistory;", "sphCastFoam's bodies' history");
       for (const auto& object : functions_.objects()) {
