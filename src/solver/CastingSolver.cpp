@@ -94,7 +94,7 @@ void CastingSolver::evolve(double deltaT) {
 void CastingSolver::flowFirstKickAndDrift(double deltaT) {
   flow_->kickAndDrift(deltaT);
   movingMolds_.drift(deltaT, time_.value());
-  pour();
+  pouringInlets_.pour(time_.value(), decomposition_.get());
 }
 
 // The second half, after the search: the rates at the new positions and the second kicks, the
@@ -102,7 +102,7 @@ void CastingSolver::flowFirstKickAndDrift(double deltaT) {
 void CastingSolver::flowRatesAndSecondKick(double deltaT) {
   flow_->computeRatesAndKick(deltaT);
   movingMolds_.kick(deltaT, time_.value());
-  holdInletBuffers();
+  pouringInlets_.holdBuffers();
 }
 
 // The second half of a heat step: the rates at the new state, the second kick, and the
@@ -202,7 +202,7 @@ void CastingSolver::updateCoolingMode() {
   // metal still being poured, or none yet, is not a still melt (measured: crossDitchPress
   // entered the mode at t = 0 with its cloud empty, and its ladle fell 0.012 s behind)
   bool pouring = comm_.sum(static_cast<std::int64_t>(fluid_->ownedSize())) == 0;
-  for (const auto& inlet : inlets_) pouring = pouring || !inlet->finished(time_.value());
+  pouring = pouring || pouringInlets_.pouring(time_.value());
   // The bodies: the mode's slowed flow time would slow a body's motion hundreds of times, so a
   // body driven by its table keeps the mode off, and one let go (it is held through the step in
   // which its release time falls, and free from the next) ends it: within the last step, or
@@ -279,10 +279,7 @@ void CastingSolver::run() {
     // reuses their storage: no allocation per step
     for (std::size_t c = 0; c < evolving_.size(); ++c) lastGood_[c] = *evolving_[c];
     movingMolds_.saveState();
-    lastGoodInlets_.resize(inlets_.size());
-    for (std::size_t n = 0; n < inlets_.size(); ++n) {
-      lastGoodInlets_[n] = inlets_[n]->stateDictionary();
-    }
+    pouringInlets_.saveState();
     time_.advance();
     ++stepsTaken_;
     // A step that throws (a far-flung particle the cell grid cannot place, memory exhausted)

@@ -26,6 +26,7 @@
 #include "solver/BallisticMotion.h"
 #include "solver/HeatStepSchedule.h"
 #include "solver/MovingMolds.h"
+#include "solver/PouringInlets.h"
 #include "solver/RunHealth.h"
 #include "sph/ExposedArea.h"
 #include "sph/FillTime.h"
@@ -83,12 +84,7 @@ class CastingSolver {
   FlowStepLimits flowStepLimits(double maxCo) const;
   void evolve(double deltaT);
   void searchAndKeepClear(double deltaT, bool lastOfStep);
-  // Each step's new metal from the inlets (after the drift), their buffers held (after the
-  // kick); CastingSolverInlets.cpp.
-  void setUpInlets();
-  void pour();
-  void holdInletBuffers();
-  void logInlets();
+  void setUpInlets();  // CastingSolverInlets.cpp
   // <time>/uniform/dynamicBodies and uniform/inlets, as the case has them
   std::vector<UniformFile> uniformStateFiles(const std::string& timeName) const;
   void updateCoolingMode();
@@ -147,14 +143,13 @@ class CastingSolver {
   std::unique_ptr<SurfaceTensionModel> surfaceTension_;  // a force model of the flow
   ParticleCloud* fluid_ = nullptr;
   std::unique_ptr<EnergyEquation> energy_;
-  std::unique_ptr<Solidification> solidification_;     // follows the fluid's T after heat steps
-  std::unique_ptr<ExposedArea> exposedArea_;           // A_i, when a model reads it
-  std::unique_ptr<FillTime> fillTime_;                 // the fluid's first wall contact
-  MovingMolds movingMolds_;                            // the rigid bodies: moving walls of the flow
-  std::vector<std::unique_ptr<PouringInlet>> inlets_;  // feed the fluid
-  std::vector<std::string> lastGoodInlets_;            // their state before the step
-  bool exposedAreaRestored_ = false;                   // read with a restart's clouds
-  std::vector<const ParticleCloud*> wallClouds_;       // the flow's walls
+  std::unique_ptr<Solidification> solidification_;  // follows the fluid's T after heat steps
+  std::unique_ptr<ExposedArea> exposedArea_;        // A_i, when a model reads it
+  std::unique_ptr<FillTime> fillTime_;              // the fluid's first wall contact
+  MovingMolds movingMolds_;                         // the rigid bodies: moving walls of the flow
+  PouringInlets pouringInlets_;                     // feed the fluid
+  bool exposedAreaRestored_ = false;                // read with a restart's clouds
+  std::vector<const ParticleCloud*> wallClouds_;    // the flow's walls
   Domain domain_;
   // The clouds before the step being taken (those that change: the fluid, the heat clouds)
   std::vector<ParticleCloud> lastGood_;

@@ -143,10 +143,7 @@ void CastingSolver::stopWithLastGoodState(const TimeState& good, bool restoreSav
   if (restoreSaved) {
     for (std::size_t c = 0; c < evolving_.size(); ++c) *evolving_[c] = lastGood_[c];
     movingMolds_.restoreState(good.value);
-    for (std::size_t n = 0; n < inlets_.size() && n < lastGoodInlets_.size(); ++n) {
-      const Dictionary state = Dictionary::parse(lastGoodInlets_[n], "inlets");
-      inlets_[n]->readState(state.subDict(inlets_[n]->settings().name));
-    }
+    pouringInlets_.restoreState();
   }
   std::vector<const ParticleCloud*> written;
   for (const ParticleCloud& cloud : clouds_) written.push_back(&cloud);

@@ -35,7 +35,7 @@ void CastingSolver::logStep(bool printBlock) {
     info() << line.str();
   }
   if (!movingMolds_.empty()) movingMolds_.log(fluid_->attributes().at("spacing"));
-  logInlets();
+  pouringInlets_.log(time_.value());
   if (energy_) logHeat();
   if (solidification_) logSolidification();
   info() << clock_.timesLine() << '\n'
