@@ -1,4 +1,5 @@
 #include "bodies/BodyWallContact.h"
+#include "particles/FieldNames.h"
 
 namespace sphcast {
 
@@ -8,7 +9,7 @@ BodyContact deepestBodyContact(const RigidBody& body, const std::vector<WallSurf
   if (molds.empty()) return contact;
   const ParticleCloud& cloud = body.cloud();
   const auto& x = cloud.positions();
-  const auto& depth = cloud.scalarField("wallDistance");
+  const auto& depth = cloud.scalarField(field::wallDistance);
   const Real touching = Real(0.5) * spacing;
   const Real surfaceLayer = Real(0.75) * spacing;
   // a serial scan of the owned particles: the deepest, lowest index

@@ -11,6 +11,7 @@
 
 #include "core/Error.h"
 #include "core/dictionary/Dictionary.h"
+#include "particles/FieldNames.h"
 
 namespace sphcast {
 
@@ -20,15 +21,15 @@ RigidBody::RigidBody(RigidBodySettings settings, ParticleCloud& cloud, const Vec
   if (comm_.sum(static_cast<std::int64_t>(cloud_.ownedSize())) == 0) {
     throw Error("body '" + settings_.name + "': its cloud '" + cloud_.name() + "' is empty");
   }
-  cloud_.scalarField("volume");  // each look-up throws an Error naming the cloud's fields
-  const auto& normal = cloud_.vectorField("normal");
+  cloud_.scalarField(field::volume);  // each look-up throws an Error naming the cloud's fields
+  const auto& normal = cloud_.vectorField(field::normal);
   // the places in the body's frame: the cloud as it is at the start (a restart reads them back)
-  if (!cloud_.hasVectorField("restPosition")) {
-    cloud_.addVectorField("restPosition") = cloud_.positions();
-    cloud_.addVectorField("restNormal") = normal;
+  if (!cloud_.hasVectorField(field::restPosition)) {
+    cloud_.addVectorField(field::restPosition) = cloud_.positions();
+    cloud_.addVectorField(field::restNormal) = normal;
   }
-  cloud_.addVectorField("U");
-  cloud_.addVectorField("acceleration");
+  cloud_.addVectorField(field::U);
+  cloud_.addVectorField(field::acceleration);
   computeMassProperties();
   centre_ = startCentre_;
   // until the first loads (setLoadsAndKick with dt 0 at the start): gravity and the press
@@ -40,8 +41,8 @@ RigidBody::RigidBody(RigidBodySettings settings, ParticleCloud& cloud, const Vec
 // Uniform density over the particles' volumes (each particle a cube of its volume for its own
 // inertia), unless the dictionary gives the values.
 void RigidBody::computeMassProperties() {
-  const auto& rest = cloud_.vectorField("restPosition");
-  const auto& volume = cloud_.scalarField("volume");
+  const auto& rest = cloud_.vectorField(field::restPosition);
+  const auto& volume = cloud_.scalarField(field::volume);
   // over every rank's own particles in a decomposed run
   std::vector<double> sums(4, 0.0);  // the volume, its first moment
   for (std::size_t k = 0; k < cloud_.ownedSize(); ++k) {
@@ -143,10 +144,10 @@ void RigidBody::placeParticles() {
   const Matrix3 rotation = orientation_.toRotationMatrix();
   const Matrix3 turn = rotation - Matrix3::Identity();
   const Vector travel = centre_ - startCentre_;
-  const auto& rest = cloud_.vectorField("restPosition");
-  const auto& restNormal = cloud_.vectorField("restNormal");
+  const auto& rest = cloud_.vectorField(field::restPosition);
+  const auto& restNormal = cloud_.vectorField(field::restNormal);
   auto& x = cloud_.positions();
-  auto& normal = cloud_.vectorField("normal");
+  auto& normal = cloud_.vectorField(field::normal);
   const bool turned = !turn.isZero(0);
 #pragma omp parallel for schedule(static)
   for (std::size_t k = 0; k < x.size(); ++k) {
@@ -161,8 +162,8 @@ void RigidBody::updateParticleVelocities(bool heldNow) {
   const Vector omega = angularVelocity();
   const Vector linearAcceleration = heldNow ? Vector::Zero() : acceleration_;
   const auto& x = cloud_.positions();
-  auto& u = cloud_.vectorField("U");
-  auto& a = cloud_.vectorField("acceleration");
+  auto& u = cloud_.vectorField(field::U);
+  auto& a = cloud_.vectorField(field::acceleration);
 #pragma omp parallel for schedule(static)
   for (std::size_t k = 0; k < x.size(); ++k) {
     const Vector arm = x[k] - centre_;

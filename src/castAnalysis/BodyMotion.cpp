@@ -7,6 +7,7 @@
 
 #include "castAnalysis/GnuplotPlot.h"
 #include "core/Error.h"
+#include "particles/FieldNames.h"
 #include "post/FunctionObject.h"
 
 namespace sphcast {
@@ -54,8 +55,8 @@ void BodyMotion::add(const WrittenTime& time) {
   if (!gap_) return;
   const ParticleCloud* cloud = time.find(gap_->cloud);
   if (!cloud) return;
-  const auto& mass = cloud->scalarField("mass");
-  const auto& rho = cloud->scalarField("rho");
+  const auto& mass = cloud->scalarField(field::mass);
+  const auto& rho = cloud->scalarField(field::rho);
   positions_.assign(cloud->positions().begin(), cloud->positions().end());
   volumes_.resize(cloud->size());
   for (std::size_t i = 0; i < cloud->size(); ++i) volumes_[i] = double(mass[i]) / double(rho[i]);

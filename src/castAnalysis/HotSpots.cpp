@@ -8,6 +8,7 @@
 #include "core/AtomicFile.h"
 #include "core/Log.h"
 #include "particles/CellGrid.h"
+#include "particles/FieldNames.h"
 #include "particles/NeighbourList.h"
 #include "sph/ParticleVolumes.h"
 
@@ -35,11 +36,12 @@ HotSpots::HotSpots(const std::string& name, const Dictionary& dict, const Analys
 
 void HotSpots::add(const WrittenTime& time) {
   const ParticleCloud* metal = time.find(cloud_);
-  if (!metal || !metal->hasScalarField("solidFraction") || !metal->hasIdField("id")) return;
+  if (!metal || !metal->hasScalarField(field::solidFraction) || !metal->hasIdField(field::id))
+    return;
   const auto spacing = metal->attributes().find("spacing");
   if (spacing == metal->attributes().end()) return;
-  const auto& fs = metal->scalarField("solidFraction");
-  const auto& ids = metal->idField("id");
+  const auto& fs = metal->scalarField(field::solidFraction);
+  const auto& ids = metal->idField(field::id);
   std::vector<std::size_t> feeding;
   std::vector<Vector> positions;
   for (std::size_t i = 0; i < metal->size(); ++i) {

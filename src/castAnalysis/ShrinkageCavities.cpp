@@ -16,6 +16,7 @@
 #include "core/Error.h"
 #include "core/Log.h"
 #include "io/VtpCloud.h"
+#include "particles/FieldNames.h"
 
 namespace sphcast {
 
@@ -139,17 +140,19 @@ void ShrinkageCavities::add(const WrittenTime& time) {
   double balance = 0;
   const auto material = context_.materials.find(cloud_);
   const bool table = material != context_.materials.end() && material->second.density &&
-                     metal->hasScalarField("T");
+                     metal->hasScalarField(field::T);
   // setCastFields' start has volume and rho, the solver's times mass
-  const bool mass = metal->hasScalarField("mass") ||
-                    (metal->hasScalarField("volume") && metal->hasScalarField("rho"));
-  if (mass && (table || metal->hasScalarField("restDensity"))) {
+  const bool mass = metal->hasScalarField(field::mass) ||
+                    (metal->hasScalarField(field::volume) && metal->hasScalarField(field::rho));
+  if (mass && (table || metal->hasScalarField(field::restDensity))) {
     for (std::size_t i = 0; i < metal->size(); ++i) {
-      const double rhoS = table ? (*material->second.density)(double(metal->scalarField("T")[i]))
-                                : double(metal->scalarField("restDensity")[i]);
-      const double m = metal->hasScalarField("mass")
-                           ? double(metal->scalarField("mass")[i])
-                           : double(metal->scalarField("volume")[i] * metal->scalarField("rho")[i]);
+      const double rhoS = table
+                              ? (*material->second.density)(double(metal->scalarField(field::T)[i]))
+                              : double(metal->scalarField(field::restDensity)[i]);
+      const double m =
+          metal->hasScalarField(field::mass)
+              ? double(metal->scalarField(field::mass)[i])
+              : double(metal->scalarField(field::volume)[i] * metal->scalarField(field::rho)[i]);
       balance += m / rhoS;
     }
   }

@@ -10,6 +10,7 @@
 #include "core/Log.h"
 #include "io/PvdIndex.h"
 #include "io/VtpCloud.h"
+#include "particles/FieldNames.h"
 #include "solidification/Solidification.h"
 
 namespace sphcast {
@@ -38,20 +39,20 @@ SolidificationMaps::SolidificationMaps(const std::string& name, const Dictionary
 }
 
 bool SolidificationMaps::hasHistory(const ParticleCloud& cloud) {
-  static const std::vector<std::string> fields{"liquidusTime", "criticalTime", "coolingRate",
-                                               "solidusTime"};
-  return cloud.hasIdField("id") &&
+  static const std::vector<std::string> fields{field::liquidusTime, field::criticalTime,
+                                               field::coolingRate, field::solidusTime};
+  return cloud.hasIdField(field::id) &&
          std::all_of(fields.begin(), fields.end(),
                      [&](const std::string& field) { return cloud.hasScalarField(field); });
 }
 
 void SolidificationMaps::add(const WrittenTime& time) {
   const ParticleCloud* cloud = time.find(cloud_);
-  if (!cloud || !cloud->hasScalarField("T") || !cloud->hasIdField("id")) return;
+  if (!cloud || !cloud->hasScalarField(field::T) || !cloud->hasIdField(field::id)) return;
   // a time written before the solver ran (setCastFields' 0) has T but no history yet
   const bool history = hasHistory(*cloud);
   const double t = time.folder.value;
-  const auto& ids = cloud->idField("id");
+  const auto& ids = cloud->idField(field::id);
   const std::vector<Vector> gradient =
       temperatureGradient(*cloud, context_.supportRadius, context_.dimension);
   std::unordered_map<std::int64_t, double> now;
@@ -60,7 +61,7 @@ void SolidificationMaps::add(const WrittenTime& time) {
     const double G = static_cast<double>(gradient[i].norm());
     now[ids[i]] = G;
     if (!history) continue;
-    const double tc = cloud->scalarField("criticalTime")[i];
+    const double tc = cloud->scalarField(field::criticalTime)[i];
     if (tc < 0) {
       criticalGradient_.erase(ids[i]);  // not yet, or melted again since
       continue;
@@ -77,7 +78,7 @@ void SolidificationMaps::add(const WrittenTime& time) {
   previousGradient_ = std::move(now);
   previousTime_ = t;
   if (!fillEndTaken_ && (!fillEndGiven_ || t >= fillEnd_)) {
-    const auto& T = cloud->scalarField("T");
+    const auto& T = cloud->scalarField(field::T);
     const Material& material = materialOf(cloud_, "solidificationMaps");
     for (std::size_t i = 0; i < ids.size(); ++i) {
       fillEndTemperature_[ids[i]] = T[i];
@@ -111,31 +112,32 @@ ReportSection SolidificationMaps::finish() {
   ParticleCloud maps(cloud_);
   maps.resize(n);
   maps.positions() = last_.positions();
-  maps.addIdField("id") = last_.idField("id");
+  maps.addIdField(field::id) = last_.idField(field::id);
   if (last_.attributes().contains("spacing")) {
     maps.attributes()["spacing"] = last_.attributes().at("spacing");
   }
-  auto& solidification = maps.addScalarField("solidificationTime");
-  auto& freezing = maps.addScalarField("localFreezingTime");
-  auto& rate = maps.addScalarField("coolingRate");
-  auto& gradient = maps.addScalarField("temperatureGradient");
-  auto& niyama = maps.addScalarField("niyama");
+  auto& solidification = maps.addScalarField(field::solidificationTime);
+  auto& freezing = maps.addScalarField(field::localFreezingTime);
+  auto& rate = maps.addScalarField(field::coolingRate);
+  auto& gradient = maps.addScalarField(field::temperatureGradient);
+  auto& niyama = maps.addScalarField(field::niyama);
   // the solver's first wall contact of each particle (sph/FillTime.h), when the run has a flow
-  if (last_.hasScalarField("fillTime"))
-    maps.addScalarField("fillTime") = last_.scalarField("fillTime");
-  auto& fillT = maps.addScalarField("temperatureAtFillEnd");
-  auto& fillFs = maps.addScalarField("solidFractionAtFillEnd");
-  const auto& ids = last_.idField("id");
-  const auto& liquidusTime = last_.scalarField("liquidusTime");
-  const auto& solidusTime = last_.scalarField("solidusTime");
-  const auto& coolingRate = last_.scalarField("coolingRate");
-  const auto& criticalTime = last_.scalarField("criticalTime");
-  auto& resolved = maps.addScalarField("mushyZoneSpacings");
+  if (last_.hasScalarField(field::fillTime))
+    maps.addScalarField(field::fillTime) = last_.scalarField(field::fillTime);
+  auto& fillT = maps.addScalarField(field::temperatureAtFillEnd);
+  auto& fillFs = maps.addScalarField(field::solidFractionAtFillEnd);
+  const auto& ids = last_.idField(field::id);
+  const auto& liquidusTime = last_.scalarField(field::liquidusTime);
+  const auto& solidusTime = last_.scalarField(field::solidusTime);
+  const auto& coolingRate = last_.scalarField(field::coolingRate);
+  const auto& criticalTime = last_.scalarField(field::criticalTime);
+  auto& resolved = maps.addScalarField(field::mushyZoneSpacings);
   const double freezingRange = range.liquidus - range.solidus;
   const double dx = last_.attributes().contains("spacing") ? last_.attributes().at("spacing") : 0.0;
   std::size_t underResolved = 0;
   const ParticleCloud::ScalarField* solverGradient =
-      last_.hasScalarField("criticalGradient") ? &last_.scalarField("criticalGradient") : nullptr;
+      last_.hasScalarField(field::criticalGradient) ? &last_.scalarField(field::criticalGradient)
+                                                    : nullptr;
   std::size_t fromSolver = 0;
   for (std::size_t i = 0; i < n; ++i) {
     solidification[i] = solidusTime[i];
@@ -170,8 +172,8 @@ ReportSection SolidificationMaps::finish() {
     const TemperatureTable& density = material.requireDensity("dimensionlessNiyama");
     const double beta = density(range.solidus) / density(range.liquidus) - 1;
     const double deltaTf = range.liquidus - range.solidus;
-    auto& spacing = maps.addScalarField("secondaryArmSpacing");
-    auto& dimensionless = maps.addScalarField("dimensionlessNiyama");
+    auto& spacing = maps.addScalarField(field::secondaryArmSpacing);
+    auto& dimensionless = maps.addScalarField(field::dimensionlessNiyama);
     for (std::size_t i = 0; i < n; ++i) {
       spacing[i] = freezing[i] > 0 ? Real(A * std::pow(double(freezing[i]), exponent)) : Real(-1);
       dimensionless[i] = spacing[i] > 0 && niyama[i] >= 0 && beta > 0
@@ -231,8 +233,7 @@ ReportSection SolidificationMaps::finish() {
             "(mushyZoneSpacings < 1): their cooling rates read low and their Niyama values "
             "high; refine there.\n";
   }
-  text << "- T_c = "
-       << formatNumber(criticalTemperature(range), 6)
+  text << "- T_c = " << formatNumber(criticalTemperature(range), 6)
        << " K; crossing times, cooling rates and G (" << fromSolver << " of " << n
        << " particles) from the heat step that crossed it"
        << (fromSolver < n ? "; the other G from the written times, interpolated in time" : "")

@@ -1,6 +1,7 @@
 #include "castAnalysis/TemperatureGradient.h"
 
 #include "particles/CellGrid.h"
+#include "particles/FieldNames.h"
 #include "particles/NeighbourList.h"
 #include "sph/CorrectedGradient.h"
 
@@ -14,7 +15,7 @@ std::vector<Vector> temperatureGradient(const ParticleCloud& cloud, Real support
   grid.build(x);
   NeighbourList pairs;
   pairs.buildWithin(x, grid);
-  const auto& T = cloud.scalarField("T");
+  const auto& T = cloud.scalarField(field::T);
   std::vector<Vector> result(cloud.size(), Vector::Zero());
   const auto count = static_cast<std::ptrdiff_t>(cloud.size());
 #pragma omp parallel for schedule(dynamic, 256)

@@ -8,6 +8,7 @@
 #include "castAnalysis/GnuplotPlot.h"
 #include "core/AtomicFile.h"
 #include "core/Log.h"
+#include "particles/FieldNames.h"
 #include "post/FluidSampling.h"
 #include "post/FunctionObject.h"
 
@@ -71,11 +72,11 @@ Thermocouples::Thermocouples(const std::string& name, const Dictionary& dict,
 void Thermocouples::add(const WrittenTime& time) {
   if (!probes_.empty()) return;  // the function object's rows are read already
   const ParticleCloud* cloud = time.find(cloud_);
-  if (!cloud || !cloud->hasScalarField("T")) return;
+  if (!cloud || !cloud->hasScalarField(field::T)) return;
   const ShepardInterpolation interpolation(*cloud, supportRadius_);
   times_.push_back(time.folder.value);
   for (std::size_t k = 0; k < names_.size(); ++k) {
-    const double T = interpolation.scalar(cloud->scalarField("T"), locations_[k]);
+    const double T = interpolation.scalar(cloud->scalarField(field::T), locations_[k]);
     if (!checked_ && !std::isfinite(T)) {
       const Dictionary& locations = dict_.subDict("locations");
       std::ostringstream message;

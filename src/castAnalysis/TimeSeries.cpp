@@ -11,6 +11,7 @@
 #include "castAnalysis/GnuplotPlot.h"
 #include "core/AtomicFile.h"
 #include "core/Log.h"
+#include "particles/FieldNames.h"
 #include "post/CloudSummary.h"
 
 namespace sphcast {
@@ -88,17 +89,17 @@ std::string TimeSeries::csvHeader() {
 
 std::string TimeSeries::csvRow(double time, const ParticleCloud& cloud) {
   const std::size_t n = cloud.size();
-  const auto field = [&](const char* name) {
+  const auto scalar = [&](const char* name) {
     return cloud.hasScalarField(name) ? &cloud.scalarField(name) : nullptr;
   };
-  const auto* mass = field("mass");
-  const auto* T = field("T");
-  const auto* fs = field("solidFraction");
-  const auto* frozen = field("frozen");
-  const auto* rho = field("rho");
-  const auto* rhoS = field("restDensity");
-  const auto* u = field("u");
-  const auto* U = cloud.hasVectorField("U") ? &cloud.vectorField("U") : nullptr;
+  const auto* mass = scalar(field::mass);
+  const auto* T = scalar(field::T);
+  const auto* fs = scalar(field::solidFraction);
+  const auto* frozen = scalar(field::frozen);
+  const auto* rho = scalar(field::rho);
+  const auto* rhoS = scalar(field::restDensity);
+  const auto* u = scalar(field::u);
+  const auto* U = cloud.hasVectorField(field::U) ? &cloud.vectorField(field::U) : nullptr;
   const auto weight = [&](std::size_t i) { return mass ? double((*mass)[i]) : 1.0; };
   double totalMass = 0;
   for (std::size_t i = 0; i < n; ++i) totalMass += weight(i);
@@ -165,13 +166,14 @@ std::string TimeSeries::energyBalanceRow(const WrittenTime& time) {
   int clouds = 0;
   for (const ParticleCloud& cloud : time.clouds) {
     const auto start = cloud.attributes().find("internalEnergyAtStart");
-    if (start == cloud.attributes().end() || !cloud.hasScalarField("u") ||
-        !cloud.hasScalarField("mass")) {
+    if (start == cloud.attributes().end() || !cloud.hasScalarField(field::u) ||
+        !cloud.hasScalarField(field::mass)) {
       continue;
     }
     double internal = 0;
     for (std::size_t i = 0; i < cloud.size(); ++i) {
-      internal += double(cloud.scalarField("mass")[i]) * double(cloud.scalarField("u")[i]);
+      internal +=
+          double(cloud.scalarField(field::mass)[i]) * double(cloud.scalarField(field::u)[i]);
     }
     change += internal - start->second - inflowEnergy(cloud);
     scale += std::abs(start->second) + inflowEnergy(cloud);

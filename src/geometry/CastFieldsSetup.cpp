@@ -18,6 +18,7 @@
 #include "geometry/PackingRelaxation.h"
 #include "particles/CellGrid.h"
 #include "particles/Domain.h"
+#include "particles/FieldNames.h"
 #include "particles/NeighbourList.h"
 
 namespace sphcast {
@@ -360,12 +361,12 @@ ParticleCloud fillCloud(const CloudPlan& plan, double spacing, int dimension,
   ParticleCloud cloud(plan.name);
   cloud.resize(centres.size());
   std::copy(centres.begin(), centres.end(), cloud.positions().begin());
-  cloud.addVectorField("U");
-  auto& volume = cloud.addScalarField("volume");
+  cloud.addVectorField(field::U);
+  auto& volume = cloud.addScalarField(field::volume);
   // A 2D case's particle stands for the area dx^2 (the solver's 2D kernel integrates over area).
   const double cellVolume = dimension == 2 ? spacing * spacing : dx3;
   for (Real& v : volume) v = static_cast<Real>(cellVolume);
-  auto& id = cloud.addIdField("id");
+  auto& id = cloud.addIdField(field::id);
   for (std::size_t i = 0; i < id.size(); ++i) id[i] = static_cast<std::int64_t>(i);
   cloud.attributes()["spacing"] = spacing;
   return cloud;

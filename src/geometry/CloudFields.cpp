@@ -7,6 +7,7 @@
 #include "core/Gravity.h"
 #include "core/Log.h"
 #include "geometry/InitialDensity.h"
+#include "particles/FieldNames.h"
 #include "particles/WallSurfaceDistance.h"
 
 namespace sphcast {
@@ -107,7 +108,7 @@ void setFieldValues(const Dictionary& fields, ParticleCloud& cloud,
   auto chosen = [&](std::size_t i) { return selected.empty() || selected[i]; };
   if (fields.found("U")) {
     const Vector velocity = fields.get<Vector>("U", Dimensions{{0, 1, -1, 0, 0, 0, 0}});
-    auto& u = cloud.addVectorField("U");
+    auto& u = cloud.addVectorField(field::U);
     for (std::size_t i = 0; i < u.size(); ++i) {
       if (chosen(i)) u[i] = velocity;
     }
@@ -209,7 +210,7 @@ std::optional<DensityStart> readDensityStart(const Dictionary& cloudDict,
 }
 
 void setMaterialDensity(const DensityStart& start, ParticleCloud& cloud, double spacing) {
-  auto& rho = cloud.addScalarField("rho");
+  auto& rho = cloud.addScalarField(field::rho);
   const double rhoS = start.restDensity;
   std::ostringstream log;
   log << "Cloud " << cloud.name() << ": rho " << start.model << " from rho_s = " << rhoS

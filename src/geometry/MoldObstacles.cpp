@@ -1,4 +1,5 @@
 #include "geometry/MoldObstacles.h"
+#include "particles/FieldNames.h"
 
 namespace sphcast {
 
@@ -7,21 +8,22 @@ MoldObstacles::MoldObstacles(const std::vector<ParticleCloud>& moldClouds, doubl
     : spacing_(spacing), clearance_(clearance), clearanceGrid_(static_cast<Real>(clearance)) {
   bool sided = true;
   for (const ParticleCloud& cloud : moldClouds) {
-    sided = sided && cloud.hasVectorField("normal") && cloud.hasScalarField("wallDistance");
+    sided =
+        sided && cloud.hasVectorField(field::normal) && cloud.hasScalarField(field::wallDistance);
   }
   for (const ParticleCloud& cloud : moldClouds) {
     particles_.positions.insert(particles_.positions.end(), cloud.positions().begin(),
                                 cloud.positions().end());
-    if (cloud.hasScalarField("volume")) {
-      const auto& volume = cloud.scalarField("volume");
+    if (cloud.hasScalarField(field::volume)) {
+      const auto& volume = cloud.scalarField(field::volume);
       particles_.volumes.insert(particles_.volumes.end(), volume.begin(), volume.end());
     } else {
       particles_.volumes.insert(particles_.volumes.end(), cloud.size(),
                                 static_cast<Real>(spacing * spacing * spacing));
     }
     if (sided) {
-      const auto& normal = cloud.vectorField("normal");
-      const auto& distance = cloud.scalarField("wallDistance");
+      const auto& normal = cloud.vectorField(field::normal);
+      const auto& distance = cloud.scalarField(field::wallDistance);
       normals_.insert(normals_.end(), normal.begin(), normal.end());
       wallDistances_.insert(wallDistances_.end(), distance.begin(), distance.end());
     }

@@ -11,6 +11,7 @@
 #include "geometry/GmshGeometry.h"
 #include "geometry/LatticeSolid.h"
 #include "geometry/MoldPatchRequest.h"
+#include "particles/FieldNames.h"
 
 namespace sphcast {
 
@@ -81,9 +82,9 @@ void logGroups(const GmshGeometry& geometry) {
   for (const auto& group : geometry.groups()) {
     const auto& box = group.boundingBox;
     info() << "    physical group " << std::setw(20) << std::left << group.name << std::right
-           << " dimension " << group.dimension << ", " << group.entityCount
-           << " entities, bounds (" << box[0] << ' ' << box[1] << ' ' << box[2] << ") ("
-           << box[3] << ' ' << box[4] << ' ' << box[5] << ")\n";
+           << " dimension " << group.dimension << ", " << group.entityCount << " entities, bounds ("
+           << box[0] << ' ' << box[1] << ' ' << box[2] << ") (" << box[3] << ' ' << box[4] << ' '
+           << box[5] << ")\n";
   }
 }
 
@@ -95,11 +96,11 @@ ParticleCloud makeCloud(const std::string& name, const WallParticles& particles,
   }
   ParticleCloud cloud(name);
   cloud.resize(members.size());
-  auto& volume = cloud.addScalarField("volume");
-  auto& wallDistance = cloud.addScalarField("wallDistance");
-  auto& normal = cloud.addVectorField("normal");
-  auto& patch = cloud.addIdField("patch");
-  auto& id = cloud.addIdField("id");
+  auto& volume = cloud.addScalarField(field::volume);
+  auto& wallDistance = cloud.addScalarField(field::wallDistance);
+  auto& normal = cloud.addVectorField(field::normal);
+  auto& patch = cloud.addIdField(field::patch);
+  auto& id = cloud.addIdField(field::id);
   for (std::size_t m = 0; m < members.size(); ++m) {
     const std::size_t i = members[m];
     cloud.positions()[m] = particles.positions[i].cast<Real>();
@@ -161,7 +162,8 @@ WallParticles particleizeSolidMold(const std::vector<GeometryFilePatches>& files
       std::sort(cavityVolumes.begin(), cavityVolumes.end());
       cavityVolumes.erase(std::unique(cavityVolumes.begin(), cavityVolumes.end()),
                           cavityVolumes.end());
-      shells.push_back({geometry.surfacesOf(shellGroups), geometry.boundaryOfVolumes(cavityVolumes)});
+      shells.push_back(
+          {geometry.surfacesOf(shellGroups), geometry.boundaryOfVolumes(cavityVolumes)});
     }
   }
 
@@ -174,14 +176,15 @@ WallParticles particleizeSolidMold(const std::vector<GeometryFilePatches>& files
                                       [](const PlanarFace& face) { return !face.globalLattice; });
     info() << "Shell walls: flat faces on their own lattice " << planarFaces.size()
            << " (tilted to the axes " << tilted << "); other faces follow their curvature\n";
-    all.append(generateShellParticles(shell.wall, cavity, spacing, layers, patchCount, planarFaces));
+    all.append(
+        generateShellParticles(shell.wall, cavity, spacing, layers, patchCount, planarFaces));
   }
   for (const auto& volume : volumes) {
     WallParticles filled = fillVolumeParticles(volume.boundary, spacing, volume.patch);
     // The lattice count misses the volume by up to ~1.5% on a radius of a dozen spacings; share
     // the geometry's volume among the particles, so the mold's mass and heat capacity are right.
-    const double volumePerParticle =
-        volume.boundary.enclosedVolume() / static_cast<double>(std::max<std::size_t>(filled.size(), 1));
+    const double volumePerParticle = volume.boundary.enclosedVolume() /
+                                     static_cast<double>(std::max<std::size_t>(filled.size(), 1));
     info() << "Volume " << requests[static_cast<std::size_t>(volume.patch)].patch.name << ": "
            << filled.size() << " lattice points x dx^3 = "
            << static_cast<double>(filled.size()) * spacing * spacing * spacing
@@ -203,11 +206,12 @@ std::string groupNames(const std::vector<PhysicalGroup>& groups) {
 
 ParticleizedMold particleizeMold(const CaseFolder& caseFolder) {
   const Dictionary dict = Dictionary::read(caseFolder.systemFile("particleizeMoldDict"));
-  dict.checkKeys({"dimension", "geometry", "spacing", "supportRadius", "wallLayers",
-                  "maxParticles", "cavity", "patches"});
+  dict.checkKeys({"dimension", "geometry", "spacing", "supportRadius", "wallLayers", "maxParticles",
+                  "cavity", "patches"});
   const int dimension = dict.getOrDefault<int>("dimension", 3);
   if (dimension != 2 && dimension != 3) {
-    throw DictionaryError(dict.location("dimension"), "'dimension' must be 2 or 3 in " + dict.name());
+    throw DictionaryError(dict.location("dimension"),
+                          "'dimension' must be 2 or 3 in " + dict.name());
   }
   CavityRequest cavity;
   if (dict.found("cavity")) {
@@ -263,7 +267,8 @@ ParticleizedMold particleizeMold(const CaseFolder& caseFolder) {
                 patch.name + "' of '" + path.string() + "' is not a " +
                 kindOfDimension(wantedDimension) + " (dimension " +
                 std::to_string(group->dimension) + ")" +
-                (patch.mode == "shell" && group->dimension == dimension ? "; use mode volume" : "") +
+                (patch.mode == "shell" && group->dimension == dimension ? "; use mode volume"
+                                                                        : "") +
                 (dimension == 3 && group->dimension < 2 ? "; is the case 2D (dimension 2)?" : ""));
       }
       const double measure = geometry.groupMeasure(*group);
@@ -277,7 +282,8 @@ ParticleizedMold particleizeMold(const CaseFolder& caseFolder) {
       throw DictionaryError(requests[p].where,
                             "patch '" + requests[p].patch.name +
                                 "' is not a physical group of the geometry; the groups present "
-                                "are (" + groupNames(allGroups) + " )");
+                                "are (" +
+                                groupNames(allGroups) + " )");
     }
   }
   if (!cavity.name.empty() &&
@@ -286,19 +292,20 @@ ParticleizedMold particleizeMold(const CaseFolder& caseFolder) {
       })) {
     throw DictionaryError(cavity.where, "cavity '" + cavity.name +
                                             "' is not a physical surface of the geometry; the "
-                                            "groups present are (" + groupNames(allGroups) + " )");
+                                            "groups present are (" +
+                                            groupNames(allGroups) + " )");
   }
   if (estimate > maxParticles) {
     std::ostringstream message;
     message << "spacing " << spacing << " m would make about " << std::llround(estimate)
-            << " mold particles, more than maxParticles " << maxParticles << " (raise maxParticles in "
-            << dict.name() << " if you mean it); nothing was written";
+            << " mold particles, more than maxParticles " << maxParticles
+            << " (raise maxParticles in " << dict.name() << " if you mean it); nothing was written";
     throw DictionaryError(dict.location("spacing"), message.str());
   }
 
-  WallParticles all =
-      dimension == 3 ? particleizeSolidMold(files, requests, spacing, mold.wallLayers)
-                     : particleizePlaneMold(files, requests, cavity, spacing, mold.wallLayers);
+  WallParticles all = dimension == 3
+                          ? particleizeSolidMold(files, requests, spacing, mold.wallLayers)
+                          : particleizePlaneMold(files, requests, cavity, spacing, mold.wallLayers);
   const auto patchCount = static_cast<int>(requests.size());
   const auto statistics = nearestNeighbourStatistics(all, patchCount, spacing);
   for (auto& request : requests) {
@@ -318,18 +325,20 @@ ParticleizedMold particleizeMold(const CaseFolder& caseFolder) {
       cloudNames.push_back(patch.cloud);
     }
   }
-  for (const auto& name : cloudNames) mold.clouds.push_back(makeCloud(name, all, mold.patches, spacing));
+  for (const auto& name : cloudNames)
+    mold.clouds.push_back(makeCloud(name, all, mold.patches, spacing));
   return mold;
 }
 
 std::string patchesDictionaryText(const ParticleizedMold& mold) {
   std::ostringstream text;
-  text << foamFileHeader("constant/particles", "patches") << "// Written by particleizeMold: spacing " << mold.spacing << " m, " << mold.wallLayers
+  text << foamFileHeader("constant/particles", "patches")
+       << "// Written by particleizeMold: spacing " << mold.spacing << " m, " << mold.wallLayers
        << " wall layers. 'id' is the value of the particles' 'patch' field.\n\n";
   for (const auto& patch : mold.patches) {
-    text << patch.name << "\n{\n    id          " << patch.id << ";\n    cloud       " << patch.cloud
-         << ";\n    type        " << patch.type << ";\n    mode        " << patch.mode
-         << ";\n    particles   " << patch.particleCount << ";\n}\n\n";
+    text << patch.name << "\n{\n    id          " << patch.id << ";\n    cloud       "
+         << patch.cloud << ";\n    type        " << patch.type << ";\n    mode        "
+         << patch.mode << ";\n    particles   " << patch.particleCount << ";\n}\n\n";
   }
   return text.str();
 }

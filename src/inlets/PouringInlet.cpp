@@ -9,6 +9,7 @@
 
 #include "core/Error.h"
 #include "core/dictionary/Dictionary.h"
+#include "particles/FieldNames.h"
 
 namespace sphcast {
 
@@ -63,13 +64,13 @@ PouringInlet::PouringInlet(PouringInletSettings settings, int number, ParticleCl
   speed_ = settings_.massRate ? *settings_.massRate * spacing_ /
                                     (static_cast<double>(layer_.size()) * particleMass_)
                               : settings_.speed;
-  if (fluid_.hasIdField("id")) {
-    const auto& id = fluid_.idField("id");
+  if (fluid_.hasIdField(field::id)) {
+    const auto& id = fluid_.idField(field::id);
     for (std::size_t i = 0; i < fluid_.ownedSize(); ++i) nextId_ = std::max(nextId_, id[i] + 1);
     // every rank's (exact as a double below 2^53)
     nextId_ = static_cast<std::int64_t>(comm_.max(static_cast<double>(nextId_)));
   }
-  fluid_.addScalarField("inlet");
+  fluid_.addScalarField(field::inlet);
   fluid_.attributes().try_emplace("inflowEnergy", 0.0);
 }
 
@@ -86,7 +87,7 @@ bool PouringInlet::finishedWith(double time, double emittedMass) const {
 }
 
 bool PouringInlet::lastLayerDistance(Real& distance) const {
-  const auto& mark = fluid_.scalarField("inlet");
+  const auto& mark = fluid_.scalarField(field::inlet);
   const auto& x = fluid_.positions();
   bool found = false;
   distance = std::numeric_limits<Real>::max();
@@ -121,18 +122,18 @@ void PouringInlet::appendLayer(Real distance) {
     std::fill(field.begin() + static_cast<std::ptrdiff_t>(first), field.end(), value);
   };
   for (const std::string& name : unsetFields_) setScalar(name.c_str(), Real(-1));
-  setScalar("rho", restDensity_);
-  setScalar("restDensity", restDensity_);
-  setScalar("mass", static_cast<Real>(particleMass_));
-  setScalar("volume", static_cast<Real>(std::pow(spacing_, dimension_)));  // as setCastFields
-  setScalar("viscosity", viscosity_);
-  if (settings_.temperature > 0) setScalar("T", static_cast<Real>(settings_.temperature));
-  setScalar("u", energy_);
-  setScalar("inlet", mark_);
-  auto& U = fluid_.vectorField("U");
+  setScalar(field::rho, restDensity_);
+  setScalar(field::restDensity, restDensity_);
+  setScalar(field::mass, static_cast<Real>(particleMass_));
+  setScalar(field::volume, static_cast<Real>(std::pow(spacing_, dimension_)));  // as setCastFields
+  setScalar(field::viscosity, viscosity_);
+  if (settings_.temperature > 0) setScalar(field::T, static_cast<Real>(settings_.temperature));
+  setScalar(field::u, energy_);
+  setScalar(field::inlet, mark_);
+  auto& U = fluid_.vectorField(field::U);
   std::fill(U.begin() + static_cast<std::ptrdiff_t>(first), U.end(), velocity);
-  if (fluid_.hasIdField("id")) {
-    auto& id = fluid_.idField("id");
+  if (fluid_.hasIdField(field::id)) {
+    auto& id = fluid_.idField(field::id);
     for (std::size_t i = first; i < id.size(); ++i) id[i] = nextId_++;
   } else {
     nextId_ += static_cast<std::int64_t>(layer_.size());
@@ -167,15 +168,16 @@ std::size_t PouringInlet::appendLayers(const std::vector<Real>& distances) {
 std::size_t PouringInlet::emit(double time) { return appendLayers(layersDue(time)); }
 
 void PouringInlet::holdBuffer() {
-  auto& mark = fluid_.scalarField("inlet");
+  auto& mark = fluid_.scalarField(field::inlet);
   const auto& x = fluid_.positions();
-  auto& U = fluid_.vectorField("U");
-  auto& rho = fluid_.scalarField("rho");
-  const auto& restDensity = fluid_.scalarField("restDensity");
-  auto* acceleration =
-      fluid_.hasVectorField("acceleration") ? &fluid_.vectorField("acceleration") : nullptr;
+  auto& U = fluid_.vectorField(field::U);
+  auto& rho = fluid_.scalarField(field::rho);
+  const auto& restDensity = fluid_.scalarField(field::restDensity);
+  auto* acceleration = fluid_.hasVectorField(field::acceleration)
+                           ? &fluid_.vectorField(field::acceleration)
+                           : nullptr;
   auto* densityRate =
-      fluid_.hasScalarField("densityRate") ? &fluid_.scalarField("densityRate") : nullptr;
+      fluid_.hasScalarField(field::densityRate) ? &fluid_.scalarField(field::densityRate) : nullptr;
   const Vector velocity = static_cast<Real>(speed_) * settings_.direction;
   for (std::size_t i = 0; i < x.size(); ++i) {
     if (mark[i] != mark_) continue;

@@ -31,6 +31,7 @@
 
 #include "core/AtomicFile.h"
 #include "core/Error.h"
+#include "particles/FieldNames.h"
 
 namespace sphcast {
 
@@ -316,7 +317,8 @@ void copyIds(vtkDataArray& array, const std::string& name, std::int64_t* out,
 // a damaged or hand-made cloud, which the flow would divide by (rho, mass, the harmonic mean of
 // two viscosities) or weigh with (a wall particle's volume).
 bool mustBePositive(const std::string& fieldName) {
-  for (const char* name : {"mass", "restDensity", "rho", "viscosity", "volume"}) {
+  for (const char* name :
+       {field::mass, field::restDensity, field::rho, field::viscosity, field::volume}) {
     if (fieldName == name) return true;
   }
   return false;

@@ -1,4 +1,5 @@
 #include "particles/WallSurfaceDistance.h"
+#include "particles/FieldNames.h"
 
 namespace sphcast {
 
@@ -7,10 +8,11 @@ std::vector<WallSurfaceView> wallSurfaceViews(const ParticleCloud& fluid,
                                               const Neighbourhood& neighbourhood) {
   std::vector<WallSurfaceView> views;
   for (const ParticleCloud* wall : walls) {
-    views.push_back({wall->positions(), wall->vectorField("normal"),
-                     wall->scalarField("wallDistance"), &neighbourhood.pairs(fluid, *wall),
-                     wall->hasVectorField("U") ? std::span<const Vector>(wall->vectorField("U"))
-                                               : std::span<const Vector>()});
+    views.push_back({wall->positions(), wall->vectorField(field::normal),
+                     wall->scalarField(field::wallDistance), &neighbourhood.pairs(fluid, *wall),
+                     wall->hasVectorField(field::U)
+                         ? std::span<const Vector>(wall->vectorField(field::U))
+                         : std::span<const Vector>()});
   }
   return views;
 }
@@ -80,8 +82,8 @@ ConvexPartner convexPartner(const Vector& x, std::size_t i, const Vector& footK,
 // x_i behind it.
 WallSurfaceDistance nearestPlane(const Vector& x, std::size_t i,
                                  const std::vector<WallSurfaceView>& walls,
-                                 const PeriodicBox& periodic, Real spacing,
-                                 bool atConvexEdges, bool& anyBehind) {
+                                 const PeriodicBox& periodic, Real spacing, bool atConvexEdges,
+                                 bool& anyBehind) {
   const Real patchRadius = Real(0.75) * spacing;
   const Real patchRadiusSquared = patchRadius * patchRadius;
   WallSurfaceDistance surface;

@@ -1,4 +1,5 @@
 #include "post/CloudSummary.h"
+#include "particles/FieldNames.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -24,9 +25,9 @@ CloudSummary summarize(const ParticleCloud& cloud) {
   }
   const double count = static_cast<double>(cloud.size());
   summary.centroid = (positionSum / count).cast<Real>();
-  if (cloud.hasVectorField("U")) {
+  if (cloud.hasVectorField(field::U)) {
     Eigen::Vector3d velocitySum = Eigen::Vector3d::Zero();
-    for (const Vector& u : cloud.vectorField("U")) {
+    for (const Vector& u : cloud.vectorField(field::U)) {
       velocitySum += u.cast<double>();
       summary.maxSpeed = std::max(summary.maxSpeed, static_cast<double>(u.norm()));
     }
@@ -48,8 +49,7 @@ std::string cloudSummaryCsvRow(double time, const CloudSummary& s) {
                 time, s.particles, double(s.centroid.x()), double(s.centroid.y()),
                 double(s.centroid.z()), double(s.meanVelocity.x()), double(s.meanVelocity.y()),
                 double(s.meanVelocity.z()), s.maxSpeed, double(s.lower.x()), double(s.lower.y()),
-                double(s.lower.z()), double(s.upper.x()), double(s.upper.y()),
-                double(s.upper.z()));
+                double(s.lower.z()), double(s.upper.x()), double(s.upper.y()), double(s.upper.z()));
   return row;
 }
 

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "core/Error.h"
+#include "particles/FieldNames.h"
 
 namespace sphcast {
 
@@ -26,7 +27,8 @@ EnergyBalance::EnergyBalance(const std::string& name, const Dictionary& dict,
                                                          dict.name() + "; the run has: (" +
                                                          present + " )");
     }
-    if (!found->hasScalarField("u") || !found->attributes().contains("internalEnergyAtStart")) {
+    if (!found->hasScalarField(field::u) ||
+        !found->attributes().contains("internalEnergyAtStart")) {
       throw DictionaryError(dict.location("clouds"),
                             "cloud '" + cloudName + "' in " + dict.name() +
                                 " carries no heat (name it in heatTransfer's clouds in "
@@ -48,8 +50,8 @@ void EnergyBalance::sample(double time) {
   double change = 0, content = 0;
   double lost[3] = {0, 0, 0};
   for (const ParticleCloud* cloud : clouds_) {
-    const auto& mass = cloud->scalarField("mass");
-    const auto& u = cloud->scalarField("u");
+    const auto& mass = cloud->scalarField(field::mass);
+    const auto& u = cloud->scalarField(field::u);
     double energy = 0;  // every rank's own particles (the heat attributes are the whole's)
     for (std::size_t i = 0; i < cloud->ownedSize(); ++i) energy += double(mass[i]) * double(u[i]);
     energy = communicator().sum(energy);

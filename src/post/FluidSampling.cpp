@@ -1,4 +1,5 @@
 #include "post/FluidSampling.h"
+#include "particles/FieldNames.h"
 
 #include <algorithm>
 #include <cmath>
@@ -26,9 +27,9 @@ Real halfSpacing(const ParticleCloud& fluid) {
 ShepardInterpolation::ShepardInterpolation(const ParticleCloud& fluid, Real supportRadius,
                                            const Communicator& comm)
     : fluid_(fluid), supportRadius_(supportRadius), comm_(comm) {
-  if (fluid.hasScalarField("mass") && fluid.hasScalarField("rho")) {
-    mass_ = &fluid.scalarField("mass");
-    density_ = &fluid.scalarField("rho");
+  if (fluid.hasScalarField(field::mass) && fluid.hasScalarField(field::rho)) {
+    mass_ = &fluid.scalarField(field::mass);
+    density_ = &fluid.scalarField(field::rho);
   }
 }
 
@@ -76,15 +77,15 @@ Vector ShepardInterpolation::vector(const std::vector<Vector>& field, const Vect
     std::vector<double> sums{double(weighted[0]), double(weighted[1]), double(weighted[2]),
                              double(weights)};
     comm_.sum(sums);
-    weighted = Vector(static_cast<Real>(sums[0]), static_cast<Real>(sums[1]),
-                      static_cast<Real>(sums[2]));
+    weighted =
+        Vector(static_cast<Real>(sums[0]), static_cast<Real>(sums[1]), static_cast<Real>(sums[2]));
     weights = static_cast<Real>(sums[3]);
   }
   return weights > 0 ? Vector(weighted / weights) : Vector::Constant(Real(noFluid));
 }
 
-double surfaceHeight(const ParticleCloud& fluid, const Vector& up, const Vector& point,
-                     Real radius, const Communicator& comm) {
+double surfaceHeight(const ParticleCloud& fluid, const Vector& up, const Vector& point, Real radius,
+                     const Communicator& comm) {
   const Real radiusSquared = radius * radius;
   double highest = -std::numeric_limits<double>::infinity();
   const auto& positions = fluid.positions();

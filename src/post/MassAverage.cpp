@@ -1,4 +1,5 @@
 #include "post/MassAverage.h"
+#include "particles/FieldNames.h"
 
 #include <vector>
 
@@ -11,7 +12,7 @@ MassAverage::MassAverage(const std::string& name, const Dictionary& dict,
   if (fields_.empty()) {
     throw DictionaryError(dict.location("fields"), "'fields' lists no field in " + dict.name());
   }
-  if (!cloud().hasScalarField("mass")) {
+  if (!cloud().hasScalarField(field::mass)) {
     throw DictionaryError(
         dict.location("type"),
         "cloud '" + cloud().name() + "' has no field 'mass' to weigh by in " + dict.name());
@@ -26,7 +27,7 @@ MassAverage::MassAverage(const std::string& name, const Dictionary& dict,
 }
 
 void MassAverage::sample(double time) {
-  const auto& mass = cloud().scalarField("mass");
+  const auto& mass = cloud().scalarField(field::mass);
   for (const std::string& field : fields_) {
     std::ofstream& file = openOutput(field, "# " + field + " of cloud " + cloud().name() +
                                                 ", weighted by mass: sum m f / sum m\n" +

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "core/Error.h"
+#include "particles/FieldNames.h"
 
 namespace sphcast {
 
@@ -25,7 +26,7 @@ Solidification::Solidification(SolidificationSettings settings, const Material& 
       static_cast<Real>(criticalTemperature(range, settings_.criticalTemperatureFraction));
   criticalEnergy_ = energy.energy(tc);
   criticalSpecificHeat_ = energy.specificHeat(tc);
-  if (!metal_.hasScalarField("T")) {
+  if (!metal_.hasScalarField(field::T)) {
     throw Error("solidification needs the temperature T of cloud '" + metal_.name() +
                 "': heatTransfer must carry it (its clouds)");
   }
@@ -41,14 +42,16 @@ Solidification::Solidification(SolidificationSettings settings, const Material& 
 
 const std::vector<std::string>& Solidification::fields() {
   static const std::vector<std::string> names{
-      "solidFraction", "frozen",       "restDensity", "viscosity",       "liquidusTime",
-      "criticalTime",  "coolingRate",  "solidusTime", "criticalGradient"};
+      field::solidFraction, field::frozen,       field::restDensity,
+      field::viscosity,     field::liquidusTime, field::criticalTime,
+      field::coolingRate,   field::solidusTime,  field::criticalGradient};
   return names;
 }
 
 const std::vector<std::string>& Solidification::historyFields() {
-  static const std::vector<std::string> names{"liquidusTime", "criticalTime", "coolingRate",
-                                              "solidusTime", "criticalGradient"};
+  static const std::vector<std::string> names{field::liquidusTime, field::criticalTime,
+                                              field::coolingRate, field::solidusTime,
+                                              field::criticalGradient};
   return names;
 }
 
@@ -65,30 +68,30 @@ Real solidFraction(const Material& material, Real temperature) {
 }
 
 void Solidification::update(double time, double heatDeltaT) {
-  const auto& temperature = metal_.scalarField("T");
+  const auto& temperature = metal_.scalarField(field::T);
   // du/dt of the last heat step (none without a heat model: a crossing is then placed at `time`)
   const ParticleCloud::ScalarField* energyRate =
-      metal_.hasScalarField("energyRate") ? &metal_.scalarField("energyRate") : nullptr;
+      metal_.hasScalarField(field::energyRate) ? &metal_.scalarField(field::energyRate) : nullptr;
   const InternalEnergyTable& internalEnergy = *material_.internalEnergy;
-  auto& liquidusTime = metal_.scalarField("liquidusTime");
-  auto& criticalTime = metal_.scalarField("criticalTime");
-  auto& coolingRate = metal_.scalarField("coolingRate");
-  auto& solidusTime = metal_.scalarField("solidusTime");
-  auto& criticalGradient = metal_.scalarField("criticalGradient");
+  auto& liquidusTime = metal_.scalarField(field::liquidusTime);
+  auto& criticalTime = metal_.scalarField(field::criticalTime);
+  auto& coolingRate = metal_.scalarField(field::coolingRate);
+  auto& solidusTime = metal_.scalarField(field::solidusTime);
+  auto& criticalGradient = metal_.scalarField(field::criticalGradient);
   // when u(t) = u_end + rate (t - time) reached `level`, within the step
   const auto crossing = [&](std::size_t i, Real energy, Real level) {
     const double rate = energyRate ? static_cast<double>((*energyRate)[i]) : 0.0;
     const double back = rate < 0 ? static_cast<double>(level - energy) / rate : 0.0;
     return static_cast<Real>(time + std::clamp(back, -heatDeltaT, 0.0));
   };
-  auto& fraction = metal_.scalarField("solidFraction");
-  auto& frozen = metal_.scalarField("frozen");
-  auto& restDensity = metal_.scalarField("restDensity");
-  auto& viscosity = metal_.scalarField("viscosity");
+  auto& fraction = metal_.scalarField(field::solidFraction);
+  auto& frozen = metal_.scalarField(field::frozen);
+  auto& restDensity = metal_.scalarField(field::restDensity);
+  auto& viscosity = metal_.scalarField(field::viscosity);
   const TemperatureTable& density = *material_.density;
   const TemperatureTable& mu = *material_.viscosity;
-  const Real limit = settings_.viscosityLimit > 0 ? settings_.viscosityLimit
-                                                  : std::numeric_limits<Real>::max();
+  const Real limit =
+      settings_.viscosityLimit > 0 ? settings_.viscosityLimit : std::numeric_limits<Real>::max();
   const auto count = static_cast<std::ptrdiff_t>(metal_.size());
 #pragma omp parallel for schedule(static)
   for (std::ptrdiff_t n = 0; n < count; ++n) {
@@ -120,8 +123,8 @@ void Solidification::update(double time, double heatDeltaT) {
 }
 
 std::vector<std::size_t> Solidification::pendingCriticalGradients() const {
-  const auto& criticalTime = metal_.scalarField("criticalTime");
-  const auto& criticalGradient = metal_.scalarField("criticalGradient");
+  const auto& criticalTime = metal_.scalarField(field::criticalTime);
+  const auto& criticalGradient = metal_.scalarField(field::criticalGradient);
   std::vector<std::size_t> pending;
   for (std::size_t i = 0; i < metal_.size(); ++i) {
     if (criticalTime[i] >= 0 && criticalGradient[i] < 0) pending.push_back(i);
@@ -131,10 +134,10 @@ std::vector<std::size_t> Solidification::pendingCriticalGradients() const {
 
 SolidificationSummary Solidification::summary(const Communicator& comm) const {
   SolidificationSummary s;
-  const auto& temperature = metal_.scalarField("T");
-  const auto& fraction = metal_.scalarField("solidFraction");
-  const auto& frozen = metal_.scalarField("frozen");
-  const auto& mass = metal_.scalarField("mass");
+  const auto& temperature = metal_.scalarField(field::T);
+  const auto& fraction = metal_.scalarField(field::solidFraction);
+  const auto& frozen = metal_.scalarField(field::frozen);
+  const auto& mass = metal_.scalarField(field::mass);
   const Real limit = settings_.viscosityLimit;
   double totalMass = 0, solidMass = 0;
   s.particles = metal_.ownedSize();
@@ -150,11 +153,10 @@ SolidificationSummary Solidification::summary(const Communicator& comm) const {
     solidMass += static_cast<double>(mass[i] * fraction[i]);
   }
   if (comm.size() > 1) {
-    std::vector<std::int64_t> counts{static_cast<std::int64_t>(s.particles),
-                                     static_cast<std::int64_t>(s.liquid),
-                                     static_cast<std::int64_t>(s.solid),
-                                     static_cast<std::int64_t>(s.frozen),
-                                     static_cast<std::int64_t>(s.viscosityCapped)};
+    std::vector<std::int64_t> counts{
+        static_cast<std::int64_t>(s.particles), static_cast<std::int64_t>(s.liquid),
+        static_cast<std::int64_t>(s.solid), static_cast<std::int64_t>(s.frozen),
+        static_cast<std::int64_t>(s.viscosityCapped)};
     std::vector<double> masses{totalMass, solidMass};
     comm.sum(counts);
     comm.sum(masses);
@@ -171,7 +173,7 @@ SolidificationSummary Solidification::summary(const Communicator& comm) const {
 }
 
 bool Solidification::allSolid(const Communicator& comm) const {
-  const auto& fraction = metal_.scalarField("solidFraction");
+  const auto& fraction = metal_.scalarField(field::solidFraction);
   const auto owned = fraction.begin() + static_cast<std::ptrdiff_t>(metal_.ownedSize());
   return !comm.any(!std::all_of(fraction.begin(), owned, [](Real f) { return f == 1; }));
 }
@@ -181,8 +183,8 @@ std::string Solidification::description() const {
   std::ostringstream text;
   text << "solidification of cloud " << metal_.name() << " (material " << material_.name
        << "): solid fraction from the heat released between liquidus " << range.liquidus
-       << " K and solidus " << range.solidus << " K (latent and sensible "
-       << freezingRangeEnergy_ << " J/kg); frozen from f_s = " << settings_.frozenSolidFraction;
+       << " K and solidus " << range.solidus << " K (latent and sensible " << freezingRangeEnergy_
+       << " J/kg); frozen from f_s = " << settings_.frozenSolidFraction;
   if (settings_.viscosityLimit > 0) {
     text << "; viscosity capped at " << settings_.viscosityLimit
          << " Pa s below that (0.9 of the acoustic step's viscous limit)";

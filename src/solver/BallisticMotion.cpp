@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "core/Error.h"
+#include "particles/FieldNames.h"
 
 namespace sphcast {
 
@@ -15,7 +16,7 @@ double BallisticMotion::stableDeltaT(const ParticleCloud& cloud, double maxCo) c
                 "' has no positive 'spacing' attribute: adjustTimeStep needs the particle "
                 "spacing (setCastFields writes it)");
   }
-  const auto& velocity = cloud.vectorField("U");
+  const auto& velocity = cloud.vectorField(field::U);
   double fastest = 0.0;
 #pragma omp parallel for reduction(max : fastest)
   for (std::size_t i = 0; i < velocity.size(); ++i) {
@@ -32,7 +33,7 @@ double BallisticMotion::stableDeltaT(const ParticleCloud& cloud, double maxCo) c
 
 void BallisticMotion::step(ParticleCloud& cloud, double deltaT) const {
   auto& position = cloud.positions();
-  auto& velocity = cloud.vectorField("U");
+  auto& velocity = cloud.vectorField(field::U);
   const Real dt = static_cast<Real>(deltaT);
   const Vector halfGravityDt2 = Real(0.5) * gravity_ * dt * dt;
   const Vector gravityDt = gravity_ * dt;

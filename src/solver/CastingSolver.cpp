@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "core/Error.h"
+#include "particles/FieldNames.h"
 
 namespace sphcast {
 
@@ -50,7 +51,7 @@ double CastingSolver::stableDeltaT(std::string& limiter) const {
   limiter = "maxCo on particle travel";
   double stable = std::numeric_limits<double>::max();
   for (const ParticleCloud& cloud : clouds_) {
-    if (cloud.hasVectorField("U")) {
+    if (cloud.hasVectorField(field::U)) {
       stable = std::min(stable, motion_.stableDeltaT(cloud, time_.settings().maxCo));
     }
   }
@@ -66,7 +67,7 @@ void CastingSolver::evolve(double deltaT) {
   }
   if (!flow_ && !energy_) {
     for (ParticleCloud& cloud : clouds_) {
-      if (cloud.hasVectorField("U")) motion_.step(cloud, deltaT);
+      if (cloud.hasVectorField(field::U)) motion_.step(cloud, deltaT);
     }
     return;
   }
@@ -195,7 +196,7 @@ void CastingSolver::updateCoolingMode() {
   if (!solidification_ || !solidificationSetup_.cooling) return;
   const CoolingAcceleration& cooling = *solidificationSetup_.cooling;
   double fastest = 0;
-  const auto& velocity = fluid_->vectorField("U");
+  const auto& velocity = fluid_->vectorField(field::U);
   for (std::size_t i = 0; i < fluid_->ownedSize(); ++i) {
     fastest = std::max(fastest, static_cast<double>(velocity[i].norm()));
   }
@@ -213,7 +214,7 @@ void CastingSolver::updateCoolingMode() {
   const double window = std::max(settle, time_.state().deltaT * (1 + 1e-9));
   std::string bodyMoves;
   for (const auto& body : movingMolds_.bodies()) {
-    for (const Vector& v : body->cloud().vectorField("U")) {
+    for (const Vector& v : body->cloud().vectorField(field::U)) {
       fastest = std::max(fastest, static_cast<double>(v.norm()));
     }
     if (body->driven(time_.value())) bodyMoves = "body " + body->settings().name + " is driven";

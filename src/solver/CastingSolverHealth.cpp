@@ -1,4 +1,5 @@
 // The run's health checks after each step, and the stop with the last good state.
+#include "particles/FieldNames.h"
 #include "solver/CastingSolver.h"
 
 #include <cmath>
@@ -15,7 +16,7 @@ std::string CastingSolver::checkHealth() {
   std::ostringstream problem;
   problem.precision(4);
   for (const ParticleCloud& cloud : clouds_) {
-    if (!cloud.hasVectorField("U")) continue;  // at rest: nothing to go bad
+    if (!cloud.hasVectorField(field::U)) continue;  // at rest: nothing to go bad
     const bool cavities = &cloud == fluid_ && flowSetup_.settings.cavitationPressure >
                                                   std::numeric_limits<Real>::lowest();
     const CloudHealth health = measureCloudHealth(cloud, domain_, cavities);
@@ -85,7 +86,7 @@ std::string CastingSolver::checkHealth() {
 // past its limits) or a table was extrapolated far beyond its range.
 std::string CastingSolver::checkTemperatures() const {
   for (const HeatCloud& heat : energy_->context().clouds) {
-    const auto& T = heat.cloud->scalarField("T");
+    const auto& T = heat.cloud->scalarField(field::T);
     for (std::size_t i = 0; i < heat.cloud->ownedSize(); ++i) {
       if (T[i] > 0 && std::isfinite(T[i])) continue;
       std::ostringstream problem;

@@ -3,6 +3,7 @@
 #include <filesystem>
 
 #include "core/Error.h"
+#include "particles/FieldNames.h"
 #include "solver/CastingSolver.h"
 
 namespace sphcast {
@@ -10,7 +11,7 @@ namespace sphcast {
 void CastingSolver::setUpInlets() {
   if (inletSetup_.inlets.empty()) return;  // the constructor refused inlets without a flow
   const InternalEnergyTable* energy = nullptr;
-  if (fluid_->hasScalarField("u")) {
+  if (fluid_->hasScalarField(field::u)) {
     energy =
         &description_.heatCloudMaterial(fluid_->name()).requireInternalEnergy("a pouring inlet");
   }

@@ -1,4 +1,5 @@
 // What the solver prints at each printed step and at the end (OpenFOAM's log style).
+#include "particles/FieldNames.h"
 #include "solver/CastingSolver.h"
 
 #include <sys/resource.h>
@@ -58,9 +59,9 @@ void CastingSolver::logHeat() {
   }
   for (const HeatCloud& heat : energy_->context().clouds) {
     if (heat.fixedTemperature) continue;
-    const auto& T = heat.cloud->scalarField("T");
-    const auto& u = heat.cloud->scalarField("u");
-    const auto& mass = heat.cloud->scalarField("mass");
+    const auto& T = heat.cloud->scalarField(field::T);
+    const auto& u = heat.cloud->scalarField(field::u);
+    const auto& mass = heat.cloud->scalarField(field::mass);
     double lowest = std::numeric_limits<double>::infinity(), highest = -lowest, energy = 0;
     for (std::size_t i = 0; i < heat.cloud->ownedSize(); ++i) {
       lowest = std::min(lowest, double(T[i]));

@@ -1,5 +1,6 @@
 // The solver's construction: the case's clouds, the neighbourhood and every model of the step
 // set up from the dictionaries, the first time written again with their fields.
+#include "particles/FieldNames.h"
 #include "solver/CastingSolver.h"
 
 #include <algorithm>
@@ -103,9 +104,10 @@ CastingSolver::CastingSolver(const CaseFolder& caseFolder, const Communicator& c
     if (!description_.gravity()) readGravity(caseFolder_);
     for (const ParticleCloud& cloud : clouds_) {
       info() << "Cloud " << cloud.name() << ": " << cloud.size() << " particles"
-             << (cloud.hasVectorField("U") ? ", moving ballistically" : ", static (no U field)")
+             << (cloud.hasVectorField(field::U) ? ", moving ballistically"
+                                                : ", static (no U field)")
              << '\n';
-      if (time_.settings().adjustTimeStep && cloud.hasVectorField("U")) {
+      if (time_.settings().adjustTimeStep && cloud.hasVectorField(field::U)) {
         motion_.stableDeltaT(cloud, time_.settings().maxCo);  // fail now, not after writing
       }
     }
@@ -398,7 +400,7 @@ void CastingSolver::setUpHeat() {
     std::vector<const ParticleCloud*> covering;
     exposedAreaRestored_ = energy_->restarted();
     for (const HeatCloud& heat : energy_->context().clouds) {
-      exposedAreaRestored_ = exposedAreaRestored_ && heat.cloud->hasScalarField("exposedArea");
+      exposedAreaRestored_ = exposedAreaRestored_ && heat.cloud->hasScalarField(field::exposedArea);
       exposed.push_back(heat.cloud);
       covering.push_back(heat.cloud);
     }
@@ -476,8 +478,8 @@ void CastingSolver::recordCriticalGradients() {
   const int dimension = description_.dimension();
   const std::vector<Real> volume = particleVolumes(metal, dimension);
   const NeighbourList& pairs = neighbourhood_->pairs(metal, metal);
-  auto& gradient = metal.scalarField("criticalGradient");
-  const auto& T = metal.scalarField("T");
+  auto& gradient = metal.scalarField(field::criticalGradient);
+  const auto& T = metal.scalarField(field::T);
   for (const std::size_t i : pending) {
     gradient[i] = correctedGradient(metal, T, volume, pairs, neighbourhood_->periodicBox(),
                                     neighbourhood_->radius(), dimension, i)

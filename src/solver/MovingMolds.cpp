@@ -4,6 +4,7 @@
 
 #include "core/Error.h"
 #include "core/Log.h"
+#include "particles/FieldNames.h"
 
 namespace sphcast {
 
@@ -53,7 +54,7 @@ MovingMolds::MovingMolds(const BodySetup& setup,
     : flow_(&flow), neighbourhood_(&neighbourhood), comm_(comm) {
   for (const RigidBodySettings& settings : setup.bodies) {
     ParticleCloud& cloud = cloudOf(settings.cloud);
-    const bool hadRestPositions = cloud.hasVectorField("restPosition");
+    const bool hadRestPositions = cloud.hasVectorField(field::restPosition);
     auto body = std::make_unique<RigidBody>(settings, cloud, gravity, comm_);
     if (state && state->found(settings.name)) {
       body->readState(state->subDict(settings.name), time);

@@ -5,6 +5,7 @@
 
 #include "core/Error.h"
 #include "core/Log.h"
+#include "particles/FieldNames.h"
 
 namespace sphcast {
 
@@ -16,12 +17,12 @@ PouringInlets::PouringInlets(const InletSetup& setup, ParticleCloud& fluid, int 
     : fluid_(&fluid) {
   for (const PouringInletSettings& settings : setup.inlets) {
     const bool constantProperties = restDensity.isConstant() && viscosity.isConstant();
-    if (settings.temperature == 0 && (fluid.hasScalarField("T") || !constantProperties)) {
+    if (settings.temperature == 0 && (fluid.hasScalarField(field::T) || !constantProperties)) {
       throw DictionaryError(setup.declaredAt.at(settings.name),
                             "inlet '" + settings.name + "' needs the temperature T of its metal (" +
-                                (fluid.hasScalarField("T") ? "the fluid carries T"
-                                                           : "the fluid's rho_s or mu is a "
-                                                             "table in T") +
+                                (fluid.hasScalarField(field::T) ? "the fluid carries T"
+                                                                : "the fluid's rho_s or mu is a "
+                                                                  "table in T") +
                                 ")");
     }
     auto inlet =

@@ -8,6 +8,7 @@
 
 #include "core/Error.h"
 #include "core/dictionary/Dictionary.h"
+#include "particles/FieldNames.h"
 
 namespace sphcast {
 
@@ -57,13 +58,13 @@ HealthSettings HealthSettings::read(const Dictionary& controlDict) {
 CloudHealth measureCloudHealth(const ParticleCloud& cloud, const Domain& domain,
                                bool expansionOpensCavities) {
   const auto& x = cloud.positions();
-  const auto& u = cloud.vectorField("U");
+  const auto& u = cloud.vectorField(field::U);
   CloudHealth health;
   health.firstBad = cloud.ownedSize();
-  health.hasDensity = cloud.hasScalarField("rho") && cloud.hasScalarField("restDensity");
+  health.hasDensity = cloud.hasScalarField(field::rho) && cloud.hasScalarField(field::restDensity);
   static const std::vector<Real> none;
-  const auto& rho = health.hasDensity ? cloud.scalarField("rho") : none;
-  const auto& restDensity = health.hasDensity ? cloud.scalarField("restDensity") : none;
+  const auto& rho = health.hasDensity ? cloud.scalarField(field::rho) : none;
+  const auto& restDensity = health.hasDensity ? cloud.scalarField(field::restDensity) : none;
   const double lowestCounted = expansionOpensCavities ? 0.0 : -1e300;
   auto deviationOf = [&](std::size_t i) {
     const double relative = static_cast<double>(rho[i] / restDensity[i]) - 1.0;
@@ -117,8 +118,8 @@ std::string describeParticle(const ParticleCloud& cloud, std::size_t index, cons
   text.precision(6);
   // the id first: the index is the particle's place after the step's reorder, which the
   // written state (from before the step) need not share
-  if (cloud.hasIdField("id") && index < cloud.size()) {
-    text << "particle id " << cloud.idField("id")[index] << " (index " << index << ")";
+  if (cloud.hasIdField(field::id) && index < cloud.size()) {
+    text << "particle id " << cloud.idField(field::id)[index] << " (index " << index << ")";
   } else {
     text << "particle " << index;
   }
@@ -149,11 +150,11 @@ std::string HealthWarnings::summary() const {
 }
 
 FluidSummary summarizeFluid(const ParticleCloud& fluid, const Communicator& comm) {
-  const auto& u = fluid.vectorField("U");
-  const auto& rho = fluid.scalarField("rho");
-  const auto& restDensity = fluid.scalarField("restDensity");
-  const auto& p = fluid.scalarField("p");
-  const auto& mass = fluid.scalarField("mass");
+  const auto& u = fluid.vectorField(field::U);
+  const auto& rho = fluid.scalarField(field::rho);
+  const auto& restDensity = fluid.scalarField(field::restDensity);
+  const auto& p = fluid.scalarField(field::p);
+  const auto& mass = fluid.scalarField(field::mass);
   const double inf = std::numeric_limits<double>::infinity();
   // the lowest values as the largest of their negatives: one reduction for all
   std::vector<double> largest{0, -inf, -inf, -inf, -inf, -inf, -inf};

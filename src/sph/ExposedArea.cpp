@@ -5,6 +5,7 @@
 #include <string>
 
 #include "core/Error.h"
+#include "particles/FieldNames.h"
 #include "particles/WendlandKernel.h"
 
 namespace sphcast {
@@ -143,8 +144,8 @@ ExposedArea::ExposedArea(ExposedAreaForm form, int dimension, Real supportRadius
                                         : fullLatticeMomentIn<3>(supportRadius, spacing);
   }
   for (ParticleCloud* cloud : exposed_) {
-    cloud->addScalarField("exposedArea");
-    cloud->addScalarField("granularity");
+    cloud->addScalarField(field::exposedArea);
+    cloud->addScalarField(field::granularity);
     for (const ParticleCloud* other : covering_) neighbourhood.requestPairs(*cloud, *other);
   }
 }
@@ -210,8 +211,8 @@ void ExposedArea::computeIn() {
       const std::vector<Real>& volume = *exposed[e].volume;
       const auto& lists = exposed[e].lists;
       const auto& x = cloud->positions();
-      auto& granularity = cloud->scalarField("granularity");
-      auto& area = cloud->scalarField("exposedArea");
+      auto& granularity = cloud->scalarField(field::granularity);
+      auto& area = cloud->scalarField(field::exposedArea);
       if (gradientForm) {
         gradientArea[e].resize(x.size());
         fullness_[e].resize(x.size());
@@ -251,15 +252,15 @@ void ExposedArea::computeIn() {
     for (std::size_t e = 0; e < exposed_.size(); ++e) {
       ParticleCloud* cloud = exposed_[e];
       if (std::find(lattices_.begin(), lattices_.end(), cloud) != lattices_.end()) {
-        auto& area = cloud->scalarField("exposedArea");
+        auto& area = cloud->scalarField(field::exposedArea);
         std::copy(gradientArea[e].begin(), gradientArea[e].end(), area.begin());
         continue;
       }
       const std::vector<Real>& volume = *exposed[e].volume;
       const auto& lists = exposed[e].lists;
       const auto& x = cloud->positions();
-      const auto& granularity = cloud->scalarField("granularity");
-      auto& area = cloud->scalarField("exposedArea");
+      const auto& granularity = cloud->scalarField(field::granularity);
+      auto& area = cloud->scalarField(field::exposedArea);
 #pragma omp parallel for schedule(static)
       for (std::size_t i = 0; i < x.size(); ++i) {
         Real weighted = volume[i] * selfKernel * fullness_[e][i];

@@ -3,6 +3,7 @@
 #include <vector>
 
 #include "core/Real.h"
+#include "particles/FieldNames.h"
 #include "particles/Neighbourhood.h"
 #include "particles/ParticleCloud.h"
 
@@ -20,7 +21,7 @@ namespace sphcast {
 // so a filled casting costs one pass over a field.
 class FillTime {
  public:
-  static constexpr const char* field = "fillTime";
+  static constexpr const char* field = field::fillTime;
 
   // Adds the field (-1) to the fluid unless it has it (a restart keeps its own).
   FillTime(ParticleCloud& fluid, std::vector<const ParticleCloud*> walls);

@@ -8,6 +8,7 @@
 
 #include "core/Error.h"
 #include "core/dictionary/Dictionary.h"
+#include "particles/FieldNames.h"
 #include "sph/EquationOfState.h"
 
 namespace sphcast {
@@ -135,8 +136,8 @@ SoundSpeedCheck checkSoundSpeed(const FlowSettings& settings, const ParticleClou
       bottom = std::min(bottom, y[k].cast<double>().dot(up));
     }
   }
-  if (fluid.hasVectorField("U")) {
-    const auto& u = fluid.vectorField("U");
+  if (fluid.hasVectorField(field::U)) {
+    const auto& u = fluid.vectorField(field::U);
     for (std::size_t i = 0; i < fluid.ownedSize(); ++i) {
       check.initialSpeed = std::max(check.initialSpeed, static_cast<double>(u[i].norm()));
     }
@@ -201,41 +202,41 @@ std::vector<std::string> prepareFluidFields(const FlowSetup& setup, ParticleClou
       fill(name, static_cast<Real>(table(0)));
       return;
     }
-    if (!fluid.hasScalarField("T")) {
+    if (!fluid.hasScalarField(field::T)) {
       throw DictionaryError(table.location(), table.description() +
                                                   " is a table in T, but cloud '" + fluid.name() +
                                                   "' has no T (set it with setCastFields)");
     }
     // a copy: adding a field may move the others
-    const std::vector<Real> temperature = fluid.scalarField("T");
+    const std::vector<Real> temperature = fluid.scalarField(field::T);
     auto& field = fluid.addScalarField(name);
     for (std::size_t i = 0; i < field.size(); ++i) {
       field[i] = static_cast<Real>(table(static_cast<double>(temperature[i])));
     }
     added.emplace_back(name);
   };
-  fillFromTable("restDensity", *setup.restDensity);
-  fillFromTable("viscosity", *setup.viscosity);
-  if (!fluid.hasScalarField("rho")) {
+  fillFromTable(field::restDensity, *setup.restDensity);
+  fillFromTable(field::viscosity, *setup.viscosity);
+  if (!fluid.hasScalarField(field::rho)) {
     // a copy: adding a field may move the others
-    const std::vector<Real> restValues = fluid.scalarField("restDensity");
-    fluid.addScalarField("rho") = restValues;
-    added.emplace_back("rho");
+    const std::vector<Real> restValues = fluid.scalarField(field::restDensity);
+    fluid.addScalarField(field::rho) = restValues;
+    added.emplace_back(field::rho);
   }
-  if (!fluid.hasScalarField("mass")) {
-    if (!fluid.hasScalarField("volume")) {
+  if (!fluid.hasScalarField(field::mass)) {
+    if (!fluid.hasScalarField(field::volume)) {
       throw Error("cloud '" + fluid.name() +
                   "' has neither 'mass' nor 'volume' (setCastFields writes volume)");
     }
-    const auto& volume = fluid.scalarField("volume");
-    const auto& rho = fluid.scalarField("rho");
-    auto& mass = fluid.addScalarField("mass");
+    const auto& volume = fluid.scalarField(field::volume);
+    const auto& rho = fluid.scalarField(field::rho);
+    auto& mass = fluid.addScalarField(field::mass);
     for (std::size_t i = 0; i < mass.size(); ++i) mass[i] = rho[i] * volume[i];
-    added.emplace_back("mass");
+    added.emplace_back(field::mass);
   }
-  if (!fluid.hasVectorField("U")) {
-    fluid.addVectorField("U");
-    added.emplace_back("U");
+  if (!fluid.hasVectorField(field::U)) {
+    fluid.addVectorField(field::U);
+    added.emplace_back(field::U);
   }
   return added;
 }
@@ -244,8 +245,8 @@ std::vector<Real> startPressure(const FlowSetup& setup, const ParticleCloud& flu
   ParticleCloud started = fluid;
   prepareFluidFields(setup, started);
   const LinearEquationOfState equationOfState{setup.settings.soundSpeed};
-  const auto& rho = started.scalarField("rho");
-  const auto& restDensity = started.scalarField("restDensity");
+  const auto& rho = started.scalarField(field::rho);
+  const auto& restDensity = started.scalarField(field::restDensity);
   std::vector<Real> pressure(rho.size());
   for (std::size_t i = 0; i < rho.size(); ++i) {
     pressure[i] = equationOfState.pressure(rho[i], restDensity[i]);

@@ -3,18 +3,19 @@
 #include <algorithm>
 
 #include "core/Error.h"
+#include "particles/FieldNames.h"
 
 namespace sphcast {
 
 std::vector<Real> particleVolumes(const ParticleCloud& cloud, int dimension) {
   std::vector<Real> volume(cloud.size());
-  if (cloud.hasScalarField("mass") && cloud.hasScalarField("rho")) {
-    const auto& mass = cloud.scalarField("mass");
-    const auto& rho = cloud.scalarField("rho");
+  if (cloud.hasScalarField(field::mass) && cloud.hasScalarField(field::rho)) {
+    const auto& mass = cloud.scalarField(field::mass);
+    const auto& rho = cloud.scalarField(field::rho);
     for (std::size_t j = 0; j < volume.size(); ++j) volume[j] = mass[j] / rho[j];
     return volume;
   }
-  if (cloud.hasScalarField("volume")) return cloud.scalarField("volume");
+  if (cloud.hasScalarField(field::volume)) return cloud.scalarField(field::volume);
   const auto spacing = cloud.attributes().find("spacing");
   if (spacing == cloud.attributes().end()) {
     throw Error("cloud '" + cloud.name() +

@@ -10,18 +10,17 @@
 
 #include "core/Error.h"
 #include "core/Log.h"
+#include "particles/FieldNames.h"
 #include "sph/EquationOfState.h"
 #include "sph/FlowRates.h"
 
 namespace sphcast {
 
 double FlowStepLimits::smallest(std::string& limiter) const {
-  const std::pair<double, const char*> limits[] = {{acoustic, "acoustic CFL"},
-                                                   {viscous, "viscous"},
-                                                   {bodyForce, "body force"},
-                                                   {acceleration, "acceleration"},
-                                                   {densityRate, "density rate"},
-                                                   {forceModel, forceModelName.c_str()}};
+  const std::pair<double, const char*> limits[] = {
+      {acoustic, "acoustic CFL"},    {viscous, "viscous"},
+      {bodyForce, "body force"},     {acceleration, "acceleration"},
+      {densityRate, "density rate"}, {forceModel, forceModelName.c_str()}};
   const auto* smallest = std::min_element(  // of equal limits the first, as before
       std::begin(limits), std::end(limits),
       [](const auto& a, const auto& b) { return a.first < b.first; });
@@ -80,12 +79,14 @@ void WeaklyCompressibleFlow::checkInput() {
                 "setCastFields writes)");
   }
   // Each look-up throws an Error naming the cloud and the fields it has.
-  fluid_.vectorField("U");
-  for (const char* name : {"rho", "mass", "viscosity", "restDensity"}) fluid_.scalarField(name);
+  fluid_.vectorField(field::U);
+  for (const char* name : {field::rho, field::mass, field::viscosity, field::restDensity}) {
+    fluid_.scalarField(name);
+  }
   for (const ParticleCloud* wall : walls_) {
-    wall->scalarField("volume");
-    wall->vectorField("normal");
-    wall->scalarField("wallDistance");
+    wall->scalarField(field::volume);
+    wall->vectorField(field::normal);
+    wall->scalarField(field::wallDistance);
   }
   if (settings_.dimension == 2) requirePlane();
   for (const ParticleCloud* wall : walls_) wallPressure_.emplace_back(wall->size(), Real(0));
@@ -95,9 +96,9 @@ void WeaklyCompressibleFlow::checkInput() {
   loadTorque_.resize(walls_.size());
   const auto& restart = restartFields();  // acceleration (a vector), densityRate
   restarted_ = fluid_.hasVectorField(restart[0]) && fluid_.hasScalarField(restart[1]);
-  fluid_.addScalarField("p");
-  fluid_.addVectorField("acceleration");
-  fluid_.addScalarField("densityRate");
+  fluid_.addScalarField(field::p);
+  fluid_.addVectorField(field::acceleration);
+  fluid_.addScalarField(field::densityRate);
   neighbourhood_.addCloud(fluid_, Neighbourhood::Motion::moving);
   neighbourhood_.requestPairs(fluid_, fluid_);
   for (const ParticleCloud* wall : walls_) {
@@ -152,7 +153,7 @@ void WeaklyCompressibleFlow::sumClearanceImpulses() {
   }
   if (clearanceWall_.empty()) return;
   const auto& x = fluid_.positions();
-  const auto& mass = fluid_.scalarField("mass");
+  const auto& mass = fluid_.scalarField(field::mass);
   for (std::size_t i = 0; i < fluid_.ownedSize(); ++i) {  // the owned: the clearance's
     const int w = clearanceWall_[i];
     if (w < 0 || !loadMeasured_[w]) continue;
@@ -193,8 +194,8 @@ std::vector<WallSurfaceView> WeaklyCompressibleFlow::wallSurfaces() const {
 
 void WeaklyCompressibleFlow::keepClearOfWalls() {
   const Real spacing = static_cast<Real>(fluid_.attributes().at("spacing"));
-  const bool anyLoad = std::find(loadMeasured_.begin(), loadMeasured_.end(), true) !=
-                       loadMeasured_.end();
+  const bool anyLoad =
+      std::find(loadMeasured_.begin(), loadMeasured_.end(), true) != loadMeasured_.end();
   if (anyLoad) {
     clearanceVelocityChange_.resize(fluid_.size());
     clearanceWall_.resize(fluid_.size());
@@ -205,10 +206,10 @@ void WeaklyCompressibleFlow::keepClearOfWalls() {
   addWallTime(timings_.wallClearance, [&] {
     lastClearance_ = enforceWallClearance(
         std::span<Vector>(fluid_.positions()).first(owned),
-        std::span<Vector>(fluid_.vectorField("U")).first(owned), wallSurfaces(), settings_.periodic,
-        spacing, settings_.wallClearance * spacing,
-        fluid_.hasScalarField("frozen")
-            ? std::span<const Real>(fluid_.scalarField("frozen")).first(owned)
+        std::span<Vector>(fluid_.vectorField(field::U)).first(owned), wallSurfaces(),
+        settings_.periodic, spacing, settings_.wallClearance * spacing,
+        fluid_.hasScalarField(field::frozen)
+            ? std::span<const Real>(fluid_.scalarField(field::frozen)).first(owned)
             : std::span<const Real>(),
         anyLoad ? std::span<Vector>(clearanceVelocityChange_).first(owned) : std::span<Vector>(),
         anyLoad ? std::span<int>(clearanceWall_).first(owned) : std::span<int>());
@@ -223,9 +224,9 @@ void WeaklyCompressibleFlow::keepClearOfWalls() {
 
 void WeaklyCompressibleFlow::updatePressure() {
   const LinearEquationOfState eos{settings_.soundSpeed};
-  const auto& density = fluid_.scalarField("rho");
-  const auto& restDensity = fluid_.scalarField("restDensity");
-  auto& pressure = fluid_.scalarField("p");
+  const auto& density = fluid_.scalarField(field::rho);
+  const auto& restDensity = fluid_.scalarField(field::restDensity);
+  auto& pressure = fluid_.scalarField(field::p);
   const Real lowest = settings_.cavitationPressure;
 #pragma omp parallel for
   for (std::size_t i = 0; i < density.size(); ++i) {
@@ -237,10 +238,10 @@ void WeaklyCompressibleFlow::updatePressure() {
 // their velocity at zero, whatever it was when they froze. Called after the rates and before the
 // first kick, so that a particle frozen between two steps does not drift on its old velocity.
 void WeaklyCompressibleFlow::holdFrozenParticles() {
-  if (!fluid_.hasScalarField("frozen")) return;
-  const auto& frozen = fluid_.scalarField("frozen");
-  auto& v = fluid_.vectorField("U");
-  auto& acceleration = fluid_.vectorField("acceleration");
+  if (!fluid_.hasScalarField(field::frozen)) return;
+  const auto& frozen = fluid_.scalarField(field::frozen);
+  auto& v = fluid_.vectorField(field::U);
+  auto& acceleration = fluid_.vectorField(field::acceleration);
 #pragma omp parallel for
   for (std::size_t i = 0; i < frozen.size(); ++i) {
     if (frozen[i] != 0) {
@@ -270,10 +271,10 @@ void WeaklyCompressibleFlow::kickAndDrift(double deltaT) {
   const Real halfDt = Real(0.5) * dt;
   const bool kickDensity = settings_.densityScheme != "deltaSPH";
   auto& x = fluid_.positions();
-  auto& v = fluid_.vectorField("U");
-  auto& rho = fluid_.scalarField("rho");
-  const auto& densityRate = fluid_.scalarField("densityRate");
-  const auto& acceleration = fluid_.vectorField("acceleration");
+  auto& v = fluid_.vectorField(field::U);
+  auto& rho = fluid_.scalarField(field::rho);
+  const auto& densityRate = fluid_.scalarField(field::densityRate);
+  const auto& acceleration = fluid_.vectorField(field::acceleration);
   const PeriodicBox periodic = settings_.periodic;
   addWallTime(timings_.integration, [&] {
     if (kickDensity) {
@@ -302,10 +303,10 @@ void WeaklyCompressibleFlow::computeRatesAndKick(double deltaT) {
     return;
   }
   const Real halfDt = Real(0.5) * dt;
-  auto& v = fluid_.vectorField("U");
-  auto& rho = fluid_.scalarField("rho");
-  const auto& densityRate = fluid_.scalarField("densityRate");
-  const auto& acceleration = fluid_.vectorField("acceleration");
+  auto& v = fluid_.vectorField(field::U);
+  auto& rho = fluid_.scalarField(field::rho);
+  const auto& densityRate = fluid_.scalarField(field::densityRate);
+  const auto& acceleration = fluid_.vectorField(field::acceleration);
   addWallTime(timings_.rates, [&] {
     updatePressure();
     computeRates();
@@ -336,10 +337,10 @@ void WeaklyCompressibleFlow::computeRatesAndKick(double deltaT) {
 // the pairs (the 2D dam break at a/dx = 20: 4.2 s against riemann's 2.8 s).
 void WeaklyCompressibleFlow::computeRatesAndKickStormerVerlet(Real dt) {
   const Real halfDt = Real(0.5) * dt;
-  auto& v = fluid_.vectorField("U");
-  auto& rho = fluid_.scalarField("rho");
-  const auto& densityRate = fluid_.scalarField("densityRate");
-  const auto& acceleration = fluid_.vectorField("acceleration");
+  auto& v = fluid_.vectorField(field::U);
+  auto& rho = fluid_.scalarField(field::rho);
+  const auto& densityRate = fluid_.scalarField(field::densityRate);
+  const auto& acceleration = fluid_.vectorField(field::acceleration);
   addWallTime(timings_.rates, [&] { computeRates(RatePart::densityRate); });  // p is still of rho^n
   addWallTime(timings_.integration, [&] {
 #pragma omp parallel for
@@ -354,11 +355,11 @@ void WeaklyCompressibleFlow::computeRatesAndKickStormerVerlet(Real dt) {
 }
 
 FlowStepLimits WeaklyCompressibleFlow::stepLimits(double maxCo) const {
-  const auto& v = fluid_.vectorField("U");
-  const auto& rho = fluid_.scalarField("rho");
-  const auto& mu = fluid_.scalarField("viscosity");
-  const auto& a = fluid_.vectorField("acceleration");
-  const auto& densityRate = fluid_.scalarField("densityRate");
+  const auto& v = fluid_.vectorField(field::U);
+  const auto& rho = fluid_.scalarField(field::rho);
+  const auto& mu = fluid_.scalarField(field::viscosity);
+  const auto& a = fluid_.vectorField(field::acceleration);
+  const auto& densityRate = fluid_.scalarField(field::densityRate);
   double fastest = 0;
   double largestAcceleration = 0;
   double largestRelativeDensityRate = 0;
@@ -376,8 +377,8 @@ FlowStepLimits WeaklyCompressibleFlow::stepLimits(double maxCo) const {
         std::max(largestKinematicViscosity, static_cast<double>(mu[i] / rho[i]));
   }
   for (const ParticleCloud* wall : walls_) {  // a moving mold's speed counts as the fluid's
-    if (!wall->hasVectorField("U")) continue;
-    for (const Vector& u : wall->vectorField("U")) {
+    if (!wall->hasVectorField(field::U)) continue;
+    for (const Vector& u : wall->vectorField(field::U)) {
       fastest = std::max(fastest, static_cast<double>(u.norm()));
     }
   }
@@ -411,14 +412,13 @@ FlowStepLimits WeaklyCompressibleFlow::stepLimits(double maxCo) const {
       forceLimiter = model->limitName();
     }
   }
-  return {
-      maxCo * dx / (settings_.soundSpeed + fastest),
-      largestKinematicViscosity > 0 ? 0.125 * dx * dx / largestKinematicViscosity : infinite,
-      g > 0 ? 0.25 * std::sqrt(dx / g) : infinite,
-      largestAcceleration > 0 ? 0.25 * std::sqrt(dx / largestAcceleration) : infinite,
-      largestRelativeDensityRate > 0 ? maxDensityChange / largestRelativeDensityRate : infinite,
-      forceLimit,
-      forceLimiter};
+  return {maxCo * dx / (settings_.soundSpeed + fastest),
+          largestKinematicViscosity > 0 ? 0.125 * dx * dx / largestKinematicViscosity : infinite,
+          g > 0 ? 0.25 * std::sqrt(dx / g) : infinite,
+          largestAcceleration > 0 ? 0.25 * std::sqrt(dx / largestAcceleration) : infinite,
+          largestRelativeDensityRate > 0 ? maxDensityChange / largestRelativeDensityRate : infinite,
+          forceLimit,
+          forceLimiter};
 }
 
 }  // namespace sphcast

@@ -1,3 +1,4 @@
+#include "particles/FieldNames.h"
 #include "sph/WeaklyCompressibleFlow.h"
 
 #include <algorithm>
@@ -20,8 +21,8 @@ void WeaklyCompressibleFlow::extrapolateWallPressure() {
   const WendlandC2Kernel<Dim> kernel(settings_.supportRadius);
   const PeriodicBox periodic = settings_.periodic;
   const auto& x = fluid_.positions();
-  const auto& rho = fluid_.scalarField("rho");
-  const auto& p = fluid_.scalarField("p");
+  const auto& rho = fluid_.scalarField(field::rho);
+  const auto& p = fluid_.scalarField(field::p);
   const Vector gravity = settings_.gravity;
   // as in computeRatesFor: the minimum image only when an axis is periodic, chosen once
   auto extrapolateWith = [&](auto separation) {
@@ -31,8 +32,8 @@ void WeaklyCompressibleFlow::extrapolateWallPressure() {
       wallPressure_[w].resize(wallX.size());  // a decomposed run's walls change with a re-balance
       Real* wallPressure = wallPressure_[w].data();
       // a moving wall's particles feel g - a_wall (eq. (27))
-      const Vector* wallAcceleration = walls_[w]->hasVectorField("acceleration")
-                                           ? walls_[w]->vectorField("acceleration").data()
+      const Vector* wallAcceleration = walls_[w]->hasVectorField(field::acceleration)
+                                           ? walls_[w]->vectorField(field::acceleration).data()
                                            : nullptr;
 #pragma omp parallel for schedule(static)
       for (std::size_t k = 0; k < wallX.size(); ++k) {
@@ -68,13 +69,14 @@ void WeaklyCompressibleFlow::computeCorrection() {
   const PeriodicBox periodic = settings_.periodic;
   const bool densityGradient = settings_.densityScheme == "deltaSPH";
   const auto& x = fluid_.positions();
-  const auto& rho = fluid_.scalarField("rho");
-  const auto& mass = fluid_.scalarField("mass");
-  const auto& restDensity = fluid_.scalarField("restDensity");
+  const auto& rho = fluid_.scalarField(field::rho);
+  const auto& mass = fluid_.scalarField(field::mass);
+  const auto& restDensity = fluid_.scalarField(field::restDensity);
   correction_.resize(x.size());
   densityGradient_.resize(densityGradient ? x.size() : 0);
   std::vector<const Real*> wallVolume;  // looked up once, not per particle
-  for (const ParticleCloud* wall : walls_) wallVolume.push_back(wall->scalarField("volume").data());
+  for (const ParticleCloud* wall : walls_)
+    wallVolume.push_back(wall->scalarField(field::volume).data());
   const NeighbourList& fluidList = fluidPairs();
   std::vector<const NeighbourList*> wallLists;
   for (std::size_t w = 0; w < walls_.size(); ++w) wallLists.push_back(&wallPairs(w));
@@ -129,14 +131,14 @@ void WeaklyCompressibleFlow::computeRatesFor() {
                                 Real(0.01) * spacing * spacing};
   const PeriodicBox periodic = settings_.periodic;
   const auto& x = fluid_.positions();
-  const auto& v = fluid_.vectorField("U");
-  const auto& rho = fluid_.scalarField("rho");
-  const auto& p = fluid_.scalarField("p");
-  const auto& mass = fluid_.scalarField("mass");
-  const auto& mu = fluid_.scalarField("viscosity");
-  const auto& restDensity = fluid_.scalarField("restDensity");
-  auto& densityRate = fluid_.scalarField("densityRate");
-  auto& acceleration = fluid_.vectorField("acceleration");
+  const auto& v = fluid_.vectorField(field::U);
+  const auto& rho = fluid_.scalarField(field::rho);
+  const auto& p = fluid_.scalarField(field::p);
+  const auto& mass = fluid_.scalarField(field::mass);
+  const auto& mu = fluid_.scalarField(field::viscosity);
+  const auto& restDensity = fluid_.scalarField(field::restDensity);
+  auto& densityRate = fluid_.scalarField(field::densityRate);
+  auto& acceleration = fluid_.vectorField(field::acceleration);
   struct WallArrays {
     const Vector* position;
     const Real* volume;
@@ -156,10 +158,10 @@ void WeaklyCompressibleFlow::computeRatesFor() {
       loadTorque_[w].resize(x.size());
     }
     walls.push_back(
-        {walls_[w]->positions().data(), walls_[w]->scalarField("volume").data(),
-         walls_[w]->vectorField("normal").data(), walls_[w]->scalarField("wallDistance").data(),
-         wallPressure_[w].data(), &wallPairs(w),
-         walls_[w]->hasVectorField("U") ? walls_[w]->vectorField("U").data() : nullptr,
+        {walls_[w]->positions().data(), walls_[w]->scalarField(field::volume).data(),
+         walls_[w]->vectorField(field::normal).data(),
+         walls_[w]->scalarField(field::wallDistance).data(), wallPressure_[w].data(), &wallPairs(w),
+         walls_[w]->hasVectorField(field::U) ? walls_[w]->vectorField(field::U).data() : nullptr,
          measured ? loadForce_[w].data() : nullptr, measured ? loadTorque_[w].data() : nullptr});
   }
   const Real halfSpacing = Real(0.5) * spacing;
@@ -186,8 +188,8 @@ void WeaklyCompressibleFlow::computeRatesFor() {
   // with one hop a pocket of melt in frozen metal settled 0.7 dx lower, its particles to 0.44 dx).
   // (decided by the field, not by its storage: a rank that has held no metal yet has none, and
   // every rank must take part in markFrozenNearMelt's halo refresh)
-  const bool solidifies = fluid_.hasScalarField("frozen");
-  const Real* frozen = solidifies ? fluid_.scalarField("frozen").data() : nullptr;
+  const bool solidifies = fluid_.hasScalarField(field::frozen);
+  const Real* frozen = solidifies ? fluid_.scalarField(field::frozen).data() : nullptr;
   const std::uint8_t* nearMelt = nullptr;
   std::uint64_t skipped = 0;
   if (solidifies) {
@@ -419,7 +421,7 @@ void WeaklyCompressibleFlow::computeRates(RatePart part) {
 // For each particle, whether a melt (not frozen) particle lies within two neighbour hops:
 // 1 for melt and the frozen particles it reaches that way (computeRatesFor skips the others).
 std::uint64_t WeaklyCompressibleFlow::markFrozenNearMelt() {
-  const auto& frozen = fluid_.scalarField("frozen");
+  const auto& frozen = fluid_.scalarField(field::frozen);
   const std::uint64_t* begins = fluidPairs().offsets().data();
   const std::uint64_t* ends = fluidPairs().ends().data();
   const std::uint32_t* neighbours = fluidPairs().neighbours().data();

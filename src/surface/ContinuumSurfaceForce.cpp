@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "core/Error.h"
+#include "particles/FieldNames.h"
 #include "particles/WallSurfaceDistance.h"
 #include "particles/WendlandKernel.h"
 #include "sph/ParticleVolumes.h"
@@ -148,7 +149,7 @@ ContinuumSurfaceForce::ContinuumSurfaceForce(SurfaceTensionSettings settings, Pa
         "Gamma_s");
   }
   requireTemperatureFor(*settings_.gasTension, fluid_);
-  if (!fluid_.hasScalarField("curvature")) fluid_.addScalarField("curvature");
+  if (!fluid_.hasScalarField(field::curvature)) fluid_.addScalarField(field::curvature);
   neighbourhood_.requestPairs(fluid_, fluid_);
   for (const ParticleCloud* wall : walls_) neighbourhood_.requestPairs(fluid_, *wall);
 }
@@ -455,9 +456,9 @@ void ContinuumSurfaceForce::addAcceleration() {
   tensionAtParticles(*settings_.gasTension, fluid_, tension_);
   computeSurface();
   const std::size_t n = fluid_.size();
-  const auto& rho = fluid_.scalarField("rho");
-  auto& acceleration = fluid_.vectorField("acceleration");
-  auto& curvature = fluid_.scalarField("curvature");
+  const auto& rho = fluid_.scalarField(field::rho);
+  auto& acceleration = fluid_.vectorField(field::acceleration);
+  auto& curvature = fluid_.scalarField(field::curvature);
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < n; ++i) {
     curvature[i] = kappa_[i];

@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "core/Error.h"
+#include "particles/FieldNames.h"
 #include "particles/WendlandKernel.h"
 #include "sph/ParticleVolumes.h"
 
@@ -124,8 +125,8 @@ void PairwiseForce::addForce() {
   volume_ = particleVolumes(fluid_, Dim);
   const std::vector<std::vector<Real>>& wallVolume = wallVolumes_.of(walls_, Dim);
   const auto& x = fluid_.positions();
-  const auto& rho = fluid_.scalarField("rho");
-  auto& acceleration = fluid_.vectorField("acceleration");
+  const auto& rho = fluid_.scalarField(field::rho);
+  auto& acceleration = fluid_.vectorField(field::acceleration);
   const NeighbourList& pairs = neighbourhood_.pairs(fluid_, fluid_);
   std::vector<const NeighbourList*> wallPairs;
   for (const ParticleCloud* wall : walls_) {

@@ -9,6 +9,7 @@
 #include <type_traits>
 
 #include "core/Error.h"
+#include "particles/FieldNames.h"
 #include "particles/WallSurfaceDistance.h"
 #include "particles/WendlandKernel.h"
 #include "sph/ExposedArea.h"
@@ -74,7 +75,7 @@ SurfaceEnergyTension::SurfaceEnergyTension(SurfaceTensionSettings settings, Part
     throw Error("surface tension: give the contact angle or Gamma_s, not both");
   }
   requireTemperatureFor(*settings_.gasTension, fluid_);
-  if (!fluid_.hasScalarField("surfaceEnergy")) fluid_.addScalarField("surfaceEnergy");
+  if (!fluid_.hasScalarField(field::surfaceEnergy)) fluid_.addScalarField(field::surfaceEnergy);
   neighbourhood_.requestPairs(fluid_, fluid_);
   for (const ParticleCloud* wall : walls_) neighbourhood_.requestPairs(fluid_, *wall);
 }
@@ -104,7 +105,7 @@ double SurfaceEnergyTension::currentLargestTension() const {
   const TemperatureTable& table = *settings_.gasTension;
   std::vector<Real> gamma(fluid_.size(), static_cast<Real>(table(0)));
   if (!table.isConstant()) {
-    const auto& temperature = fluid_.scalarField("T");
+    const auto& temperature = fluid_.scalarField(field::T);
     for (std::size_t i = 0; i < gamma.size(); ++i) {
       gamma[i] = static_cast<Real>(table(static_cast<double>(temperature[i])));
     }
@@ -113,7 +114,7 @@ double SurfaceEnergyTension::currentLargestTension() const {
 }
 
 double SurfaceEnergyTension::lightestDensity() const {
-  const auto& rho = fluid_.scalarField("rho");
+  const auto& rho = fluid_.scalarField(field::rho);
   return rho.empty() ? 0 : static_cast<double>(*std::min_element(rho.begin(), rho.end()));
 }
 
@@ -180,7 +181,7 @@ void SurfaceEnergyTension::computeEnergy() {
   explicitDensityDerivative_.resize(n);
   wallForce_.resize(n);
   const auto& x = fluid_.positions();
-  auto& energy = fluid_.scalarField("surfaceEnergy");
+  auto& energy = fluid_.scalarField(field::surfaceEnergy);
   const NeighbourList& pairs = neighbourhood_.pairs(fluid_, fluid_);
   const PeriodicBox periodic = neighbourhood_.periodicBox();
   const std::vector<WallSurfaceView> walls = wallSurfaceViews(fluid_, walls_, neighbourhood_);
@@ -240,7 +241,7 @@ void SurfaceEnergyTension::computeDensityDerivative() {
   const std::size_t n = fluid_.size();
   densityDerivative_.resize(n);
   const auto& x = fluid_.positions();
-  const auto& rho = fluid_.scalarField("rho");
+  const auto& rho = fluid_.scalarField(field::rho);
   const NeighbourList& pairs = neighbourhood_.pairs(fluid_, fluid_);
   const PeriodicBox periodic = neighbourhood_.periodicBox();
   const Real* phi = energyDerivative_.data();
@@ -279,8 +280,8 @@ void SurfaceEnergyTension::addForces() {
                                       settings_.coreRadius * settings_.spacing);
   const std::size_t n = fluid_.size();
   const auto& x = fluid_.positions();
-  const auto& mass = fluid_.scalarField("mass");
-  auto& acceleration = fluid_.vectorField("acceleration");
+  const auto& mass = fluid_.scalarField(field::mass);
+  auto& acceleration = fluid_.vectorField(field::acceleration);
   const NeighbourList& pairs = neighbourhood_.pairs(fluid_, fluid_);
   const PeriodicBox periodic = neighbourhood_.periodicBox();
   const bool surfaceOnly = settings_.surfaceParticlesOnly;
@@ -337,7 +338,7 @@ double SurfaceEnergyTension::energy() {
     computeEnergy<3>();
   }
   double sum = 0;  // the owned particles' (a decomposed run's rank's share)
-  const auto& energy = fluid_.scalarField("surfaceEnergy");
+  const auto& energy = fluid_.scalarField(field::surfaceEnergy);
   for (std::size_t i = 0; i < fluid_.ownedSize(); ++i) sum += static_cast<double>(energy[i]);
   return sum;
 }

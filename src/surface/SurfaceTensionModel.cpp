@@ -9,6 +9,7 @@
 #include <numbers>
 
 #include "core/Error.h"
+#include "particles/FieldNames.h"
 #include "sph/ParticleVolumes.h"
 #include "surface/ContinuumSurfaceForce.h"
 #include "surface/SurfaceEnergyTension.h"
@@ -16,7 +17,7 @@
 namespace sphcast {
 
 void requireTemperatureFor(const TemperatureTable& sigma, const ParticleCloud& fluid) {
-  if (sigma.isConstant() || fluid.hasScalarField("T")) return;
+  if (sigma.isConstant() || fluid.hasScalarField(field::T)) return;
   throw DictionaryError(sigma.location(), sigma.description() + " is a table in T, but cloud '" +
                                               fluid.name() +
                                               "' has no T (set it with setCastFields)");
@@ -30,7 +31,7 @@ void tensionAtParticles(const TemperatureTable& sigma, const ParticleCloud& flui
     std::fill(tension.begin(), tension.end(), static_cast<Real>(sigma(0)));
     return;
   }
-  const auto& temperature = fluid.scalarField("T");
+  const auto& temperature = fluid.scalarField(field::T);
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < n; ++i) {
     tension[i] = static_cast<Real>(sigma(static_cast<double>(temperature[i])));
@@ -45,9 +46,9 @@ double capillaryStepLimit(const TemperatureTable& sigma, const std::vector<Real>
   } else if (lastTension.size() == fluid.size() && !lastTension.empty()) {
     largest = static_cast<double>(*std::max_element(lastTension.begin(), lastTension.end()));
   } else {
-    for (const Real t : fluid.scalarField("T")) largest = std::max(largest, sigma(t));
+    for (const Real t : fluid.scalarField(field::T)) largest = std::max(largest, sigma(t));
   }
-  const auto& rho = fluid.scalarField("rho");
+  const auto& rho = fluid.scalarField(field::rho);
   if (!(largest > 0) || rho.empty()) return std::numeric_limits<double>::max();
   const double lightest = *std::min_element(rho.begin(), rho.end());
   return 0.25 *

@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "core/Error.h"
+#include "particles/FieldNames.h"
 #include "thermal/HeatTransferRegistration.h"
 
 namespace sphcast {
@@ -58,65 +59,65 @@ void EnergyEquation::prepareFields(HeatCloud& heat) {
     if (heat.fixedTemperature) {
       for (Real& value : held) value = static_cast<Real>(heat.heldTemperature);
     } else {
-      const auto& patch = cloud.idField("patch");  // throws, listing the cloud's fields
+      const auto& patch = cloud.idField(field::patch);  // throws, listing the cloud's fields
       for (std::size_t i = 0; i < held.size(); ++i) {
         for (const auto& [id, T] : heat.heldPatches) {
           if (patch[i] == id) held[i] = static_cast<Real>(T);
         }
       }
     }
-    cloud.addScalarField("heldTemperature") = held;
-    if (heat.fixedTemperature) cloud.addScalarField("T");
+    cloud.addScalarField(field::heldTemperature) = held;
+    if (heat.fixedTemperature) cloud.addScalarField(field::T);
   }
-  if (!cloud.hasScalarField("T")) {
+  if (!cloud.hasScalarField(field::T)) {
     throw Error("heat cloud '" + cloud.name() +
                 "' has no temperature field T: set it with setCastFields (fields { T ...; }, or "
                 "setFields for a mold cloud), or hold the cloud with heatTransfer "
                 "fixedTemperature");
   }
   if (heat.holdsAny()) {
-    auto& T = cloud.scalarField("T");
-    const auto& held = cloud.scalarField("heldTemperature");
+    auto& T = cloud.scalarField(field::T);
+    const auto& held = cloud.scalarField(field::heldTemperature);
     for (std::size_t i = 0; i < T.size(); ++i) {
       if (held[i] > 0) T[i] = held[i];
     }
   }
-  const auto& T = cloud.scalarField("T");
+  const auto& T = cloud.scalarField(field::T);
   for (std::size_t i = 0; i < T.size(); ++i) {
     if (!(T[i] > 0) || !std::isfinite(T[i])) {
       throw Error("particle " + std::to_string(i) + " of heat cloud '" + cloud.name() +
                   "' has T = " + std::to_string(T[i]) + " K; temperatures are in kelvin, > 0");
     }
   }
-  if (!cloud.hasScalarField("rho")) {
+  if (!cloud.hasScalarField(field::rho)) {
     const TemperatureTable& density = material.requireDensity("heatTransfer");
-    const std::vector<Real> temperature = cloud.scalarField("T");  // adding fields may move it
-    auto& rho = cloud.addScalarField("rho");
+    const std::vector<Real> temperature = cloud.scalarField(field::T);  // adding fields may move it
+    auto& rho = cloud.addScalarField(field::rho);
     for (std::size_t i = 0; i < rho.size(); ++i) {
       rho[i] = static_cast<Real>(density(static_cast<double>(temperature[i])));
     }
   }
-  if (!cloud.hasScalarField("mass")) {
-    const std::vector<Real> volume = cloud.scalarField("volume");  // throws, listing fields
-    const std::vector<Real> rho = cloud.scalarField("rho");
-    auto& mass = cloud.addScalarField("mass");
+  if (!cloud.hasScalarField(field::mass)) {
+    const std::vector<Real> volume = cloud.scalarField(field::volume);  // throws, listing fields
+    const std::vector<Real> rho = cloud.scalarField(field::rho);
+    auto& mass = cloud.addScalarField(field::mass);
     for (std::size_t i = 0; i < mass.size(); ++i) mass[i] = rho[i] * volume[i];
   }
   if (!restarted_) {
-    const std::vector<Real> temperature = cloud.scalarField("T");
-    auto& u = cloud.addScalarField("u");
+    const std::vector<Real> temperature = cloud.scalarField(field::T);
+    auto& u = cloud.addScalarField(field::u);
     for (std::size_t i = 0; i < u.size(); ++i) u[i] = energy.energy(temperature[i]);
-    cloud.addScalarField("energyRate");
+    cloud.addScalarField(field::energyRate);
     for (const char* path : lossPaths) {
       cloud.attributes()[lostKey(path)] = 0;
       cloud.attributes()[rateKey(path)] = 0;
     }
-    const auto& mass = cloud.scalarField("mass");
+    const auto& mass = cloud.scalarField(field::mass);
     double total = 0;  // of every rank's own particles in a decomposed run
     for (std::size_t i = 0; i < cloud.ownedSize(); ++i) total += double(mass[i]) * double(u[i]);
     cloud.attributes()["internalEnergyAtStart"] = context_.comm.sum(total);
   }
-  cloud.addScalarField("conductivity");
+  cloud.addScalarField(field::conductivity);
 }
 
 std::vector<std::string> EnergyEquation::start() {
@@ -139,8 +140,8 @@ void EnergyEquation::kickEnergy(double deltaT) {
   const Real halfDt = static_cast<Real>(0.5 * deltaT);
   for (HeatCloud& heat : context_.clouds) {
     if (heat.fixedTemperature) continue;
-    auto& u = heat.cloud->scalarField("u");
-    const auto& rate = heat.cloud->scalarField("energyRate");
+    auto& u = heat.cloud->scalarField(field::u);
+    const auto& rate = heat.cloud->scalarField(field::energyRate);
     const Real* held = heldTemperatures(heat);
 #pragma omp parallel for schedule(static)
     for (std::size_t i = 0; i < u.size(); ++i) {
@@ -162,7 +163,7 @@ void EnergyEquation::accountLosses(double duration) {
 
 void EnergyEquation::computeRates() {
   for (HeatCloud& heat : context_.clouds) {
-    auto& rate = heat.cloud->scalarField("energyRate");
+    auto& rate = heat.cloud->scalarField(field::energyRate);
 #pragma omp parallel for schedule(static)
     for (std::size_t i = 0; i < rate.size(); ++i) rate[i] = 0;
   }
@@ -184,8 +185,8 @@ void EnergyEquation::computeRates() {
   for (HeatCloud& heat : context_.clouds) {
     if (!heat.holdsAny()) continue;
     const Real* held = heldTemperatures(heat);
-    const auto& mass = heat.cloud->scalarField("mass");
-    const auto& rate = heat.cloud->scalarField("energyRate");
+    const auto& mass = heat.cloud->scalarField(field::mass);
+    const auto& rate = heat.cloud->scalarField(field::energyRate);
     double absorbed = 0;
     for (std::size_t i = 0; i < heat.cloud->ownedSize(); ++i) {
       if (held[i] > 0) absorbed += double(mass[i]) * double(rate[i]);
@@ -198,9 +199,9 @@ void EnergyEquation::updateTemperatures() {
   for (HeatCloud& heat : context_.clouds) {
     ParticleCloud& cloud = *heat.cloud;
     const Material& material = *heat.material;
-    auto& T = cloud.scalarField("T");
-    auto& kappa = cloud.scalarField("conductivity");
-    const auto& u = cloud.scalarField("u");
+    auto& T = cloud.scalarField(field::T);
+    auto& kappa = cloud.scalarField(field::conductivity);
+    const auto& u = cloud.scalarField(field::u);
     const InternalEnergyTable& energy = *material.internalEnergy;
     const TemperatureTable* conductivity =
         material.conductivity ? &*material.conductivity : nullptr;

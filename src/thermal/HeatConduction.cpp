@@ -5,6 +5,7 @@
 #include <limits>
 #include <sstream>
 
+#include "particles/FieldNames.h"
 #include "particles/WendlandKernel.h"
 
 namespace sphcast {
@@ -71,15 +72,15 @@ std::string HeatConduction::start() {
   for (std::size_t a = 0; a < context_.clouds.size(); ++a) {
     const HeatCloud& heat = context_.clouds[a];
     const ParticleCloud& cloud = *heat.cloud;
-    if (!heat.holdsAny() || cloud.hasVectorField("normal") || cloud.hasScalarField("wallDistance"))
+    if (!heat.holdsAny() || cloud.hasVectorField(field::normal) ||
+        cloud.hasScalarField(field::wallDistance))
       continue;
-    std::size_t placed =
-        context_.dimension == 2 ? placeHeldSurface<2>(a) : placeHeldSurface<3>(a);
+    std::size_t placed = context_.dimension == 2 ? placeHeldSurface<2>(a) : placeHeldSurface<3>(a);
     if (context_.comm.size() > 1) {
       // a decomposed run's halo placed its own from an incomplete neighbourhood: its owners',
       // and the count of every rank's own particles given a surface
       context_.neighbourhood->syncHalo(*heat.cloud, {"normal", "wallDistance"});
-      const auto& normal = cloud.vectorField("normal");
+      const auto& normal = cloud.vectorField(field::normal);
       std::int64_t owned = 0;
       for (std::size_t k = 0; k < cloud.ownedSize(); ++k) owned += normal[k].isZero() ? 0 : 1;
       placed = static_cast<std::size_t>(context_.comm.sum(owned));
@@ -118,8 +119,8 @@ std::size_t HeatConduction::placeHeldSurface(std::size_t a) {
     frees.push_back({&context_.neighbourhood->pairs(cloud, *other.cloud),
                      other.cloud->positions().data(), heldTemperatures(other)});
   }
-  auto& normal = cloud.addVectorField("normal");
-  auto& depth = cloud.addScalarField("wallDistance");
+  auto& normal = cloud.addVectorField(field::normal);
+  auto& depth = cloud.addScalarField(field::wallDistance);
   const Vector* x = cloud.positions().data();
   std::size_t placed = 0;
   withSeparation(periodic, [&](auto separation) {
@@ -217,33 +218,33 @@ void HeatConduction::addRatesIn() {
   for (std::size_t c = 0; c < context_.clouds.size(); ++c) {
     const HeatCloud& heat = context_.clouds[c];
     const ParticleCloud& cloud = *heat.cloud;
-    const auto& mass = cloud.scalarField("mass");
-    const auto& rho = cloud.scalarField("rho");
+    const auto& mass = cloud.scalarField(field::mass);
+    const auto& rho = cloud.scalarField(field::rho);
     std::vector<Real>& volume = volumes_[c];
     volume.resize(cloud.size());
 #pragma omp parallel for schedule(static)
     for (std::size_t i = 0; i < volume.size(); ++i) volume[i] = mass[i] / rho[i];
     const TemperatureTable& kappa = heat.material->requireConductivity("heatTransfer conduction");
-    const auto& T = cloud.scalarField("T");
+    const auto& T = cloud.scalarField(field::T);
     std::vector<Real>& phi = kirchhoff_[c];
     phi.resize(cloud.size());
 #pragma omp parallel for schedule(static)
     for (std::size_t i = 0; i < phi.size(); ++i) {
       phi[i] = static_cast<Real>(kappa.integral(static_cast<double>(T[i])));
     }
-    const bool surface = cloud.hasVectorField("normal") && cloud.hasScalarField("wallDistance");
-    sources.push_back({cloud.positions().data(), cloud.scalarField("T").data(),
-                       cloud.scalarField("conductivity").data(), volume.data(),
-                       surface ? cloud.vectorField("normal").data() : nullptr,
-                       surface ? cloud.scalarField("wallDistance").data() : nullptr,
-                       surface && heat.holdsAny() ? heldTemperatures(heat) : nullptr,
-                       phi.data()});
+    const bool surface =
+        cloud.hasVectorField(field::normal) && cloud.hasScalarField(field::wallDistance);
+    sources.push_back({cloud.positions().data(), cloud.scalarField(field::T).data(),
+                       cloud.scalarField(field::conductivity).data(), volume.data(),
+                       surface ? cloud.vectorField(field::normal).data() : nullptr,
+                       surface ? cloud.scalarField(field::wallDistance).data() : nullptr,
+                       surface && heat.holdsAny() ? heldTemperatures(heat) : nullptr, phi.data()});
   }
   auto passWith = [&](auto separation) {
     for (std::size_t a = 0; a < context_.clouds.size(); ++a) {
       ParticleCloud& target = *context_.clouds[a].cloud;
-      Real* energyRate = target.scalarField("energyRate").data();
-      const Real* rho = target.scalarField("rho").data();
+      Real* energyRate = target.scalarField(field::energyRate).data();
+      const Real* rho = target.scalarField(field::rho).data();
       struct List {
         const NeighbourList* pairs;
         const Source* source;

@@ -9,6 +9,7 @@
 #include "core/dictionary/Dictionary.h"
 #include "materials/Material.h"
 #include "parallel/Communicator.h"
+#include "particles/FieldNames.h"
 #include "particles/Neighbourhood.h"
 #include "particles/ParticleCloud.h"
 
@@ -33,7 +34,7 @@ struct HeatCloud {
 // 0 for a free particle, else the temperature it is held at: the `heldTemperature` field of a
 // cloud that holds any, else null (no particle held).
 inline const Real* heldTemperatures(const HeatCloud& heat) {
-  return heat.holdsAny() ? heat.cloud->scalarField("heldTemperature").data() : nullptr;
+  return heat.holdsAny() ? heat.cloud->scalarField(field::heldTemperature).data() : nullptr;
 }
 
 // What every heat path sees: the heat clouds, the shared neighbourhood, the kernel.

@@ -7,6 +7,7 @@
 #include <tuple>
 
 #include "core/Error.h"
+#include "particles/FieldNames.h"
 #include "particles/WendlandKernel.h"
 
 namespace sphcast {
@@ -128,18 +129,18 @@ void MoldContactTransfer::addRatesIn() {
   for (std::size_t a = 0; a < context_.clouds.size(); ++a) {
     ParticleCloud& target = *context_.clouds[a].cloud;
     const auto& x = target.positions();
-    const Real* T = target.scalarField("T").data();
-    const Real* rho = target.scalarField("rho").data();
-    Real* energyRate = target.scalarField("energyRate").data();
+    const Real* T = target.scalarField(field::T).data();
+    const Real* rho = target.scalarField(field::rho).data();
+    Real* energyRate = target.scalarField(field::energyRate).data();
     for (std::size_t b = 0; b < context_.clouds.size(); ++b) {
       const double omega = coefficient(a, b);
       if (omega == 0) continue;
       const ParticleCloud& other = *context_.clouds[b].cloud;
       const NeighbourList& list = context_.neighbourhood->pairs(target, other);
       const Vector* otherX = other.positions().data();
-      const Real* otherT = other.scalarField("T").data();
-      const Real* otherMass = other.scalarField("mass").data();
-      const Real* otherRho = other.scalarField("rho").data();
+      const Real* otherT = other.scalarField(field::T).data();
+      const Real* otherMass = other.scalarField(field::mass).data();
+      const Real* otherRho = other.scalarField(field::rho).data();
       const Real scale = static_cast<Real>(omega) / contactLength_;
 #pragma omp parallel for schedule(static)
       for (std::size_t i = 0; i < x.size(); ++i) {

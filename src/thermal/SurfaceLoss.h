@@ -5,6 +5,7 @@
 #include <limits>
 #include <vector>
 
+#include "particles/FieldNames.h"
 #include "thermal/HeatTransferModel.h"
 
 namespace sphcast {
@@ -24,10 +25,10 @@ std::vector<double> addSurfaceLoss(const HeatTransferContext& context,
     const HeatCloud& heat = context.clouds[c];
     if (coefficient[c] == 0 || heat.fixedTemperature) continue;
     ParticleCloud& cloud = *heat.cloud;
-    const auto& area = cloud.scalarField("exposedArea");
-    const auto& T = cloud.scalarField("T");
-    const auto& mass = cloud.scalarField("mass");
-    auto& energyRate = cloud.scalarField("energyRate");
+    const auto& area = cloud.scalarField(field::exposedArea);
+    const auto& T = cloud.scalarField(field::T);
+    const auto& mass = cloud.scalarField(field::mass);
+    auto& energyRate = cloud.scalarField(field::energyRate);
     const Real* held = heldTemperatures(heat);
     for (std::size_t i = 0; i < cloud.ownedSize(); ++i) {
       if (area[i] == 0 || (held && held[i] > 0)) continue;
@@ -51,9 +52,9 @@ double surfaceLossStableDeltaT(const HeatTransferContext& context,
     const HeatCloud& heat = context.clouds[c];
     if (coefficient[c] == 0 || heat.fixedTemperature) continue;
     const ParticleCloud& cloud = *heat.cloud;
-    const auto& area = cloud.scalarField("exposedArea");
-    const auto& T = cloud.scalarField("T");
-    const auto& mass = cloud.scalarField("mass");
+    const auto& area = cloud.scalarField(field::exposedArea);
+    const auto& T = cloud.scalarField(field::T);
+    const auto& mass = cloud.scalarField(field::mass);
     const double heatCapacity = heat.material->internalEnergy->smallestSpecificHeat();
     const Real* held = heldTemperatures(heat);
     for (std::size_t i = 0; i < cloud.ownedSize(); ++i) {

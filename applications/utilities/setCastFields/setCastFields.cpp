@@ -11,6 +11,7 @@
 #include "io/CaseWriter.h"
 #include "io/TimeFolders.h"
 #include "io/VtpCloud.h"
+#include "particles/FieldNames.h"
 #include "sph/FlowSetup.h"
 
 namespace {
@@ -39,7 +40,7 @@ void addStartPressure(const sphcast::CaseDescription& description,
   if (!flow.enabled) return;
   for (sphcast::ParticleCloud& cloud : clouds) {
     if (cloud.name() != flow.fluidCloud) continue;
-    cloud.addScalarField("p") = sphcast::startPressure(flow, cloud);
+    cloud.addScalarField(sphcast::field::p) = sphcast::startPressure(flow, cloud);
     sphcast::info() << "Cloud " << cloud.name() << ": p as the flow starts it, c^2 (rho - rho_s)\n";
   }
 }

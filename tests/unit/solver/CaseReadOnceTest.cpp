@@ -5,6 +5,9 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
+#include <regex>
+#include <set>
 #include <string>
 
 #include "case/CaseDescription.h"
@@ -96,6 +99,47 @@ TEST(CaseReadOnce, TheSolverReadsEachSharedCaseFileOnceWithEveryModelFamilyOn) {
   CastingSolver(caseFolder).run();
   silenceInfo(false);
   for (int k = 0; k < 4; ++k) EXPECT_EQ(counts.since(k), 1) << sharedFiles[k];
+}
+
+// The names of particles/FieldNames.h, read from its text: the one list of field names.
+std::set<std::string> listedFieldNames() {
+  std::ifstream file(std::filesystem::path(SPHCAST_SOURCE_DIR) / "src/particles/FieldNames.h");
+  std::set<std::string> names;
+  const std::regex entry("inline constexpr const char\\* (\\w+) = \"(\\w+)\";");
+  for (std::string line; std::getline(file, line);) {
+    std::smatch match;
+    if (std::regex_search(line, match, entry)) {
+      EXPECT_EQ(match[1], match[2]) << line;  // a constant is named as its field
+      names.insert(match[2]);
+    }
+  }
+  return names;
+}
+
+// Every field the solver writes, with every model family on, is one of the listed names.
+TEST(CaseReadOnce, EveryFieldTheSolverWritesIsInTheOneListOfFieldNames) {
+  const testing::TemporaryCase folder;
+  writeCastingCase(folder);
+  silenceInfo(true);
+  const CaseFolder caseFolder(folder.root());
+  CastingSolver solver(caseFolder);
+  solver.run();
+  silenceInfo(false);
+  const std::set<std::string> listed = listedFieldNames();
+  ASSERT_GT(listed.size(), 40u);
+  std::size_t checked = 0;
+  for (const ParticleCloud& cloud : solver.clouds()) {
+    std::vector<std::string> names;
+    for (const auto& entry : cloud.scalarFields()) names.push_back(entry.first);
+    for (const auto& entry : cloud.vectorFields()) names.push_back(entry.first);
+    for (const auto& entry : cloud.idFields()) names.push_back(entry.first);
+    for (const std::string& name : names) {
+      EXPECT_TRUE(listed.contains(name))
+          << cloud.name() << "." << name << " is not in FieldNames.h";
+      ++checked;
+    }
+  }
+  EXPECT_GT(checked, 30u);
 }
 
 TEST(CaseReadOnce, SetCastFieldsAndCastPostProcessReadEachSharedCaseFileOnce) {
