@@ -228,7 +228,7 @@ void CastingSolver::updateCoolingMode() {
   if (cooling_ && (fastest > cooling.movingSpeed || !bodyMoves.empty())) cooling_ = false;
   if (cooling_ == wasCooling) return;
   fluid_->attributes()["coolingMode"] = cooling_ ? 1 : 0;
-  meanStableDeltaT_ = 0;  // the steps change length by design
+  stepCollapse_.restart();  // the steps change length by design
   if (cooling_) {
     flushPendingHeat();
     info() << "Cooling from time " << time_.timeName() << ": the melt is still (max|U| " << fastest
@@ -262,7 +262,11 @@ void CastingSolver::run() {
     updateCoolingMode();
     std::string limiter;
     const double stable = stableDeltaT(limiter);
-    if (const std::string collapse = checkStepCollapse(stable, limiter); !collapse.empty()) {
+    const std::string collapse =
+        time_.settings().adjustTimeStep
+            ? stepCollapse_.check(stable, limiter, health_.minDeltaTFraction)
+            : std::string();
+    if (!collapse.empty()) {
       stopWithLastGoodState(time_.state(), false, collapse);  // this state passed every check
     }
     time_.adjustDeltaT(stable, limiter);

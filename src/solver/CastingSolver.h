@@ -110,9 +110,6 @@ class CastingSolver {
   // the log about what is bad but not yet fatal.
   std::string checkHealth();
   std::string checkTemperatures() const;
-  // Why the run must stop before the next step, from the models' stable step: "" when it is not
-  // far below its running mean.
-  std::string checkStepCollapse(double stableDeltaT, const std::string& limiter);
   // Writes `good` (the last state that passed every check: the clouds as saved before the step)
   // and stops the run with `what` went wrong.
   [[noreturn]] void stopWithLastGoodState(const TimeState& good, bool restoreSaved,
@@ -166,7 +163,7 @@ class CastingSolver {
   double flowStepsWithoutCooling_ = 0;
   HealthSettings health_;
   HealthWarnings warnings_;
-  double meanStableDeltaT_ = 0;  // running mean of the models' stable step
+  StepCollapseWatch stepCollapse_;  // the models' stable step against its running mean
   double checkSeconds_ = 0, outputSeconds_ = 0, functionSeconds_ = 0;
   CaseWriter writer_;
   FunctionObjectList functions_;  // of controlDict's `functions`, run after every step

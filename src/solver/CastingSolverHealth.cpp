@@ -99,27 +99,6 @@ std::string CastingSolver::checkTemperatures() const {
   return "";
 }
 
-std::string CastingSolver::checkStepCollapse(double stableDeltaT, const std::string& limiter) {
-  if (!time_.settings().adjustTimeStep) return "";
-  if (!(stableDeltaT > 0) || !std::isfinite(stableDeltaT)) {
-    std::ostringstream problem;
-    problem << "the stable time step (" << limiter << ") is " << stableDeltaT;
-    return problem.str();
-  }
-  if (meanStableDeltaT_ > 0 && stableDeltaT < health_.minDeltaTFraction * meanStableDeltaT_) {
-    std::ostringstream problem;
-    problem.precision(4);
-    problem << "the stable time step collapsed to " << stableDeltaT << " s (" << limiter
-            << "), below " << health_.minDeltaTFraction << " of its running mean "
-            << meanStableDeltaT_ << " s (healthChecks minDeltaTFraction)";
-    return problem.str();
-  }
-  // a mean over about the last 100 steps
-  meanStableDeltaT_ =
-      meanStableDeltaT_ > 0 ? 0.99 * meanStableDeltaT_ + 0.01 * stableDeltaT : stableDeltaT;
-  return "";
-}
-
 // Every rank of a parallel run stops here alike (the failure is shared before), so the errors
 // are CollectiveErrors: rank 0 prints them.
 void CastingSolver::stopWithLastGoodState(const TimeState& good, bool restoreSaved,

@@ -190,4 +190,24 @@ FluidSummary summarizeFluid(const ParticleCloud& fluid, const Communicator& comm
   return s;
 }
 
+std::string StepCollapseWatch::check(double stableDeltaT, const std::string& limiter,
+                                     double minDeltaTFraction) {
+  if (!(stableDeltaT > 0) || !std::isfinite(stableDeltaT)) {
+    std::ostringstream problem;
+    problem << "the stable time step (" << limiter << ") is " << stableDeltaT;
+    return problem.str();
+  }
+  if (meanStableDeltaT_ > 0 && stableDeltaT < minDeltaTFraction * meanStableDeltaT_) {
+    std::ostringstream problem;
+    problem.precision(4);
+    problem << "the stable time step collapsed to " << stableDeltaT << " s (" << limiter
+            << "), below " << minDeltaTFraction << " of its running mean " << meanStableDeltaT_
+            << " s (healthChecks minDeltaTFraction)";
+    return problem.str();
+  }
+  meanStableDeltaT_ =
+      meanStableDeltaT_ > 0 ? 0.99 * meanStableDeltaT_ + 0.01 * stableDeltaT : stableDeltaT;
+  return "";
+}
+
 }  // namespace sphcast

@@ -75,6 +75,19 @@ class HealthWarnings {
   std::map<std::string, Kind> kinds_;
 };
 
+// Watches the models' stable step for a collapse (a run blowing up): a step that is not positive
+// and finite, or below minDeltaTFraction of its running mean over about the last 100 steps.
+class StepCollapseWatch {
+ public:
+  // Why the run must stop before the next step, or "" (the mean then takes this step in).
+  std::string check(double stableDeltaT, const std::string& limiter, double minDeltaTFraction);
+  // Forget the mean: the steps change length by design (the cooling mode starts or stops).
+  void restart() { meanStableDeltaT_ = 0; }
+
+ private:
+  double meanStableDeltaT_ = 0;
+};
+
 // What the log prints of a fluid cloud at a printed step: sums in particle order (the same on
 // any number of threads).
 struct FluidSummary {

@@ -55,11 +55,10 @@ HeatSetup readHeatSetup(const CaseDescription& description) {
   }
   setup.heatEveryFlowStep =
       heat.getChoiceOrDefault("interval", {"auto", "everyStep"}, "auto") == "everyStep";
-  setup.dimension = description.dimension();
-  // fail now, not later
+  // fail now, not later: the clouds' materials, h and the periodic axes
   for (const std::string& cloud : setup.clouds) description.heatCloudMaterial(cloud);
-  setup.supportRadius = description.supportRadius();
-  setup.periodic = description.periodic();
+  description.supportRadius();
+  description.periodic();
   return setup;
 }
 

@@ -6,9 +6,7 @@
 #include <vector>
 
 #include "case/CaseDescription.h"
-#include "core/Real.h"
 #include "core/dictionary/Dictionary.h"
-#include "particles/CellGrid.h"
 
 namespace sphcast {
 
@@ -38,9 +36,6 @@ struct HeatSetup {
   // their own once the flow's steps add up to half of the heat's stable step, and at every
   // write (CastingSolver::evolve).
   bool heatEveryFlowStep = false;
-  int dimension = 3;
-  Real supportRadius = 0;
-  PeriodicBox periodic;  // physicsModels' periodic axes
 };
 
 // Reads and checks heatTransfer (and that every heat cloud's material is in

@@ -13,7 +13,6 @@
 #include "core/Error.h"
 #include "core/Log.h"
 #include "io/TimeFolders.h"
-#include "thermal/HeatSetup.h"
 
 namespace {
 

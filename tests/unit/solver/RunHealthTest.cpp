@@ -96,5 +96,23 @@ TEST(RunHealth, ThresholdsAreReadFromControlDictAndChecked) {
                Error);
 }
 
+// A step that falls below a thousandth of its running mean is a collapse; one that only halves
+// is not; a step that is not finite or not positive stops at once; restart() forgets the mean.
+TEST(StepCollapseWatch, StopsWhenTheStableStepFallsFarBelowItsRunningMean) {
+  StepCollapseWatch watch;
+  for (int k = 0; k < 200; ++k) EXPECT_EQ(watch.check(1e-4, "acoustic CFL", 1e-3), "");
+  EXPECT_EQ(watch.check(0.5e-4, "acoustic CFL", 1e-3), "");
+  const std::string collapse = watch.check(5e-8, "viscous", 1e-3);
+  EXPECT_NE(collapse.find("collapsed to 5e-08 s (viscous), below 0.001 of its running mean"),
+            std::string::npos)
+      << collapse;
+  EXPECT_NE(watch.check(std::nan(""), "density rate", 1e-3).find("(density rate) is nan"),
+            std::string::npos);
+  EXPECT_NE(watch.check(0, "acoustic CFL", 1e-3), "");
+  watch.restart();  // the cooling mode's steps are longer by design
+  EXPECT_EQ(watch.check(5e-8, "heat", 1e-3), "");
+  EXPECT_EQ(watch.check(1e-2, "heat", 1e-3), "");
+}
+
 }  // namespace
 }  // namespace sphcast
