@@ -11,6 +11,7 @@ namespace sphcast {
 
 namespace {
 const Dimensions length{{0, 1, 0, 0, 0, 0, 0}};
+const Dimensions speed{{0, 1, -1, 0, 0, 0, 0}};
 }  // namespace
 
 // periodic { x (0 0.2); z (-0.01 0.01); }: each axis named with its interval [lower, upper).
@@ -101,6 +102,17 @@ Real CaseDescription::supportRadius() const {
     throw DictionaryError(schemes().location("supportRadius"), message.str());
   }
   return h;
+}
+
+Real CaseDescription::soundSpeed() const {
+  const Real c = schemes().get<Real>("soundSpeed", speed);
+  if (!(c > 0)) {
+    std::ostringstream message;
+    message << "'soundSpeed' is " << c << " in " << schemes().name()
+            << "; it must be positive (valid range: > 0)";
+    throw DictionaryError(schemes().location("soundSpeed"), message.str());
+  }
+  return c;
 }
 
 SourceLocation CaseDescription::supportRadiusAt() const {

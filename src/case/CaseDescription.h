@@ -27,6 +27,7 @@ namespace sphcast {
 //                            flow { model ...; fluid metal; walls (mold); }  // the roles:
 //                            heatTransfer { clouds (metal mold); ... }       // who is what
 //   system/sphSchemes:       supportRadius 0.0045;       // h, m
+//                            soundSpeed    50;           // c, m/s (the flow's and the fill's)
 //
 // The model families read their own sub-dictionaries from here (sph/FlowSetup.h,
 // thermal/HeatSetup.h, surface/SurfaceTensionSetup.h, solidification/SolidificationSetup.h,
@@ -59,6 +60,8 @@ class CaseDescription {
   // h, supportRadius of system/sphSchemes (positive, a length), and where it is written.
   Real supportRadius() const;
   SourceLocation supportRadiusAt() const;
+  // c of eq. (3), soundSpeed of system/sphSchemes (positive, a speed).
+  Real soundSpeed() const;
   // physicsModels' periodic axes (none without the entry); needs h when there are any.
   PeriodicBox periodic() const;
 

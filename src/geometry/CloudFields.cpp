@@ -16,7 +16,6 @@ namespace {
 
 constexpr double defaultSupportRadius = 3.0;  // x spacing, without system/sphSchemes
 const Dimensions length{{0, 1, 0, 0, 0, 0, 0}};
-const Dimensions speed{{0, 1, -1, 0, 0, 0, 0}};
 const Dimensions temperatureDimensions{{0, 0, 0, 1, 0, 0, 0}};
 const Dimensions densityDimensions{{1, -3, 0, 0, 0, 0, 0}};
 
@@ -79,14 +78,7 @@ double CastCaseSettings::flowWallClearance() const {
              : wallClearanceInSpacings;
 }
 
-double CastCaseSettings::soundSpeed() const {
-  const double c = schemes().get<double>("soundSpeed", speed);
-  if (!(c > 0.0)) {
-    throw DictionaryError(schemes().location("soundSpeed"),
-                          "'soundSpeed' must be positive in " + schemes().name());
-  }
-  return c;
-}
+double CastCaseSettings::soundSpeed() const { return description_.soundSpeed(); }
 
 double CastCaseSettings::supportRadius(double spacing) const {
   if (description_.hasSchemes() && schemes().found("supportRadius")) {

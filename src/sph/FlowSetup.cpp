@@ -15,24 +15,10 @@ namespace sphcast {
 
 namespace {
 
-const Dimensions speed{{0, 1, -1, 0, 0, 0, 0}};
-
 // The range of h/dx (supportRadius over the particle spacing) a run can trust: below it the
 // kernel reaches hardly a neighbour, above it a step costs (h/dx)^3 pairs for nothing.
 constexpr double lowestSupportRatio = 1.2;
 constexpr double highestSupportRatio = 6.0;
-
-template <class Value>
-Value positive(const Dictionary& dict, const std::string& key, const Dimensions& dimensions) {
-  const Value value = dict.get<Value>(key, dimensions);
-  if (!(value > 0)) {
-    std::ostringstream message;
-    message << "'" << key << "' is " << value << " in " << dict.name()
-            << "; it must be positive (valid range: > 0)";
-    throw DictionaryError(dict.location(key), message.str());
-  }
-  return value;
-}
 
 }  // namespace
 
@@ -69,7 +55,7 @@ FlowSetup readFlowSetup(const CaseDescription& description) {
                                  "relativeVelocity") == "normalApproach";
   settings.supportRadius = description.supportRadius();
   setup.supportRadiusAt = description.supportRadiusAt();
-  settings.soundSpeed = positive<Real>(schemes, "soundSpeed", speed);
+  settings.soundSpeed = description.soundSpeed();
   if (schemes.found("deltaSPHCoeffs")) {
     const Dictionary& coeffs = schemes.subDict("deltaSPHCoeffs");
     coeffs.checkKeys({"delta", "alpha"});

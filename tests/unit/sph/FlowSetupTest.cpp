@@ -156,6 +156,21 @@ TEST(FlowSetup, BadKeysAreErrorsAtTheirLine) {
               "sphSchemes:3", "'delta' must not be negative");
 }
 
+// c is the case's (case/CaseDescription.h), read and checked in one place for the flow and the
+// fill's hydrostatic start alike.
+TEST(FlowSetup, ANonPositiveSoundSpeedIsAnErrorAtItsLine) {
+  testing::TemporaryCase folder;
+  folder.write("system/sphSchemes", std::string(header) + "supportRadius 0.03;\nsoundSpeed -5;\n");
+  try {
+    CaseDescription(CaseFolder(folder.root())).soundSpeed();
+    FAIL() << "a negative soundSpeed accepted";
+  } catch (const DictionaryError& error) {
+    const std::string message = error.what();
+    EXPECT_NE(message.find("sphSchemes:3:"), std::string::npos) << message;
+    EXPECT_NE(message.find("'soundSpeed' is -5"), std::string::npos) << message;
+  }
+}
+
 // A switch reads alike in every file: on/off, yes/no, true/false.
 TEST(FlowSetup, ASwitchTakesOnYesOrTrue) {
   for (const char* on : {"on", "yes", "true"}) {
