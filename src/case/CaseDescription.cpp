@@ -12,6 +12,18 @@ namespace sphcast {
 namespace {
 const Dimensions length{{0, 1, 0, 0, 0, 0, 0}};
 const Dimensions speed{{0, 1, -1, 0, 0, 0, 0}};
+
+// The entry `key` of `dict`, of these dimensions, positive; else an error at it with its value.
+Real positive(const Dictionary& dict, const std::string& key, const Dimensions& dimensions) {
+  const Real value = dict.get<Real>(key, dimensions);
+  if (!(value > 0)) {
+    std::ostringstream message;
+    message << "'" << key << "' is " << value << " in " << dict.name()
+            << "; it must be positive (valid range: > 0)";
+    throw DictionaryError(dict.location(key), message.str());
+  }
+  return value;
+}
 }  // namespace
 
 // periodic { x (0 0.2); z (-0.01 0.01); }: each axis named with its interval [lower, upper).
@@ -93,27 +105,9 @@ const MaterialLibrary& CaseDescription::materials() const {
   return *materials_;
 }
 
-Real CaseDescription::supportRadius() const {
-  const Real h = schemes().get<Real>("supportRadius", length);
-  if (!(h > 0)) {
-    std::ostringstream message;
-    message << "'supportRadius' is " << h << " in " << schemes().name()
-            << "; it must be positive (valid range: > 0)";
-    throw DictionaryError(schemes().location("supportRadius"), message.str());
-  }
-  return h;
-}
+Real CaseDescription::supportRadius() const { return positive(schemes(), "supportRadius", length); }
 
-Real CaseDescription::soundSpeed() const {
-  const Real c = schemes().get<Real>("soundSpeed", speed);
-  if (!(c > 0)) {
-    std::ostringstream message;
-    message << "'soundSpeed' is " << c << " in " << schemes().name()
-            << "; it must be positive (valid range: > 0)";
-    throw DictionaryError(schemes().location("soundSpeed"), message.str());
-  }
-  return c;
-}
+Real CaseDescription::soundSpeed() const { return positive(schemes(), "soundSpeed", speed); }
 
 SourceLocation CaseDescription::supportRadiusAt() const {
   return schemes().location("supportRadius");
