@@ -26,31 +26,6 @@ Real positive(const Dictionary& dict, const std::string& key, const Dimensions& 
 }
 }  // namespace
 
-// periodic { x (0 0.2); z (-0.01 0.01); }: each axis named with its interval [lower, upper).
-PeriodicBox readPeriodicBox(const Dictionary& periodic, Real supportRadius, int dimension) {
-  PeriodicBox box;
-  const std::vector<std::string> axes{"x", "y", "z"};
-  periodic.checkKeys(axes);
-  for (int axis = 0; axis < 3; ++axis) {
-    const std::string& key = axes[static_cast<std::size_t>(axis)];
-    if (!periodic.found(key)) continue;
-    const auto interval = periodic.get<Eigen::Vector2d>(key, length);
-    const double period = interval[1] - interval[0];
-    // the minimum image is unique only for pairs closer than half a period
-    if (!(period > 2 * static_cast<double>(supportRadius))) {
-      throw DictionaryError(periodic.location(key),
-                            "periodic interval of " + key + " must be longer than twice the " +
-                                "supportRadius (" + std::to_string(supportRadius) + " m) in " +
-                                periodic.name());
-    }
-    if (dimension == 2 && axis == 2) {
-      throw DictionaryError(periodic.location(key), "a 2D case has no periodic z axis");
-    }
-    box.setPeriodic(axis, static_cast<Real>(interval[0]), static_cast<Real>(period));
-  }
-  return box;
-}
-
 CaseDescription::CaseDescription(const CaseFolder& caseFolder)
     : folder_(caseFolder), gravity_(readGravityIfPresent(caseFolder)) {
   const auto modelsFile = folder_.constantFile("physicsModels");
@@ -68,7 +43,12 @@ CaseDescription::CaseDescription(const CaseFolder& caseFolder)
     flow->checkKeys({"model", "fluid", "walls"});
     if (flow->get<std::string>("model") != "none") {
       fluidCloud_ = flow->get<std::string>("fluid");
-      wallClouds_ = flow->getOrDefault<std::vector<std::string>>("walls", {});
+      // a list of the wall clouds, or a dictionary of them with each wall's own conditions
+      if (flow->isDict("walls")) {
+        wallClouds_ = flow->subDict("walls").keys();
+      } else {
+        wallClouds_ = flow->getOrDefault<std::vector<std::string>>("walls", {});
+      }
     }
   }
   if (const Dictionary* heat = modelsEntry("heatTransfer")) {
@@ -111,6 +91,24 @@ Real CaseDescription::soundSpeed() const { return positive(schemes(), "soundSpee
 
 SourceLocation CaseDescription::supportRadiusAt() const {
   return schemes().location("supportRadius");
+}
+
+std::vector<std::pair<std::string, const Dictionary*>> CaseDescription::wallEntries() const {
+  std::vector<std::pair<std::string, const Dictionary*>> entries;
+  const Dictionary* flow = modelsEntry("flow");
+  if (!hasFlow() || !flow->isDict("walls")) return entries;
+  const Dictionary& walls = flow->subDict("walls");
+  for (const std::string& cloud : wallClouds_) {
+    if (!walls.isDict(cloud)) {
+      throw DictionaryError(walls.location(cloud),
+                            "'" + cloud + "' in " + walls.name() +
+                                " must be a dictionary of the wall's conditions ({} for none)");
+    }
+    const Dictionary& entry = walls.subDict(cloud);
+    entry.checkKeys({"wallSlip", "wallDissipation"});
+    entries.emplace_back(cloud, &entry);
+  }
+  return entries;
 }
 
 PeriodicBox CaseDescription::periodic() const {

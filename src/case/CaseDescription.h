@@ -4,13 +4,14 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
+#include "boundaries/PeriodicBox.h"
 #include "core/CaseFolder.h"
 #include "core/Real.h"
 #include "core/dictionary/Dictionary.h"
 #include "materials/MaterialLibrary.h"
-#include "particles/CellGrid.h"
 
 namespace sphcast {
 
@@ -70,6 +71,9 @@ class CaseDescription {
   bool hasFlow() const { return !fluidCloud_.empty(); }
   const std::string& fluidCloud() const { return fluidCloud_; }
   const std::vector<std::string>& wallClouds() const { return wallClouds_; }
+  // The walls given with conditions of their own, flow { walls { mold { wallSlip slip; } } }
+  // (boundaries/WallCondition.h reads them): each cloud with its entry, in the file's order.
+  std::vector<std::pair<std::string, const Dictionary*>> wallEntries() const;
   SourceLocation fluidCloudAt() const;
   bool hasHeat() const { return !heatClouds_.empty(); }
   const std::vector<std::string>& heatClouds() const { return heatClouds_; }
@@ -100,9 +104,5 @@ class CaseDescription {
   mutable std::optional<Dictionary> schemes_;
   mutable std::optional<MaterialLibrary> materials_;
 };
-
-// periodic { x (0 0.2); } of constant/physicsModels: each axis named with its interval
-// [lower, upper), longer than 2 supportRadius; no z in 2D.
-PeriodicBox readPeriodicBox(const Dictionary& periodic, Real supportRadius, int dimension);
 
 }  // namespace sphcast

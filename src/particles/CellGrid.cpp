@@ -60,31 +60,6 @@ BoundingBox scanPositions(const std::vector<Vector>& positions) {
 
 }  // namespace
 
-void PeriodicBox::setPeriodic(int axis, Real lower, Real period) {
-  if (axis < 0 || axis > 2) {
-    throw Error("PeriodicBox: axis " + std::to_string(axis) + " is not 0, 1 or 2 (x, y, z)");
-  }
-  if (!std::isfinite(lower) || !std::isfinite(period) || !(period > Real(0))) {
-    throw Error(std::string("PeriodicBox: periodic axis ") + axisName(axis) +
-                " needs a finite "
-                "lower bound and a period > 0, got lower " +
-                std::to_string(lower) + ", period " + std::to_string(period));
-  }
-  lower_[axis] = lower;
-  period_[axis] = period;
-  inversePeriod_[axis] = Real(1) / period;
-}
-
-Vector PeriodicBox::wrap(const Vector& x) const {
-  Vector wrapped = x;
-  for (int a = 0; a < 3; ++a) {
-    if (!isPeriodic(a)) continue;
-    wrapped[a] -= period_[a] * std::floor((x[a] - lower_[a]) * inversePeriod_[a]);
-    if (wrapped[a] >= lower_[a] + period_[a]) wrapped[a] = lower_[a];  // round-off at the top
-  }
-  return wrapped;
-}
-
 CellGrid::CellGrid(Real radius, const PeriodicBox& periodic, std::size_t maxCellCount)
     : radius_(radius),
       periodic_(periodic),

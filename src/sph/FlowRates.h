@@ -4,6 +4,7 @@
 #include <cstddef>
 #include <span>
 
+#include "boundaries/WallCondition.h"
 #include "core/Real.h"
 #include "particles/WendlandKernel.h"
 #include "sph/RiemannSolver.h"
@@ -186,17 +187,16 @@ struct WallParticle {
   Real density;   // from the pressure through the equation of state
 };
 
-// slip takes the wall's viscous shear away (wallSlip slip in system/sphSchemes): the
-// fluid slides along the wall held back only by the interface's dissipation along oblique pairs
-// (none with normalApproach). The mirror velocity stays the full 2 v_wall - v_i: reflecting
-// only its normal part (a free slip) left no resistance along pair lines towards a neighbouring
-// face, and in crossDitchPress's pour a particle went 0.66 dx through the mold at 0.156 s.
-// normalApproach (wallDissipation normalApproach in system/sphSchemes): the interface's
-// dissipation sees only the fluid's approach to the wall, below.
+// The wall's condition (boundaries/WallCondition.h) sets the shear and the dissipation: slip
+// takes the viscous shear away, the mirror velocity staying the full 2 v_wall - v_i (reflecting
+// only its normal part, a free slip, left no resistance along pair lines towards a neighbouring
+// face, and in crossDitchPress's pour a particle went 0.66 dx through the mold at 0.156 s);
+// normalApproach has the interface's dissipation see only the fluid's approach to the wall,
+// below.
 template <int Dim, class Interface, class Viscosity>
 inline void accumulateWallPair(const InterfaceSide& i, Real viscosityI, const WallParticle& k,
                                Real halfSpacing, const Vector& xik, Real r, const Vector& gradW,
-                               const FlowConstants& constants, bool slip, bool normalApproach,
+                               const FlowConstants& constants, const WallCondition& condition,
                                Real& densityRate, Vector& acceleration) {
   // A wall only pushes: with tension (p < 0) on either side the pair would pull a lone fluid
   // particle into the wall (measured: one of a 2D dam break's ended 0.11 dx inside the back
@@ -229,13 +229,14 @@ inline void accumulateWallPair(const InterfaceSide& i, Real viscosityI, const Wa
   //   density deviation (12 % with this form, 10 % with relativeVelocity) and a particle went
   //   0.52 dx into a small lid's corner, whose corner particles carry a side face's normal
   //   (tests/integration/curvedWallsHoldTheMetal.sh, coolingModeWaitsForABodysRelease.sh).
+  const bool normalApproach = condition.normalApproach();
   const Real wallCompression = normalApproach && r > Real(0)
                                    ? Real(-2) * relative.dot(k.normal) * k.normal.dot(xik) / r
                                    : Real(0);
   FluidPair<Dim, Interface, Viscosity>::accumulate(
       fluid, mirror, k.density * k.volume, viscosityI, viscosityI,
-      slip ? Vector::Zero() : Vector(beta * relative), xik, r, gradW, constants, densityRate,
-      acceleration, normalApproach ? &wallCompression : nullptr);
+      condition.shearVelocity(beta, relative), xik, r, gradW, constants, densityRate, acceleration,
+      normalApproach ? &wallCompression : nullptr);
 }
 
 // Adami et al. (2012) eq. (27), static wall: the pressure of wall particle w from its fluid

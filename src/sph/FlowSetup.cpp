@@ -48,11 +48,10 @@ FlowSetup readFlowSetup(const CaseDescription& description) {
   settings.densityScheme = schemes.getChoice("densityScheme", {"riemann", "standard", "deltaSPH"});
   settings.kernelCorrection = schemes.getOrDefault<bool>("kernelCorrection", false);
   settings.viscousForm = schemes.getChoice("viscousForm", {"Morris", "Cleary"});
-  settings.slipWalls =
-      schemes.getChoiceOrDefault("wallSlip", {"noSlip", "slip"}, "noSlip") == "slip";
-  settings.wallDissipationNormalApproach =
-      schemes.getChoiceOrDefault("wallDissipation", {"relativeVelocity", "normalApproach"},
-                                 "relativeVelocity") == "normalApproach";
+  settings.walls.all = readWallCondition(schemes, WallCondition());
+  for (const auto& [cloud, entry] : description.wallEntries()) {
+    settings.walls.own[cloud] = readWallCondition(*entry, settings.walls.all);
+  }
   settings.supportRadius = description.supportRadius();
   setup.supportRadiusAt = description.supportRadiusAt();
   settings.soundSpeed = description.soundSpeed();

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "boundaries/WallCondition.h"
 #include "particles/Neighbourhood.h"
 #include "particles/ParticleCloud.h"
 #include "sph/FluidForceModel.h"
@@ -30,13 +31,9 @@ struct FlowSettings {
   Real deltaSPHDiffusion = Real(0.1);
   Real deltaSPHViscosity = Real(0.02);
   std::string viscousForm = "Morris";  // Morris | Cleary (FlowRates.h says why Morris)
-  // wallSlip in system/sphSchemes: noSlip (false, the default) or slip (true): the walls hold
-  // no viscous shear, the fluid slides along them (FlowRates.h, accumulateWallPair)
-  bool slipWalls = false;
-  // wallDissipation in system/sphSchemes: relativeVelocity (false, the default) or
-  // normalApproach (true): the wall pairs' dissipation sees only the fluid's approach to the
-  // wall, not its sliding along it (FlowRates.h, accumulateWallPair)
-  bool wallDissipationNormalApproach = false;
+  // The walls' conditions (boundaries/WallCondition.h): wallSlip and wallDissipation of
+  // system/sphSchemes for every wall, a wall's own entry in physicsModels' flow walls for it.
+  WallConditions walls;
   // neighbourListSkin in system/sphSchemes: the skin of the reused pair lists as a fraction of
   // h (particles/Neighbourhood.h); 0 searches the cells at every step.
   Real neighbourListSkin = Real(0.1);

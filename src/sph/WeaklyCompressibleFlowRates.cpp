@@ -149,6 +149,7 @@ void WeaklyCompressibleFlow::computeRatesFor() {
     const Vector* velocity;  // null: at rest
     Vector* loadForce;       // per fluid particle, null unless the load is measured
     Vector* loadTorque;
+    WallCondition condition;
   };
   std::vector<WallArrays> walls;
   for (std::size_t w = 0; w < walls_.size(); ++w) {
@@ -162,7 +163,8 @@ void WeaklyCompressibleFlow::computeRatesFor() {
          walls_[w]->vectorField(field::normal).data(),
          walls_[w]->scalarField(field::wallDistance).data(), wallPressure_[w].data(), &wallPairs(w),
          walls_[w]->hasVectorField(field::U) ? walls_[w]->vectorField(field::U).data() : nullptr,
-         measured ? loadForce_[w].data() : nullptr, measured ? loadTorque_[w].data() : nullptr});
+         measured ? loadForce_[w].data() : nullptr, measured ? loadTorque_[w].data() : nullptr,
+         settings_.walls.of(walls_[w]->name())});
   }
   const Real halfSpacing = Real(0.5) * spacing;
   const Vector gravity = settings_.gravity;
@@ -326,19 +328,14 @@ void WeaklyCompressibleFlow::computeRatesFor() {
           Vector& target = wall.loadForce ? pairAcceleration : accel;
           accumulateWallPair<Dim, Interface, Viscosity>(
               self, muI, particle, halfSpacing, xik, r,
-              corrected ? Vector(correctionI * gradW) : gradW, constants, settings_.slipWalls,
-              settings_.wallDissipationNormalApproach, rate, target);
+              corrected ? Vector(correctionI * gradW) : gradW, constants, wall.condition, rate,
+              target);
           if (diffusive) {
             // deltaSPH's artificial viscosity against the mirror velocity 2 v_wall - v_i:
             // without it a means interface has no dissipation at an impact on a wall
             const Real etaSquared = constants.viscosityRegularisation;
-            // (a slip wall, or wallDissipation normalApproach: against the normal part of the
-            // relative velocity only; against the whole of it this is a shear viscosity of
-            // order alpha h c / 10, hundreds of times water's, held at the wall)
             const Vector relative =
-                settings_.slipWalls || settings_.wallDissipationNormalApproach
-                    ? Vector((vi - wallVelocity).dot(wall.normal[k]) * wall.normal[k])
-                    : Vector(vi - wallVelocity);
+                wall.condition.artificialViscosityVelocity(vi - wallVelocity, wall.normal[k]);
             target += (viscousScale * wall.volume[k] * Real(2) * relative.dot(xik) /
                        (r * r + etaSquared)) *
                       gradW;

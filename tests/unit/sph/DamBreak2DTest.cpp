@@ -50,9 +50,9 @@ struct DamBreakResult {
   double largestError = 0;  // max |Z - Z_measured|
   std::size_t escaped = 0;
   double particleSteps = 0;
-  Vector centroid = Vector::Zero();  // of the water at the end
+  Vector centroid = Vector::Zero();       // of the water at the end
   std::size_t searches = 0, filters = 0;  // pair-list updates
-  MeasuredFront everyStep;  // T and Z after every step
+  MeasuredFront everyStep;                // T and Z after every step
 };
 
 struct Numerics {
@@ -91,7 +91,9 @@ DamBreakResult runDamBreak(int columns, double endT, const Numerics& numerics = 
   settings.kernelCorrection = numerics.kernelCorrection;
   settings.deltaSPHViscosity = numerics.deltaSPHViscosity;
   settings.neighbourListSkin = numerics.neighbourListSkin;
-  settings.wallDissipationNormalApproach = numerics.normalApproach;
+  settings.walls.all.dissipation = numerics.normalApproach
+                                       ? WallCondition::Dissipation::normalApproach
+                                       : WallCondition::Dissipation::relativeVelocity;
   WeaklyCompressibleFlow flow(settings, fluid, {&wall});
 
   const MeasuredFront measured = martinMoyce();
@@ -160,11 +162,12 @@ FrontError againstConvergedFront(const DamBreakResult& result) {
 }
 
 void print(int columns, const DamBreakResult& result, const Numerics& numerics = {}) {
-  std::printf("dam break 2D, a/dx = %d, densityScheme %s (alpha %g), kernelCorrection %s, "
-              "wallDissipation %s:\n",
-              columns, numerics.densityScheme.c_str(), double(numerics.deltaSPHViscosity),
-              numerics.kernelCorrection ? "on" : "off",
-              numerics.normalApproach ? "normalApproach" : "relativeVelocity");
+  std::printf(
+      "dam break 2D, a/dx = %d, densityScheme %s (alpha %g), kernelCorrection %s, "
+      "wallDissipation %s:\n",
+      columns, numerics.densityScheme.c_str(), double(numerics.deltaSPHViscosity),
+      numerics.kernelCorrection ? "on" : "off",
+      numerics.normalApproach ? "normalApproach" : "relativeVelocity");
   for (std::size_t k = 0; k < result.time.size(); ++k) {
     std::printf("    T %.3f  Z %.3f  measured %.3f\n", result.time[k], result.front[k],
                 result.measured[k]);
@@ -254,9 +257,10 @@ TEST(DamBreak2D, ReusedPairListsChangeNothingBeyondRoundOff) {
       frontDifference = std::max(frontDifference, std::abs(result.front[k] - reference.front[k]));
     }
     const double centroidDifference = (result.centroid - reference.centroid).norm() / 0.1;
-    std::printf("skin %.1f h: %zu searches, %zu filters; fronts within %.3g a, centroids within "
-                "%.3g a\n", double(skin), result.searches, result.filters, frontDifference,
-                centroidDifference);
+    std::printf(
+        "skin %.1f h: %zu searches, %zu filters; fronts within %.3g a, centroids within "
+        "%.3g a\n",
+        double(skin), result.searches, result.filters, frontDifference, centroidDifference);
     EXPECT_GT(result.filters, 2 * result.searches);
     EXPECT_LT(frontDifference, 1e-9);
     EXPECT_LT(centroidDifference, 1e-9);
@@ -294,9 +298,9 @@ TEST(DamBreak2D, DISABLED_SurgeFrontAtThreeResolutions) {
   normalApproach.normalApproach = true;
   Numerics deltaSPHNormalApproach{"deltaSPH", false, Real(0.02)};
   deltaSPHNormalApproach.normalApproach = true;
-  for (const Numerics& numerics : {Numerics{"riemann", false, 0}, Numerics{"riemann", true, 0},
-                                   Numerics{"deltaSPH", false, Real(0.02)}, normalApproach,
-                                   deltaSPHNormalApproach}) {
+  for (const Numerics& numerics :
+       {Numerics{"riemann", false, 0}, Numerics{"riemann", true, 0},
+        Numerics{"deltaSPH", false, Real(0.02)}, normalApproach, deltaSPHNormalApproach}) {
     for (const int columns : {10, 20, 40}) {
       print(columns, runDamBreak(columns, 3.4, numerics), numerics);
     }

@@ -21,9 +21,10 @@ const char* header = "FoamFile { version 2.0; format ascii; class dictionary; }\
 
 struct FlowCase : testing::TemporaryCase {
   FlowCase(const std::string& models, const std::string& schemes,
-           const std::string& density = "1000") {
-    write("constant/physicsModels",
-          header + models + "flow { model weaklyCompressible; fluid water; walls (tank); }\n");
+           const std::string& density = "1000", const std::string& walls = "(tank);") {
+    write(
+        "constant/physicsModels",
+        header + models + "flow { model weaklyCompressible; fluid water; walls " + walls + " }\n");
     write("system/sphSchemes",
           header + schemes + "viscousForm Morris;\nsupportRadius 0.03;\nsoundSpeed 10;\n");
     write("constant/physicalProperties",
@@ -48,6 +49,34 @@ std::string errorOf(const FlowCase& flowCase, const Vector& gravity = Vector(0, 
     return error.what();
   }
   return "";
+}
+
+// flow { walls { ... } }: each wall with conditions of its own over system/sphSchemes' (which
+// set every wall's), and the errors of a misspelt one.
+TEST(FlowSetup, AWallsOwnConditionsOverTheSchemesDefaults) {
+  const FlowSetup setup =
+      FlowCase("", "densityScheme riemann;\nwallSlip slip;\n", "1000",
+               "{ tank {} lid { wallSlip noSlip; wallDissipation normalApproach; } }")
+          .read();
+  EXPECT_EQ(setup.wallClouds, (std::vector<std::string>{"tank", "lid"}));
+  EXPECT_TRUE(setup.settings.walls.all.slip());
+  EXPECT_TRUE(setup.settings.walls.of("tank").slip());
+  EXPECT_FALSE(setup.settings.walls.of("tank").normalApproach());
+  EXPECT_FALSE(setup.settings.walls.of("lid").slip());
+  EXPECT_TRUE(setup.settings.walls.of("lid").normalApproach());
+  EXPECT_EQ(setup.settings.walls.of("lid").describe(),
+            "wallSlip noSlip, wallDissipation normalApproach");
+
+  const std::string misspelt =
+      errorOf(FlowCase("", "densityScheme riemann;\n", "1000", "{ tank { wallSlip slp; } }"));
+  EXPECT_NE(misspelt.find("physicsModels"), std::string::npos) << misspelt;
+  EXPECT_NE(misspelt.find("noSlip"), std::string::npos) << misspelt;
+  const std::string unknown =
+      errorOf(FlowCase("", "densityScheme riemann;\n", "1000", "{ tank { slip yes; } }"));
+  EXPECT_NE(unknown.find("'slip'"), std::string::npos) << unknown;
+  const std::string notADictionary =
+      errorOf(FlowCase("", "densityScheme riemann;\n", "1000", "{ tank slip; }"));
+  EXPECT_NE(notADictionary.find("must be a dictionary"), std::string::npos) << notADictionary;
 }
 
 TEST(FlowSetup, ReadsDimensionPeriodicAxesAndTheNumerics) {

@@ -51,8 +51,8 @@ inline void addWallCells(ParticleCloud& wall, int columnBegin, int columnEnd, in
   }
 }
 
-inline ParticleCloud emptyWall() {
-  ParticleCloud wall("wall");
+inline ParticleCloud emptyWall(const std::string& name = "wall") {
+  ParticleCloud wall(name);
   wall.addScalarField("volume");
   wall.addVectorField("normal");
   wall.addScalarField("wallDistance");
