@@ -1,6 +1,6 @@
 // sphCastFoam's time loop: the step's length, the flow and heat steps, the cooling mode, the
-// writes (construction and set-up: CastingSolverSetup.cpp; the log: CastingSolverLog.cpp; the
-// health checks: CastingSolverHealth.cpp).
+// writes, the stop with the last good state (construction and set-up: CastingSolverSetup.cpp;
+// the log and the health checks: RunMonitor.cpp).
 #include "solver/CastingSolver.h"
 
 #include <algorithm>
@@ -17,7 +17,7 @@ namespace sphcast {
 
 // The flow's limits over every rank (each the smallest), so that all take the same step.
 FlowStepLimits CastingSolver::flowStepLimits(double maxCo) const {
-  FlowStepLimits limits = flow_->stepLimits(maxCo);
+  FlowStepLimits limits = models_.flow->stepLimits(maxCo);
   if (!parallel_) return limits;
   std::vector<double> each{limits.acoustic,     limits.viscous,     limits.bodyForce,
                            limits.acceleration, limits.densityRate, limits.forceModel};
@@ -27,20 +27,21 @@ FlowStepLimits CastingSolver::flowStepLimits(double maxCo) const {
 
 double CastingSolver::stableDeltaT(std::string& limiter) const {
   if (cooling_) {  // the flow takes its own steps within (evolveCooling)
-    const double heat = energy_->stableDeltaT(limiter);
+    const double heat = models_.energy->stableDeltaT(limiter);
     limiter += " (cooling)";
     return heat;
   }
-  if (flow_ || energy_) {
+  if (models_.flow || models_.energy) {
     double stable = std::numeric_limits<double>::infinity();
-    if (flow_) stable = flowStepLimits(time_.settings().maxCo).smallest(limiter);
-    if (!movingMolds_.empty()) {
-      stable = movingMolds_.limitStep(stable, fluid_->attributes().at("spacing"), limiter);
+    if (models_.flow) stable = flowStepLimits(time_.settings().maxCo).smallest(limiter);
+    if (!models_.movingMolds.empty()) {
+      stable =
+          models_.movingMolds.limitStep(stable, models_.fluid->attributes().at("spacing"), limiter);
     }
     // with a flow and `interval auto` the heat takes steps of its own (HeatStepSchedule)
-    if (energy_ && heatSchedule_.everyStep()) {
+    if (models_.energy && heatSchedule_.everyStep()) {
       std::string heatLimiter;
-      const double heat = energy_->stableDeltaT(heatLimiter);
+      const double heat = models_.energy->stableDeltaT(heatLimiter);
       if (heat < stable) {
         stable = heat;
         limiter = heatLimiter;
@@ -65,27 +66,29 @@ void CastingSolver::evolve(double deltaT) {
     evolveCooling(deltaT);
     return;
   }
-  if (!flow_ && !energy_) {
+  if (!models_.flow && !models_.energy) {
     for (ParticleCloud& cloud : clouds_) {
       if (cloud.hasVectorField(field::U)) motion_.step(cloud, deltaT);
     }
     return;
   }
   const bool heatThisStep =
-      energy_ && heatSchedule_.stepsAfter(deltaT, time_.writeTime() || time_.progress() >= 1, [&] {
+      models_.energy &&
+      heatSchedule_.stepsAfter(deltaT, time_.writeTime() || time_.progress() >= 1, [&] {
         std::string limiter;
-        return energy_->stableDeltaT(limiter);
+        return models_.energy->stableDeltaT(limiter);
       });
-  if (flow_) flowFirstKickAndDrift(deltaT);
-  if (heatThisStep) addWallTime(heatSeconds_, [&] { energy_->halfKick(heatSchedule_.deltaT()); });
+  if (models_.flow) flowFirstKickAndDrift(deltaT);
+  if (heatThisStep)
+    addWallTime(monitor_.times().heat, [&] { models_.energy->halfKick(heatSchedule_.deltaT()); });
   // the search at the new positions (nothing moves without a flow), the quantities models share
-  if (flow_) searchAndKeepClear(deltaT, true);
-  if (heatThisStep && flow_ && exposedArea_) {
-    addWallTime(heatSeconds_, [&] { exposedArea_->compute(); });
+  if (models_.flow) searchAndKeepClear(deltaT, true);
+  if (heatThisStep && models_.flow && models_.exposedArea) {
+    addWallTime(monitor_.times().heat, [&] { models_.exposedArea->compute(); });
   }
-  if (flow_) flowRatesAndSecondKick(deltaT);
+  if (models_.flow) flowRatesAndSecondKick(deltaT);
   if (heatThisStep) {
-    addWallTime(heatSeconds_, [&] { finishHeatStep(); });
+    addWallTime(monitor_.times().heat, [&] { finishHeatStep(); });
     heatSchedule_.countStep();
   }
 }
@@ -93,26 +96,26 @@ void CastingSolver::evolve(double deltaT) {
 // The first half of a flow step: the fluid's and the bodies' first kicks with the rates of the
 // current state and their drift, then the metal the inlets pour.
 void CastingSolver::flowFirstKickAndDrift(double deltaT) {
-  flow_->kickAndDrift(deltaT);
-  movingMolds_.drift(deltaT, time_.value());
-  pouringInlets_.pour(time_.value(), decomposition_.get());
+  models_.flow->kickAndDrift(deltaT);
+  models_.movingMolds.drift(deltaT, time_.value());
+  models_.pouringInlets.pour(time_.value(), models_.decomposition.get());
 }
 
 // The second half, after the search: the rates at the new positions and the second kicks, the
 // inlets' buffers held.
 void CastingSolver::flowRatesAndSecondKick(double deltaT) {
-  flow_->computeRatesAndKick(deltaT);
-  movingMolds_.kick(deltaT, time_.value());
-  pouringInlets_.holdBuffers();
+  models_.flow->computeRatesAndKick(deltaT);
+  models_.movingMolds.kick(deltaT, time_.value());
+  models_.pouringInlets.holdBuffers();
 }
 
 // The second half of a heat step: the rates at the new state, the second kick, and the
 // solidification that follows the new u.
 void CastingSolver::finishHeatStep() {
-  energy_->computeRates();
-  energy_->halfKick(heatSchedule_.deltaT());
-  if (solidification_) {
-    solidification_->update(time_.value(), heatSchedule_.deltaT());
+  models_.energy->computeRates();
+  models_.energy->halfKick(heatSchedule_.deltaT());
+  if (models_.solidification) {
+    models_.solidification->update(time_.value(), heatSchedule_.deltaT());
     recordCriticalGradients();
   }
 }
@@ -121,9 +124,9 @@ void CastingSolver::finishHeatStep() {
 // area, and finishHeatStep.
 void CastingSolver::heatStepInPlace(double deltaT) {
   heatSchedule_.stepApart(deltaT);
-  addWallTime(heatSeconds_, [&] {
-    energy_->halfKick(deltaT);
-    if (exposedArea_) exposedArea_->compute();
+  addWallTime(monitor_.times().heat, [&] {
+    models_.energy->halfKick(deltaT);
+    if (models_.exposedArea) models_.exposedArea->compute();
     finishHeatStep();
   });
   heatSchedule_.countStep();
@@ -136,21 +139,22 @@ void CastingSolver::heatStepInPlace(double deltaT) {
 // the same positions in the same order and goes on bit for bit.
 void CastingSolver::searchAndKeepClear(double deltaT, bool lastOfStep) {
   const bool written = lastOfStep && (time_.writeTime() || time_.progress() >= 1);
-  addWallTime(searchSeconds_, [&] { searchNeighbours(CloudOrder::byCell, false); });
-  if (fillTime_) fillTime_->record(*neighbourhood_, time_.value());
-  if (!movingMolds_.empty()) {
-    movingMolds_.keepOutOfMolds(static_cast<Real>(fluid_->attributes().at("spacing")));
+  addWallTime(monitor_.times().search, [&] { searchNeighbours(CloudOrder::byCell, false); });
+  if (models_.fillTime) models_.fillTime->record(*models_.neighbourhood, time_.value());
+  if (!models_.movingMolds.empty()) {
+    models_.movingMolds.keepOutOfMolds(
+        static_cast<Real>(models_.fluid->attributes().at("spacing")));
   }
-  flow_->keepClearOfWalls();
+  models_.flow->keepClearOfWalls();
   if (written) {
-    addWallTime(searchSeconds_, [&] { searchNeighbours(CloudOrder::keep, true); });
+    addWallTime(monitor_.times().search, [&] { searchNeighbours(CloudOrder::keep, true); });
   }
-  movingMolds_.pushByClearance(deltaT, time_.value());
+  models_.movingMolds.pushByClearance(deltaT, time_.value());
 }
 
 // A stop between heat steps (stopAt writeNow) writes the heat brought up to the time written.
 void CastingSolver::flushPendingHeat() {
-  if (!energy_) return;
+  if (!models_.energy) return;
   if (const double pending = heatSchedule_.takePending(); pending != 0) heatStepInPlace(pending);
 }
 
@@ -173,13 +177,13 @@ void CastingSolver::evolveCooling(double deltaT) {
     if (k == 0) {  // the steps controlDict's maxCo would take instead, for logWorkSkipped
       limits.acoustic *= time_.settings().maxCo / coolingMaxCo();  // the limit scales with maxCo
       std::string without;
-      flowStepsWithoutCooling_ += deltaT / limits.smallest(without);
+      monitor_.counts().flowStepsWithoutCooling += deltaT / limits.smallest(without);
     }
     flowFirstKickAndDrift(flowDeltaT);
     searchAndKeepClear(flowDeltaT, k + 1 == solidificationSetup_.cooling->flowStepsPerHeatStep);
     flowRatesAndSecondKick(flowDeltaT);
-    ++flowSubSteps_;
-    lastFlowSubStep_ = flowDeltaT;
+    ++monitor_.counts().flowSubSteps;
+    monitor_.counts().lastFlowSubStep = flowDeltaT;
   }
 }
 
@@ -193,17 +197,17 @@ double CastingSolver::coolingMaxCo() const {
 // on the state only (and the mode, which the fluid carries as an attribute), so a restart takes
 // the same one.
 void CastingSolver::updateCoolingMode() {
-  if (!solidification_ || !solidificationSetup_.cooling) return;
+  if (!models_.solidification || !solidificationSetup_.cooling) return;
   const CoolingAcceleration& cooling = *solidificationSetup_.cooling;
   double fastest = 0;
-  const auto& velocity = fluid_->vectorField(field::U);
-  for (std::size_t i = 0; i < fluid_->ownedSize(); ++i) {
+  const auto& velocity = models_.fluid->vectorField(field::U);
+  for (std::size_t i = 0; i < models_.fluid->ownedSize(); ++i) {
     fastest = std::max(fastest, static_cast<double>(velocity[i].norm()));
   }
   // metal still being poured, or none yet, is not a still melt (measured: crossDitchPress
   // entered the mode at t = 0 with its cloud empty, and its ladle fell 0.012 s behind)
-  bool pouring = comm_.sum(static_cast<std::int64_t>(fluid_->ownedSize())) == 0;
-  pouring = pouring || pouringInlets_.pouring(time_.value());
+  bool pouring = comm_.sum(static_cast<std::int64_t>(models_.fluid->ownedSize())) == 0;
+  pouring = pouring || models_.pouringInlets.pouring(time_.value());
   // The bodies: the mode's slowed flow time would slow a body's motion hundreds of times, so a
   // body driven by its table keeps the mode off, and one let go (it is held through the step in
   // which its release time falls, and free from the next) ends it: within the last step, or
@@ -213,7 +217,7 @@ void CastingSolver::updateCoolingMode() {
   const double settle = g > 0 ? 2 * cooling.stillSpeed / g : 0;
   const double window = std::max(settle, time_.state().deltaT * (1 + 1e-9));
   std::string bodyMoves;
-  for (const auto& body : movingMolds_.bodies()) {
+  for (const auto& body : models_.movingMolds.bodies()) {
     for (const Vector& v : body->cloud().vectorField(field::U)) {
       fastest = std::max(fastest, static_cast<double>(v.norm()));
     }
@@ -227,8 +231,8 @@ void CastingSolver::updateCoolingMode() {
   if (!cooling_ && fastest < cooling.stillSpeed && !pouring && bodyMoves.empty()) cooling_ = true;
   if (cooling_ && (fastest > cooling.movingSpeed || !bodyMoves.empty())) cooling_ = false;
   if (cooling_ == wasCooling) return;
-  fluid_->attributes()["coolingMode"] = cooling_ ? 1 : 0;
-  stepCollapse_.restart();  // the steps change length by design
+  models_.fluid->attributes()["coolingMode"] = cooling_ ? 1 : 0;
+  monitor_.restartStepWatch();  // the steps change length by design
   if (cooling_) {
     flushPendingHeat();
     info() << "Cooling from time " << time_.timeName() << ": the melt is still (max|U| " << fastest
@@ -262,17 +266,17 @@ void CastingSolver::run() {
     updateCoolingMode();
     std::string limiter;
     const double stable = stableDeltaT(limiter);
-    const std::string collapse =
-        time_.settings().adjustTimeStep
-            ? stepCollapse_.check(stable, limiter, health_.minDeltaTFraction)
-            : std::string();
+    const std::string collapse = time_.settings().adjustTimeStep
+                                     ? monitor_.checkStepCollapse(stable, limiter)
+                                     : std::string();
     if (!collapse.empty()) {
       stopWithLastGoodState(time_.state(), false, collapse);  // this state passed every check
     }
     time_.adjustDeltaT(stable, limiter);
-    if (!time_.settings().adjustTimeStep && (flow_ || energy_) && time_.deltaT() > stable &&
-        comm_.master() &&
-        warnings_.shouldPrint("a fixed deltaT above the stable step", time_.deltaT() / stable)) {
+    if (!time_.settings().adjustTimeStep && (models_.flow || models_.energy) &&
+        time_.deltaT() > stable && comm_.master() &&
+        monitor_.warnings().shouldPrint("a fixed deltaT above the stable step",
+                                        time_.deltaT() / stable)) {
       std::ostringstream message;
       message.precision(4);
       message << "time " << time_.timeName() << ": the fixed deltaT " << time_.deltaT() << " s is "
@@ -283,10 +287,10 @@ void CastingSolver::run() {
     const TimeState before = time_.state();
     // reuses their storage: no allocation per step
     for (std::size_t c = 0; c < evolving_.size(); ++c) lastGood_[c] = *evolving_[c];
-    movingMolds_.saveState();
-    pouringInlets_.saveState();
+    models_.movingMolds.saveState();
+    models_.pouringInlets.saveState();
     time_.advance();
-    ++stepsTaken_;
+    ++monitor_.counts().steps;
     // A step that throws (a far-flung particle the cell grid cannot place, memory exhausted)
     // stops the run the same way as a failed check: with the last good state written.
     // In a parallel run the other ranks would wait for the failed one inside the step: the
@@ -301,32 +305,76 @@ void CastingSolver::run() {
       if (parallel_) throw;
       failure = std::string("the step failed: ") + error.what();
     }
-    if (failure.empty()) failure = addWallTime(checkSeconds_, [&] { return checkHealth(); });
+    if (failure.empty())
+      failure = addWallTime(monitor_.times().checks,
+                            [&] { return monitor_.checkHealth(clouds_, domain_); });
     // what one rank found stops them all, with its message
     if (parallel_) failure = comm_.firstNonEmpty(failure);
     if (!failure.empty()) stopWithLastGoodState(before, true, failure);
-    if (solidificationSetup_.endWhenSolid && solidification_->allSolid(comm_)) {
+    if (solidificationSetup_.endWhenSolid && models_.solidification->allSolid(comm_)) {
       time_.requestStop("the casting is solid (endWhenSolid)");
     }
-    const bool printBlock = stepsTaken_ % time_.settings().logInterval == 0 || time_.writeTime();
-    logStep(printBlock);
-    if (time_.writeTime()) addWallTime(outputSeconds_, [&] { writeResults(); });
-    addWallTime(functionSeconds_, [&] { functions_.execute(time_.state(), time_.writeTime()); });
+    const bool printBlock =
+        monitor_.counts().steps % time_.settings().logInterval == 0 || time_.writeTime();
+    monitor_.logStep(printBlock, cooling_);
+    if (time_.writeTime()) addWallTime(monitor_.times().output, [&] { writeResults(); });
+    addWallTime(monitor_.times().functions,
+                [&] { functions_.execute(time_.state(), time_.writeTime()); });
   }
   logRereadMessage();
   info() << "Stopping: " << time_.stopReason() << " at time " << time_.timeName() << '\n';
   if (time_.finalWriteWanted()) {
     flushPendingHeat();
-    addWallTime(outputSeconds_, [&] { writeResults(); });
+    addWallTime(monitor_.times().output, [&] { writeResults(); });
   }
-  logTimeSpent();
-  logWorkSkipped();
-  if (decomposition_) {  // collective: every rank takes part, rank 0 prints
-    const std::string decomposed = decomposition_->describe();
-    info() << "Decomposition at the end: " << decomposition_->rebalances() << " re-balances; "
-           << decomposed << '\n';
+  monitor_.logTimeSpent();
+  monitor_.logWorkSkipped();
+  if (models_.decomposition) {  // collective: every rank takes part, rank 0 prints
+    const std::string decomposed = models_.decomposition->describe();
+    info() << "Decomposition at the end: " << models_.decomposition->rebalances()
+           << " re-balances; " << decomposed << '\n';
   }
-  info() << clock_.timesLine() << "\n\nEnd\n\n";
+  info() << monitor_.clock().timesLine() << "\n\nEnd\n\n";
+}
+
+// Every rank of a parallel run stops here alike (the failure is shared before), so the errors
+// are CollectiveErrors: rank 0 prints them.
+void CastingSolver::stopWithLastGoodState(const TimeState& good, bool restoreSaved,
+                                          const std::string& what) {
+  const std::string badTime = time_.timeName();
+  const long badIndex = time_.timeIndex();
+  monitor_.logTimeSpent();
+  const std::string failure =
+      "at time " + badTime + " (step " + std::to_string(badIndex) + "): " + what + ". ";
+  // Only the models keep the state before the step; ballistic clouds have nothing to go back
+  // to.
+  if (restoreSaved && evolving_.empty()) {
+    throw CollectiveError(failure +
+                          "Nothing is written: the last written time is the last good state.");
+  }
+  // The start time is on disk as it was read: rewriting it would store the rates of this run's
+  // settings in it, and a rerun with other settings would start from them.
+  if (good.name == time_.startTimeName()) {
+    throw CollectiveError(failure + "The last good state is the start time " + good.name +
+                          ", left as it was; change maxCo, deltaT or soundSpeed and run again.");
+  }
+  if (restoreSaved) {
+    for (std::size_t c = 0; c < evolving_.size(); ++c) *evolving_[c] = lastGood_[c];
+    models_.movingMolds.restoreState(good.value);
+    models_.pouringInlets.restoreState();
+  }
+  std::vector<const ParticleCloud*> written;
+  for (const ParticleCloud& cloud : clouds_) written.push_back(&cloud);
+  writer_.write(good, written, uniformStateFiles(good.name));
+  throw CollectiveError(
+      failure + "The last good state, time " + good.name +
+      ", is written (it passed every check); restart from it with a smaller maxCo or "
+      "deltaT, a larger soundSpeed, or look for a gap in the walls there.");
+}
+
+void CastingSolver::logRereadMessage() {
+  const std::string message = time_.takeRereadMessage();
+  if (!message.empty()) info() << message << "\n\n";
 }
 
 }  // namespace sphcast

@@ -24,16 +24,11 @@
 #include "post/FunctionObject.h"
 #include "solidification/SolidificationSetup.h"
 #include "solver/BallisticMotion.h"
+#include "solver/CastingModels.h"
 #include "solver/HeatStepSchedule.h"
-#include "solver/MovingMolds.h"
-#include "solver/PouringInlets.h"
-#include "solver/RunHealth.h"
-#include "sph/ExposedArea.h"
-#include "sph/FillTime.h"
+#include "solver/RunMonitor.h"
 #include "sph/FlowSetup.h"
-#include "sph/WeaklyCompressibleFlow.h"
 #include "surface/SurfaceTensionSetup.h"
-#include "thermal/EnergyEquation.h"
 #include "thermal/HeatSetup.h"
 
 namespace sphcast {
@@ -96,20 +91,9 @@ class CastingSolver {
   void heatStepInPlace(double deltaT);
   void finishHeatStep();
   void writeResults();
-  void logStep(bool printBlock);
   void logRereadMessage();
-  void logTimeSpent();
-  void logWorkSkipped();
-  void logHeat();
-  void logSolidification();
   // "cloud" and "cloud.field" of every cloud, sorted: what a time folder of them holds.
   static std::vector<std::string> fieldInventory(const std::vector<ParticleCloud>& clouds);
-  // The wall seconds to all solid when the run ends on it (endWhenSolid), for the ETA.
-  std::optional<std::pair<double, std::string>> solidEnd() const;
-  // Why the run must stop after the step just taken, or "" when every check passed; warns in
-  // the log about what is bad but not yet fatal.
-  std::string checkHealth();
-  std::string checkTemperatures() const;
   // Writes `good` (the last state that passed every check: the clouds as saved before the step)
   // and stops the run with `what` went wrong.
   [[noreturn]] void stopWithLastGoodState(const TimeState& good, bool restoreSaved,
@@ -133,42 +117,19 @@ class CastingSolver {
   InletSetup inletSetup_;
   std::vector<ParticleCloud> clouds_;        // of the time folders: read, stepped, written
   std::vector<ParticleCloud> staticClouds_;  // of constant/particles: read only
-  // The cell grids and pair lists of every model, built once per step (with flow or heat).
-  std::unique_ptr<Neighbourhood> neighbourhood_;
-  std::unique_ptr<DomainDecomposition> decomposition_;  // a parallel run's
-  std::unique_ptr<WeaklyCompressibleFlow> flow_;
-  std::unique_ptr<SurfaceTensionModel> surfaceTension_;  // a force model of the flow
-  ParticleCloud* fluid_ = nullptr;
-  std::unique_ptr<EnergyEquation> energy_;
-  std::unique_ptr<Solidification> solidification_;  // follows the fluid's T after heat steps
-  std::unique_ptr<ExposedArea> exposedArea_;        // A_i, when a model reads it
-  std::unique_ptr<FillTime> fillTime_;              // the fluid's first wall contact
-  MovingMolds movingMolds_;                         // the rigid bodies: moving walls of the flow
-  PouringInlets pouringInlets_;                     // feed the fluid
-  bool exposedAreaRestored_ = false;                // read with a restart's clouds
-  std::vector<const ParticleCloud*> wallClouds_;    // the flow's walls
+  CastingModels models_;                     // built from the case, stepped by evolve()
+  bool exposedAreaRestored_ = false;         // read with a restart's clouds
   Domain domain_;
   // The clouds before the step being taken (those that change: the fluid, the heat clouds)
   std::vector<ParticleCloud> lastGood_;
   std::vector<ParticleCloud*> evolving_;
-  double searchSeconds_ = 0, heatSeconds_ = 0;
   HeatStepSchedule heatSchedule_;  // when the heat steps while a flow steps
   // Cooling to the end (solidificationSetup_.cooling): steps of the heat's length, each with a
   // few flow steps; a fluid cloud attribute (coolingMode) too, so a restart goes on alike.
   bool cooling_ = false;
-  CompletionEstimate solidEstimate_;  // the wall time to all solid, for the ETA (endWhenSolid)
-  long flowSubSteps_ = 0;
-  double lastFlowSubStep_ = 0;
-  // the flow steps controlDict's maxCo would have taken over the cooling mode's heat steps
-  double flowStepsWithoutCooling_ = 0;
-  HealthSettings health_;
-  HealthWarnings warnings_;
-  StepCollapseWatch stepCollapse_;  // the models' stable step against its running mean
-  double checkSeconds_ = 0, outputSeconds_ = 0, functionSeconds_ = 0;
+  RunMonitor monitor_;  // health, log, progress, the account of skipped work
   CaseWriter writer_;
   FunctionObjectList functions_;  // of controlDict's `functions`, run after every step
-  RunClock clock_;
-  long stepsTaken_ = 0;
 };
 
 }  // namespace sphcast

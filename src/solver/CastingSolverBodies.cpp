@@ -49,11 +49,11 @@ void CastingSolver::setUpBodies() {
   const auto stateFile = caseFolder_.root() / time_.startTimeName() / "uniform" / "dynamicBodies";
   std::optional<Dictionary> state;
   if (std::filesystem::exists(stateFile)) state = Dictionary::read(stateFile);
-  movingMolds_ = MovingMolds(
+  models_.movingMolds = MovingMolds(
       bodySetup_, [&](const std::string& name) -> ParticleCloud& { return cloudNamed(name); },
-      state, stateFile.string(), wallClouds_, gravity_, time_.value(), *flow_, *neighbourhood_,
-      comm_);
-  for (const auto& body : movingMolds_.bodies()) {
+      state, stateFile.string(), models_.walls, gravity_, time_.value(), *models_.flow,
+      *models_.neighbourhood, comm_);
+  for (const auto& body : models_.movingMolds.bodies()) {
     ParticleCloud* cloud = findCloud(body->cloud().name());
     if (std::find(evolving_.begin(), evolving_.end(), cloud) == evolving_.end()) {
       evolving_.push_back(cloud);

@@ -50,6 +50,7 @@ CastingSolver::CastingSolver(const CaseFolder& caseFolder, const Communicator& c
       bodySetup_(readBodySetup(description_)),
       inletSetup_(readInletSetup(description_)),
       heatSchedule_(!flowSetup_.enabled || heatSetup_.heatEveryFlowStep),
+      monitor_(models_, time_, comm_, heatSchedule_, flowSetup_, heatSetup_, solidificationSetup_),
       writer_(caseFolder, time_.settings().purgeWrite, comm) {
   if (parallel_) {
     time_.agreeOnChanges([this](bool changed) { return comm_.any(changed); },
@@ -68,7 +69,7 @@ CastingSolver::CastingSolver(const CaseFolder& caseFolder, const Communicator& c
   const std::vector<std::string> startFields = fieldInventory(clouds_);
   // controlDict's entries beyond run control (TimeControl's), read once
   const Dictionary controlDict = Dictionary::read(caseFolder_.systemFile("controlDict"));
-  health_ = HealthSettings::read(controlDict);
+  monitor_.setHealthSettings(HealthSettings::read(controlDict));
   if (parallel_) checkParallelSupport();
   // Clouds join clouds_ before any model holds a pointer into it.
   if (heatSetup_.enabled) loadHeatClouds();
@@ -172,17 +173,17 @@ void CastingSolver::setUpNeighbourhood() {
   const PeriodicBox periodic = description_.periodic();
   // pair lists reused over steps only where particles move (a heat-only case has no flow)
   const Real skin = flowSetup_.enabled ? flowSetup_.settings.neighbourListSkin * radius : Real(0);
-  neighbourhood_ = std::make_unique<Neighbourhood>(radius, periodic, skin);
+  models_.neighbourhood = std::make_unique<Neighbourhood>(radius, periodic, skin);
   if (flowSetup_.enabled) {
     ParticleCloud& fluid = cloudNamed(flowSetup_.fluidCloud);
-    neighbourhood_->addCloud(fluid, Neighbourhood::Motion::moving);
+    models_.neighbourhood->addCloud(fluid, Neighbourhood::Motion::moving);
     evolving_.push_back(&fluid);
     // A wall cloud is taken from the start time when it is there (setCastFields may have set
     // its fields, or it carries heat), else from constant/particles, where particleizeMold
     // wrote it.
     for (const std::string& wallName : flowSetup_.wallClouds) {
       if (const ParticleCloud* inTime = findCloud(wallName)) {
-        wallClouds_.push_back(inTime);
+        models_.walls.push_back(inTime);
         continue;
       }
       const auto file = caseFolder_.constant() / "particles" / (wallName + ".vtp");
@@ -192,13 +193,13 @@ void CastingSolver::setUpNeighbourhood() {
       }
       staticClouds_.push_back(readOnMaster([&] { return readCloudVtp(file, wallName); }, comm_));
     }
-    for (const ParticleCloud& wall : staticClouds_) wallClouds_.push_back(&wall);
-    for (const ParticleCloud* wall : wallClouds_) neighbourhood_->addFixedCloud(*wall);
+    for (const ParticleCloud& wall : staticClouds_) models_.walls.push_back(&wall);
+    for (const ParticleCloud* wall : models_.walls) models_.neighbourhood->addFixedCloud(*wall);
     if (parallel_) decompose();
   }
   for (const std::string& name : heatSetup_.clouds) {
     ParticleCloud& cloud = cloudNamed(name);
-    neighbourhood_->addCloud(cloud, Neighbourhood::Motion::fixed);  // no-op for the fluid
+    models_.neighbourhood->addCloud(cloud, Neighbourhood::Motion::fixed);  // no-op for the fluid
     if (std::find(evolving_.begin(), evolving_.end(), &cloud) == evolving_.end()) {
       evolving_.push_back(&cloud);
     }
@@ -243,10 +244,10 @@ void CastingSolver::decompose() {
   } catch (const Error& error) {
     throw CollectiveError(error.what());  // every rank read the same file
   }
-  decomposition_ = std::make_unique<DomainDecomposition>(
+  models_.decomposition = std::make_unique<DomainDecomposition>(
       comm_, decomposeParDict,
-      static_cast<double>(neighbourhood_->radius() + neighbourhood_->skin()),
-      neighbourhood_->periodicBox(), description_.dimension());
+      static_cast<double>(models_.neighbourhood->radius() + models_.neighbourhood->skin()),
+      models_.neighbourhood->periodicBox(), description_.dimension());
   std::vector<DomainDecomposition::Cloud> decomposed;
   if (!flowSetup_.enabled) {
     for (const std::string& name : heatSetup_.clouds) decomposed.push_back({&cloudNamed(name)});
@@ -268,22 +269,22 @@ void CastingSolver::decompose() {
     constexpr std::int64_t fluidWeight = 30, wallWeight = 1;
     decomposed.push_back({&cloudNamed(flowSetup_.fluidCloud), true, fluidWeight});
     // a moving mold's particles migrate as the fluid's do
-    for (const ParticleCloud* wall : wallClouds_) {
+    for (const ParticleCloud* wall : models_.walls) {
       bool moving = false;
       for (const RigidBodySettings& body : bodySetup_.bodies) moving |= body.cloud == wall->name();
       decomposed.push_back({writable(wall), moving, wallWeight});
     }
   }
-  decomposition_->distribute(decomposed);
-  neighbourhood_->setHaloSync(decomposition_.get());
-  info() << "Decomposition: " << decomposition_->describe() << '\n';
+  models_.decomposition->distribute(decomposed);
+  models_.neighbourhood->setHaloSync(models_.decomposition.get());
+  info() << "Decomposition: " << models_.decomposition->describe() << '\n';
 }
 
 void CastingSolver::searchNeighbours(CloudOrder order, bool rebuild) {
-  if (decomposition_) {
-    decomposition_->update(*neighbourhood_, rebuild);
+  if (models_.decomposition) {
+    models_.decomposition->update(*models_.neighbourhood, rebuild);
   } else {
-    neighbourhood_->update(order, rebuild);
+    models_.neighbourhood->update(order, rebuild);
   }
 }
 
@@ -295,11 +296,11 @@ void CastingSolver::setUpFlow() {
   for (const std::string& added : prepareFluidFields(flowSetup_, fluid)) {
     info() << "Cloud " << fluid.name() << ": initial " << added << " from constant/\n";
   }
-  const std::vector<const ParticleCloud*>& walls = wallClouds_;
-  flow_ =
-      std::make_unique<WeaklyCompressibleFlow>(flowSetup_.settings, fluid, walls, *neighbourhood_);
-  fluid_ = &fluid;
-  if (!walls.empty()) fillTime_ = std::make_unique<FillTime>(fluid, walls);
+  const std::vector<const ParticleCloud*>& walls = models_.walls;
+  models_.flow = std::make_unique<WeaklyCompressibleFlow>(flowSetup_.settings, fluid, walls,
+                                                          *models_.neighbourhood);
+  models_.fluid = &fluid;
+  if (!walls.empty()) models_.fillTime = std::make_unique<FillTime>(fluid, walls);
   Domain box = walls.empty() ? boundingBox({&fluid}) : boundingBox(walls);
   if (parallel_) {  // the box of every rank's particles
     std::vector<double> lower(box.lower.data(), box.lower.data() + 3);
@@ -319,14 +320,17 @@ void CastingSolver::setUpFlow() {
   info() << "Flow: weakly compressible SPH (" << settings.dimension << "D), densityScheme "
          << settings.densityScheme << ", kernelCorrection "
          << (settings.kernelCorrection ? "on" : "off") << ", viscousForm " << settings.viscousForm
-         << ", wallSlip " << (settings.slipWalls ? "slip" : "noSlip") << ", wallDissipation "
-         << (settings.wallDissipationNormalApproach ? "normalApproach" : "relativeVelocity")
-         << ", h = " << settings.supportRadius << " m, c = " << settings.soundSpeed << " m/s\n"
-         << "    pair lists: searched with h + " << neighbourhood_->skin()
+         << ", " << settings.walls.all.describe() << ", h = " << settings.supportRadius
+         << " m, c = " << settings.soundSpeed << " m/s\n"
+         << "    pair lists: searched with h + " << models_.neighbourhood->skin()
          << " m, reused until particles may have closed in by that skin\n"
          << "    fluid " << fluid.name() << ": " << countOf(fluid) << " particles\n";
   for (const ParticleCloud* wall : walls) {
-    info() << "    wall " << wall->name() << ": " << countOf(*wall) << " particles\n";
+    info() << "    wall " << wall->name() << ": " << countOf(*wall) << " particles";
+    if (settings.walls.own.count(wall->name())) {
+      info() << ", " << settings.walls.of(wall->name()).describe();
+    }
+    info() << '\n';
   }
   for (int axis = 0; axis < 3; ++axis) {
     if (!settings.periodic.isPeriodic(axis)) continue;
@@ -339,10 +343,11 @@ void CastingSolver::setUpFlow() {
          << domain_.upper.transpose().format(plain)
          << "): a particle outside it, or not finite, stops the run\n"
          << "    health checks: density deviation warned above "
-         << 100 * health_.warnDensityDeviation << " %, stops above "
-         << 100 * health_.maxDensityDeviation << " %; a particle " << health_.maxWallPenetration
-         << " dx behind a wall surface, or a stable step below " << health_.minDeltaTFraction
-         << " of its running mean, stops the run\n"
+         << 100 * monitor_.healthSettings().warnDensityDeviation << " %, stops above "
+         << 100 * monitor_.healthSettings().maxDensityDeviation << " %; a particle "
+         << monitor_.healthSettings().maxWallPenetration
+         << " dx behind a wall surface, or a stable step below "
+         << monitor_.healthSettings().minDeltaTFraction << " of its running mean, stops the run\n"
          << "    wall clearance " << settings.wallClearance
          << " dx: fluid particles closer to a wall surface are moved back to it\n";
   const SoundSpeedCheck soundSpeed = checkSoundSpeed(settings, fluid, walls, comm_);
@@ -354,11 +359,11 @@ void CastingSolver::setUpFlow() {
   if (surfaceTensionSetup_.enabled) {
     SurfaceTensionSettings tension = surfaceTensionSetup_.settings;
     tension.spacing = static_cast<Real>(fluid.attributes().at("spacing"));
-    surfaceTension_ = surfaceTensionModels().build(surfaceTensionSetup_.model, tension, fluid,
-                                                   walls, *neighbourhood_);
-    flow_->addForceModel(*surfaceTension_);
-    info() << "Surface tension: " << surfaceTension_->summary(settings.soundSpeed) << '\n';
-    const std::string warned = surfaceTension_->settingsWarning(settings.soundSpeed);
+    models_.surfaceTension = surfaceTensionModels().build(surfaceTensionSetup_.model, tension,
+                                                          fluid, walls, *models_.neighbourhood);
+    models_.flow->addForceModel(*models_.surfaceTension);
+    info() << "Surface tension: " << models_.surfaceTension->summary(settings.soundSpeed) << '\n';
+    const std::string warned = models_.surfaceTension->settingsWarning(settings.soundSpeed);
     if (!warned.empty()) warning(warned);
   }
 }
@@ -366,8 +371,8 @@ void CastingSolver::setUpFlow() {
 void CastingSolver::setUpHeat() {
   HeatTransferContext context;
   context.dimension = description_.dimension();
-  context.supportRadius = neighbourhood_->radius();
-  context.neighbourhood = neighbourhood_.get();
+  context.supportRadius = models_.neighbourhood->radius();
+  context.neighbourhood = models_.neighbourhood.get();
   double spacing = 0;
   for (const std::string& name : heatSetup_.clouds) {
     ParticleCloud& cloud = cloudNamed(name);
@@ -394,28 +399,28 @@ void CastingSolver::setUpHeat() {
   context.spacing = static_cast<Real>(spacing);
   context.maxDi = time_.settings().maxDi;
   context.comm = comm_;
-  energy_ = std::make_unique<EnergyEquation>(context, heatSetup_.heatTransfer);
-  if (energy_->needsExposedArea()) {
+  models_.energy = std::make_unique<EnergyEquation>(context, heatSetup_.heatTransfer);
+  if (models_.energy->needsExposedArea()) {
     std::vector<ParticleCloud*> exposed;
     std::vector<const ParticleCloud*> covering;
-    exposedAreaRestored_ = energy_->restarted();
-    for (const HeatCloud& heat : energy_->context().clouds) {
+    exposedAreaRestored_ = models_.energy->restarted();
+    for (const HeatCloud& heat : models_.energy->context().clouds) {
       exposedAreaRestored_ = exposedAreaRestored_ && heat.cloud->hasScalarField(field::exposedArea);
       exposed.push_back(heat.cloud);
       covering.push_back(heat.cloud);
     }
-    for (const ParticleCloud* wall : wallClouds_) {
+    for (const ParticleCloud* wall : models_.walls) {
       if (std::find(covering.begin(), covering.end(), wall) == covering.end()) {
         covering.push_back(wall);
       }
     }
     // the walls keep their lattice (fixed or rigid): nothing inside them to gate
-    exposedArea_ = std::make_unique<ExposedArea>(energy_->exposedAreaForm(), context.dimension,
-                                                 context.supportRadius, context.spacing, exposed,
-                                                 covering, *neighbourhood_, wallClouds_);
+    models_.exposedArea = std::make_unique<ExposedArea>(
+        models_.energy->exposedAreaForm(), context.dimension, context.supportRadius,
+        context.spacing, exposed, covering, *models_.neighbourhood, models_.walls);
   }
   info() << "Heat transfer: energy equation (17) on";
-  for (const HeatCloud& heat : energy_->context().clouds) {
+  for (const HeatCloud& heat : models_.energy->context().clouds) {
     info() << ' ' << heat.cloud->name() << " (" << heat.material->name;
     if (heat.fixedTemperature) info() << ", held at " << heat.heldTemperature << " K";
     for (std::size_t p = 0; p < heat.heldPatches.size(); ++p) {
@@ -425,12 +430,12 @@ void CastingSolver::setUpHeat() {
     info() << ')';
   }
   info() << '\n';
-  for (const std::string& line : energy_->descriptions()) info() << "    " << line << '\n';
-  if (exposedArea_) {
+  for (const std::string& line : models_.energy->descriptions()) info() << "    " << line << '\n';
+  if (models_.exposedArea) {
     info() << "    exposed area A_i ("
-           << (energy_->exposedAreaForm() == ExposedAreaForm::gradient ? "gradient of s_i"
-                                                                       : "eq. 11")
-           << ") with R_A = " << exposedArea_->areaFactor()
+           << (models_.energy->exposedAreaForm() == ExposedAreaForm::gradient ? "gradient of s_i"
+                                                                              : "eq. 11")
+           << ") with R_A = " << models_.exposedArea->areaFactor()
            << " (a flat surface counts its area)\n";
   }
   if (!flowSetup_.enabled) info() << "    no flow: the particles stay where they are\n";
@@ -442,9 +447,9 @@ void CastingSolver::setUpSolidification() {
   SolidificationSettings settings = solidificationSetup_.settings;
   const Material& material = *solidificationSetup_.material;
   ParticleCloud& metal = cloudNamed(solidificationSetup_.cloud);
-  if (flow_) {
+  if (models_.flow) {
     const FlowSettings& flow = flowSetup_.settings;
-    const double spacing = fluid_->attributes().at("spacing");
+    const double spacing = models_.fluid->attributes().at("spacing");
     // 0.9 of the viscosity whose explicit limit 0.125 dx^2 rho / mu is the acoustic step
     // maxCo dx / c, the longer of controlDict's and the cooling mode's (SolidificationSetup.h)
     const double liquidDensity = (*material.density)(material.freezingRange->liquidus);
@@ -452,37 +457,37 @@ void CastingSolver::setUpSolidification() {
     settings.viscosityLimit =
         static_cast<Real>(0.9 * 0.125 * liquidDensity * spacing * flow.soundSpeed / maxCo);
   }
-  solidification_ = std::make_unique<Solidification>(settings, material, metal);
-  neighbourhood_->requestPairs(metal, metal);  // for G at T_c (recordCriticalGradients)
-  solidification_->update(time_.value(), 0.0);
+  models_.solidification = std::make_unique<Solidification>(settings, material, metal);
+  models_.neighbourhood->requestPairs(metal, metal);  // for G at T_c (recordCriticalGradients)
+  models_.solidification->update(time_.value(), 0.0);
   if (const auto mode = metal.attributes().find("coolingMode"); mode != metal.attributes().end()) {
     cooling_ = solidificationSetup_.cooling && mode->second != 0;
   }
-  info() << "Solidification: " << solidification_->description() << '\n';
-  if (flow_) {
+  info() << "Solidification: " << models_.solidification->description() << '\n';
+  if (models_.flow) {
     info() << "    frozen particles stay where they are (wall for the melt; their own "
               "contraction moves nothing); melt below "
            << flowSetup_.settings.cavitationPressure << " Pa opens a cavity\n";
   } else {
     info() << "    no flow: the metal conducts and solidifies where it is\n";
   }
-  logSolidification();
+  monitor_.logSolidification(cooling_);
 }
 
 // G = |grad T| of the particles that have just crossed T_c (Solidification.h), from the pairs
 // of the last search: the positions the heat step used.
 void CastingSolver::recordCriticalGradients() {
-  const std::vector<std::size_t> pending = solidification_->pendingCriticalGradients();
+  const std::vector<std::size_t> pending = models_.solidification->pendingCriticalGradients();
   if (pending.empty()) return;
   ParticleCloud& metal = cloudNamed(solidificationSetup_.cloud);
   const int dimension = description_.dimension();
   const std::vector<Real> volume = particleVolumes(metal, dimension);
-  const NeighbourList& pairs = neighbourhood_->pairs(metal, metal);
+  const NeighbourList& pairs = models_.neighbourhood->pairs(metal, metal);
   auto& gradient = metal.scalarField(field::criticalGradient);
   const auto& T = metal.scalarField(field::T);
   for (const std::size_t i : pending) {
-    gradient[i] = correctedGradient(metal, T, volume, pairs, neighbourhood_->periodicBox(),
-                                    neighbourhood_->radius(), dimension, i)
+    gradient[i] = correctedGradient(metal, T, volume, pairs, models_.neighbourhood->periodicBox(),
+                                    models_.neighbourhood->radius(), dimension, i)
                       .norm();
   }
 }
@@ -490,25 +495,27 @@ void CastingSolver::recordCriticalGradients() {
 // The first search and the rates of the start state (a restart keeps the order and the rates
 // it was written with).
 void CastingSolver::startModels() {
-  const bool restarted = (flow_ && flow_->restarted()) || (energy_ && energy_->restarted());
-  addWallTime(searchSeconds_,
+  const bool restarted = (models_.flow && models_.flow->restarted()) ||
+                         (models_.energy && models_.energy->restarted());
+  addWallTime(monitor_.times().search,
               [&] { searchNeighbours(restarted ? CloudOrder::keep : CloudOrder::byCell, false); });
   // a restart has the contacts up to its time already (the next search is the next step's)
-  if (fillTime_ && !restarted) fillTime_->record(*neighbourhood_, time_.value());
-  if (solidification_) recordCriticalGradients();
+  if (models_.fillTime && !restarted)
+    models_.fillTime->record(*models_.neighbourhood, time_.value());
+  if (models_.solidification) recordCriticalGradients();
   // A restart keeps the A_i it was written with: summed again over neighbour lists in another
   // order (the wall clearance moves particles after the search) they could differ in the last
   // bit.
-  if (exposedArea_ && !exposedAreaRestored_) exposedArea_->compute();
-  if (flow_) flow_->start();
+  if (models_.exposedArea && !exposedAreaRestored_) models_.exposedArea->compute();
+  if (models_.flow) models_.flow->start();
   // the bodies' acceleration under the start state's loads
-  if (!restarted) movingMolds_.kick(0.0, time_.value());
+  if (!restarted) models_.movingMolds.kick(0.0, time_.value());
   setUpInlets();
-  if (energy_) {
-    for (const std::string& line : energy_->start()) info() << "    " << line << "\n";
+  if (models_.energy) {
+    for (const std::string& line : models_.energy->start()) info() << "    " << line << "\n";
   }
   info() << "    neighbourhood: "
-         << comm_.sum(static_cast<std::int64_t>(neighbourhood_->pairCount())) << " pairs\n";
+         << comm_.sum(static_cast<std::int64_t>(models_.neighbourhood->pairCount())) << " pairs\n";
 }
 
 void CastingSolver::setUpFunctionObjects(const Dictionary& controlDict) {
@@ -520,11 +527,11 @@ void CastingSolver::setUpFunctionObjects(const Dictionary& controlDict) {
   context.gravity = gravity_;
   context.comm = comm_;
   for (const ParticleCloud& cloud : clouds_) context.clouds.push_back(&cloud);
-  context.bodies = movingMolds_.bodyList();
+  context.bodies = models_.movingMolds.bodyList();
   try {
     functions_ = FunctionObjectList(controlDict, context);
     // the bodies' history, every step, which castPostProcess's bodyMotion reads
-    if (!movingMolds_.empty()) {
+    if (!models_.movingMolds.empty()) {
       const Dictionary history =
           Dictionary::parse("type bodyHistory;", "sphCastFoam's bodies' history");
       for (const auto& object : functions_.objects()) {

@@ -26,7 +26,6 @@ RunMonitor::RunMonitor(const CastingModels& models, const TimeControl& time,
       heat_(heat),
       solidification_(solidification) {}
 
-
 void RunMonitor::logStep(bool printBlock, bool cooling) {
   if (!printBlock) return;
   info() << "deltaT = " << time_.deltaT() << "  (" << time_.deltaTLimiter() << ")\n"
@@ -48,10 +47,12 @@ void RunMonitor::logStep(bool printBlock, bool cooling) {
          << " Pa\n"
          << "Mass " << summary.mass << " kg  kinetic energy " << summary.kineticEnergy
          << " J  moved back from walls "
-         << comm_.sum(static_cast<std::int64_t>(models_.flow->lastWallClearance().corrected)) << '\n';
+         << comm_.sum(static_cast<std::int64_t>(models_.flow->lastWallClearance().corrected))
+         << '\n';
     info() << line.str();
   }
-  if (!models_.movingMolds.empty()) models_.movingMolds.log(models_.fluid->attributes().at("spacing"));
+  if (!models_.movingMolds.empty())
+    models_.movingMolds.log(models_.fluid->attributes().at("spacing"));
   models_.pouringInlets.log(time_.value());
   if (models_.energy) logHeat(cooling);
   if (models_.solidification) logSolidification(cooling);
@@ -67,9 +68,9 @@ void RunMonitor::logHeat(bool cooling) {
     std::string limiter;
     const double limit = models_.energy->stableDeltaT(limiter);
     line << "Heat: " << heatSchedule_.steps() << " heat steps in " << counts_.steps << " steps ("
-         << (cooling                       ? "cooling"
+         << (cooling                   ? "cooling"
              : heat_.heatEveryFlowStep ? "every flow step"
-                                            : "interval auto")
+                                       : "interval auto")
          << ", the last " << heatSchedule_.deltaT() << " s long; " << limiter << " limit " << limit
          << " s)\n";
   }
@@ -127,7 +128,8 @@ void RunMonitor::logTimeSpent() {
   if (models_.flow) {
     const FlowTimings& t = models_.flow->timings();
     line << " wall clearance " << t.wallClearance << ", flow rates " << t.rates;
-    if (models_.surfaceTension) line << " (surface tension " << models_.surfaceTension->seconds() << ")";
+    if (models_.surfaceTension)
+      line << " (surface tension " << models_.surfaceTension->seconds() << ")";
     line << ", flow integration " << t.integration << ",";
   }
   if (models_.energy) line << " heat " << times_.heat << ",";
@@ -173,11 +175,12 @@ void RunMonitor::logWorkSkipped() {
         work.flowSteps > 0
             ? (times_.search + t.wallClearance + t.rates + t.integration) / double(work.flowSteps)
             : 0.0;
-    line << "\n    the cooling mode: " << counts_.flowSubSteps << " flow steps where controlDict's maxCo "
-         << time_.settings().maxCo << " would have taken about "
-         << std::llround(counts_.flowStepsWithoutCooling) << ", about "
-         << perFlowStep * (counts_.flowStepsWithoutCooling - double(counts_.flowSubSteps)) << " s at "
-         << perFlowStep << " s per flow step";
+    line << "\n    the cooling mode: " << counts_.flowSubSteps
+         << " flow steps where controlDict's maxCo " << time_.settings().maxCo
+         << " would have taken about " << std::llround(counts_.flowStepsWithoutCooling)
+         << ", about "
+         << perFlowStep * (counts_.flowStepsWithoutCooling - double(counts_.flowSubSteps))
+         << " s at " << perFlowStep << " s per flow step";
   }
   if (models_.energy && work.flowSteps > std::uint64_t(heatSchedule_.steps())) {
     skippedAny = true;
@@ -189,16 +192,14 @@ void RunMonitor::logWorkSkipped() {
   info() << line.str() << '\n';
 }
 
-
-
 std::string RunMonitor::checkHealth(const std::vector<ParticleCloud>& clouds,
                                     const Domain& domain) {
   std::ostringstream problem;
   problem.precision(4);
   for (const ParticleCloud& cloud : clouds) {
     if (!cloud.hasVectorField(field::U)) continue;  // at rest: nothing to go bad
-    const bool cavities = &cloud == models_.fluid && flow_.settings.cavitationPressure >
-                                                  std::numeric_limits<Real>::lowest();
+    const bool cavities = &cloud == models_.fluid &&
+                          flow_.settings.cavitationPressure > std::numeric_limits<Real>::lowest();
     const CloudHealth health = measureCloudHealth(cloud, domain, cavities);
     if (!health.finiteAndInside()) {
       problem << health.outside << " particle(s) of cloud '" << cloud.name()
