@@ -3,8 +3,8 @@
 // cohesion's virial, so a column feels no net force and the bulk's pressure stays 0), a wall
 // that attracts like the liquid is no face and one that attracts nothing is a free face, and
 // momentum kept on any arrangement, the same bits on one and two threads. Its drops, against
-// the continuum surface force's cases, are studies (SPHCAST_CSF_MODEL=pairwiseForce in
-// ContinuumSurfaceForceTest.cpp; doc/validation.md §2.3).
+// the continuum surface force's cases, are studies (surfaceTensionStudy's drops with
+// --model pairwiseForce, tests/studies/SurfaceTensionStudy.cpp; doc/validation.md §2.4).
 
 #include <gtest/gtest.h>
 
