@@ -3,15 +3,18 @@
 // Reported as particles (items) per second = particle-steps/s.
 #include <benchmark/benchmark.h>
 
+#include "particles/FieldNames.h"
 #include "particles/ParticleCloud.h"
 #include "solver/BallisticMotion.h"
 
 namespace {
 
+namespace field = sphcast::field;
+
 sphcast::ParticleCloud movingCloud(std::size_t count) {
   sphcast::ParticleCloud cloud("metal");
   cloud.resize(count);
-  auto& velocity = cloud.addVectorField("U");
+  auto& velocity = cloud.addVectorField(field::U);
   for (std::size_t i = 0; i < count; ++i) {
     cloud.positions()[i] = sphcast::Vector(sphcast::Real(i % 100), sphcast::Real(i / 100), 0);
     velocity[i] = sphcast::Vector(1, 0, 2);

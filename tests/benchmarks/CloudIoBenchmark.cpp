@@ -10,9 +10,12 @@
 #include <string>
 
 #include "io/VtpCloud.h"
+#include "particles/FieldNames.h"
 #include "particles/ParticleCloud.h"
 
 namespace {
+
+namespace field = sphcast::field;
 
 namespace fs = std::filesystem;
 using sphcast::ParticleCloud;
@@ -27,12 +30,12 @@ ParticleCloud metalCloud(std::size_t count) {
   };
   ParticleCloud cloud("metal");
   cloud.resize(count);
-  auto& velocity = cloud.addVectorField("U");
-  auto& acceleration = cloud.addVectorField("acceleration");
-  auto& temperature = cloud.addScalarField("T");
-  auto& density = cloud.addScalarField("rho");
-  auto& pressure = cloud.addScalarField("p");
-  auto& solidFraction = cloud.addScalarField("solidFraction");
+  auto& velocity = cloud.addVectorField(field::U);
+  auto& acceleration = cloud.addVectorField(field::acceleration);
+  auto& temperature = cloud.addScalarField(field::T);
+  auto& density = cloud.addScalarField(field::rho);
+  auto& pressure = cloud.addScalarField(field::p);
+  auto& solidFraction = cloud.addScalarField(field::solidFraction);
   auto& id = cloud.addIdField("id");
   for (std::size_t i = 0; i < count; ++i) {
     cloud.positions()[i] = Vector(uniform(0, 0.1), uniform(0, 0.1), uniform(0, 0.2));

@@ -16,11 +16,14 @@
 
 #include "core/dictionary/Dictionary.h"
 #include "materials/MaterialLibrary.h"
+#include "particles/FieldNames.h"
 #include "sph/ExposedArea.h"
 #include "sph/WeaklyCompressibleFlow.h"
 #include "thermal/EnergyEquation.h"
 
 namespace {
+
+namespace field = sphcast::field;
 
 using sphcast::Real;
 using sphcast::Vector;
@@ -35,8 +38,8 @@ sphcast::ParticleCloud block(const std::string& name, const Vector& lower, int n
                              Real dx, Real T) {
   sphcast::ParticleCloud cloud(name);
   cloud.resize(static_cast<std::size_t>(nx) * ny * nz);
-  auto& volume = cloud.addScalarField("volume");
-  auto& temperature = cloud.addScalarField("T");
+  auto& volume = cloud.addScalarField(field::volume);
+  auto& temperature = cloud.addScalarField(field::T);
   std::size_t n = 0;
   for (int k = 0; k < nz; ++k) {
     for (int j = 0; j < ny; ++j) {
@@ -136,11 +139,11 @@ void FlowAndHeatStep(benchmark::State& state) {
   sphcast::MaterialLibrary library = sphcast::MaterialLibrary::fromDictionary(
       sphcast::Dictionary::parse(properties, "physicalProperties"), "physicalProperties");
   sphcast::ParticleCloud fluid = block("metal", Vector::Zero(), perSide, perSide, perSide, dx, 970);
-  auto& U = fluid.addVectorField("U");
-  auto& rho = fluid.addScalarField("rho");
-  auto& mass = fluid.addScalarField("mass");
-  auto& mu = fluid.addScalarField("viscosity");
-  auto& rest = fluid.addScalarField("restDensity");
+  auto& U = fluid.addVectorField(field::U);
+  auto& rho = fluid.addScalarField(field::rho);
+  auto& mass = fluid.addScalarField(field::mass);
+  auto& mu = fluid.addScalarField(field::viscosity);
+  auto& rest = fluid.addScalarField(field::restDensity);
   for (std::size_t i = 0; i < fluid.size(); ++i) {
     U[i] = Vector(1 + Real(0.01) * std::sin(Real(0.1) * Real(i)), 0, 0);
     rho[i] = rest[i] = 2400;

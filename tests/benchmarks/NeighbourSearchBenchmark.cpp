@@ -15,10 +15,13 @@
 #include <random>
 
 #include "particles/CellGrid.h"
+#include "particles/FieldNames.h"
 #include "particles/NeighbourList.h"
 #include "particles/ParticleCloud.h"
 
 namespace {
+
+namespace field = sphcast::field;
 
 using sphcast::Real;
 using sphcast::Vector;
@@ -29,7 +32,7 @@ sphcast::ParticleCloud latticeCloud(std::int64_t count) {
   sphcast::ParticleCloud cloud("metal");
   cloud.resize(side * side * side);
   for (const char* name : {"rho", "p", "m", "T"}) cloud.addScalarField(name);
-  cloud.addVectorField("U");
+  cloud.addVectorField(field::U);
   std::mt19937 random(42);
   std::uniform_real_distribution<Real> jitter(Real(-0.05), Real(0.05));
   std::size_t i = 0;

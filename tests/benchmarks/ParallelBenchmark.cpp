@@ -12,8 +12,11 @@
 
 #include "parallel/ParticleTransfer.h"
 #include "parallel/RecursiveBisection.h"
+#include "particles/FieldNames.h"
 
 namespace {
+
+namespace field = sphcast::field;
 
 using sphcast::Communicator;
 using sphcast::ParticleCloud;
@@ -32,8 +35,8 @@ ParticleCloud fluidCloud(std::size_t count) {
     auto& field = cloud.addScalarField(name);
     for (auto& value : field) value = static_cast<Real>(shake(random));
   }
-  cloud.addVectorField("U");
-  cloud.addVectorField("acceleration");
+  cloud.addVectorField(field::U);
+  cloud.addVectorField(field::acceleration);
   auto& id = cloud.addIdField("id");
   const auto side = static_cast<std::size_t>(std::cbrt(static_cast<double>(count)) + 1);
   for (std::size_t i = 0; i < count; ++i) {

@@ -21,6 +21,7 @@
 
 #include "core/dictionary/Dictionary.h"
 #include "materials/MaterialLibrary.h"
+#include "particles/FieldNames.h"
 #include "particles/Neighbourhood.h"
 #include "sph/WeaklyCompressibleFlow.h"
 #include "surface/ContinuumSurfaceForce.h"
@@ -28,6 +29,8 @@
 #include "surface/SurfaceEnergyTension.h"
 
 namespace {
+
+namespace field = sphcast::field;
 
 using sphcast::Real;
 using sphcast::Vector;
@@ -48,13 +51,13 @@ sphcast::ParticleCloud ball(long count) {
     }
   }
   fluid.resize(points.size());
-  auto& U = fluid.addVectorField("U");
-  auto& rho = fluid.addScalarField("rho");
-  auto& mass = fluid.addScalarField("mass");
-  auto& mu = fluid.addScalarField("viscosity");
-  auto& rest = fluid.addScalarField("restDensity");
-  fluid.addVectorField("acceleration");
-  fluid.addScalarField("densityRate");
+  auto& U = fluid.addVectorField(field::U);
+  auto& rho = fluid.addScalarField(field::rho);
+  auto& mass = fluid.addScalarField(field::mass);
+  auto& mu = fluid.addScalarField(field::viscosity);
+  auto& rest = fluid.addScalarField(field::restDensity);
+  fluid.addVectorField(field::acceleration);
+  fluid.addScalarField(field::densityRate);
   for (std::size_t i = 0; i < points.size(); ++i) {
     fluid.positions()[i] = points[i];
     U[i] = Vector::Zero();

@@ -17,6 +17,7 @@
 #include "core/dictionary/SourceLocation.h"
 #include "io/VtpCloud.h"
 #include "materials/MaterialLibrary.h"
+#include "particles/FieldNames.h"
 #include "support/TemporaryCase.h"
 
 namespace sphcast {
@@ -78,8 +79,8 @@ ParticleCloud latticeBlock(int n, Real dx, int dimension) {
   ParticleCloud cloud("metal");
   const int nz = dimension == 3 ? n : 1;
   cloud.resize(std::size_t(n) * n * nz);
-  auto& mass = cloud.addScalarField("mass");
-  auto& rho = cloud.addScalarField("rho");
+  auto& mass = cloud.addScalarField(field::mass);
+  auto& rho = cloud.addScalarField(field::rho);
   auto& id = cloud.addIdField("id");
   std::size_t k = 0;
   for (int z = 0; z < nz; ++z) {
@@ -94,7 +95,7 @@ ParticleCloud latticeBlock(int n, Real dx, int dimension) {
     }
   }
   cloud.attributes()["spacing"] = dx;
-  cloud.addScalarField("T");
+  cloud.addScalarField(field::T);
   return cloud;
 }
 
@@ -106,7 +107,7 @@ TEST(TemperatureGradient, ExactForALinearFieldUpToTheSurface) {
     ParticleCloud block = latticeBlock(8, 0.01, dimension);
     const Vector slope = dimension == 3 ? Vector(1000, -500, 200) : Vector(1000, -500, 0);
     for (std::size_t i = 0; i < block.size(); ++i) {
-      block.scalarField("T")[i] = 900 + slope.dot(block.positions()[i]);
+      block.scalarField(field::T)[i] = 900 + slope.dot(block.positions()[i]);
     }
     const auto gradient = temperatureGradient(block, 0.03, dimension);
     double worst = 0;
@@ -148,7 +149,7 @@ TEST(ShrinkageCavities, PlantedVoidMeasuredWithinFivePercent) {
       holed.resize(keep.size());
       for (std::size_t k = 0; k < keep.size(); ++k)
         holed.positions()[k] = block.positions()[keep[k]];
-      auto& volume = holed.addScalarField("volume");
+      auto& volume = holed.addScalarField(field::volume);
       std::fill(volume.begin(), volume.end(), Real(dimension == 3 ? dx * dx * dx : dx * dx));
       VoxelOccupancy occupancy(Vector::Zero(), Vector::Constant(n * dx), dx / 2, 3 * dx, dimension);
       occupancy.add(holed, 0);
@@ -198,17 +199,17 @@ TEST(SolidificationMaps, NiyamaAndArmSpacingFromTheRunsHistoryAndTheWrittenGradi
     auto& values = first.addScalarField(field);
     std::fill(values.begin(), values.end(), Real(-1));
   }
-  first.addScalarField("solidFraction");
+  first.addScalarField(field::solidFraction);
   ParticleCloud second = first;
   for (std::size_t i = 0; i < first.size(); ++i) {
-    first.scalarField("T")[i] = 900 + 1000 * first.positions()[i].x();
-    second.scalarField("T")[i] = 850 + 3000 * second.positions()[i].x();
-    second.scalarField("liquidusTime")[i] = Real(0.5);
-    second.scalarField("criticalTime")[i] = Real(1.25);
-    second.scalarField("coolingRate")[i] = 4;
-    second.scalarField("solidusTime")[i] = 2;
+    first.scalarField(field::T)[i] = 900 + 1000 * first.positions()[i].x();
+    second.scalarField(field::T)[i] = 850 + 3000 * second.positions()[i].x();
+    second.scalarField(field::liquidusTime)[i] = Real(0.5);
+    second.scalarField(field::criticalTime)[i] = Real(1.25);
+    second.scalarField(field::coolingRate)[i] = 4;
+    second.scalarField(field::solidusTime)[i] = 2;
   }
-  second.scalarField("criticalTime")[0] = -1;  // one particle not yet at T_c
+  second.scalarField(field::criticalTime)[0] = -1;  // one particle not yet at T_c
   std::vector<std::size_t> reverse(second.size());
   std::iota(reverse.rbegin(), reverse.rend(), std::size_t(0));
   second.reorder(reverse);
@@ -234,19 +235,19 @@ TEST(SolidificationMaps, NiyamaAndArmSpacingFromTheRunsHistoryAndTheWrittenGradi
   std::size_t checked = 0;
   for (std::size_t i = 0; i < result.size(); ++i) {
     if (result.idField("id")[i] == 0) {
-      EXPECT_EQ(result.scalarField("niyama")[i], -1);
-      EXPECT_EQ(result.scalarField("temperatureGradient")[i], -1);
+      EXPECT_EQ(result.scalarField(field::niyama)[i], -1);
+      EXPECT_EQ(result.scalarField(field::temperatureGradient)[i], -1);
       continue;
     }
-    EXPECT_NEAR(result.scalarField("temperatureGradient")[i], 1500, 1e-6);
-    EXPECT_NEAR(result.scalarField("niyama")[i], 0.75, 1e-9);
-    EXPECT_NEAR(result.scalarField("mushyZoneSpacings")[i], 58.2 / (1500 * 0.01), 1e-9);
-    EXPECT_NEAR(result.scalarField("localFreezingTime")[i], 1.5, 1e-12);
-    EXPECT_NEAR(result.scalarField("solidificationTime")[i], 2, 1e-12);
-    EXPECT_NEAR(result.scalarField("secondaryArmSpacing")[i], lambda2, 1e-12);
-    EXPECT_NEAR(result.scalarField("dimensionlessNiyama")[i], ny, 1e-9 * ny);
+    EXPECT_NEAR(result.scalarField(field::temperatureGradient)[i], 1500, 1e-6);
+    EXPECT_NEAR(result.scalarField(field::niyama)[i], 0.75, 1e-9);
+    EXPECT_NEAR(result.scalarField(field::mushyZoneSpacings)[i], 58.2 / (1500 * 0.01), 1e-9);
+    EXPECT_NEAR(result.scalarField(field::localFreezingTime)[i], 1.5, 1e-12);
+    EXPECT_NEAR(result.scalarField(field::solidificationTime)[i], 2, 1e-12);
+    EXPECT_NEAR(result.scalarField(field::secondaryArmSpacing)[i], lambda2, 1e-12);
+    EXPECT_NEAR(result.scalarField(field::dimensionlessNiyama)[i], ny, 1e-9 * ny);
     // the first time's T, by id (the order was reversed since)
-    EXPECT_NEAR(result.scalarField("temperatureAtFillEnd")[i],
+    EXPECT_NEAR(result.scalarField(field::temperatureAtFillEnd)[i],
                 900 + 1000 * result.positions()[i].x(), 1e-9);
     ++checked;
   }
@@ -259,11 +260,11 @@ TEST(TimeSeries, HeatBooksBalanceAcrossTheClouds) {
   ParticleCloud metal = latticeBlock(2, 0.01, 3), mold = latticeBlock(2, 0.01, 3);
   mold = ParticleCloud("mold");
   mold.resize(1);
-  mold.addScalarField("mass")[0] = 1;
-  mold.addScalarField("u")[0] = 5e5;
+  mold.addScalarField(field::mass)[0] = 1;
+  mold.addScalarField(field::u)[0] = 5e5;
   mold.attributes()["internalEnergyAtStart"] = 5e5;
   mold.attributes()["heatLost.fixedTemperature"] = 300;  // taken from the metal, held at 300 K
-  auto& u = metal.addScalarField("u");
+  auto& u = metal.addScalarField(field::u);
   std::fill(u.begin(), u.end(), Real(1e6));
   const double metalEnergy = 8 * 2400 * 1e-6 * 1e6;
   metal.attributes()["internalEnergyAtStart"] = metalEnergy + 300;
@@ -277,8 +278,8 @@ TEST(TimeSeries, HeatBooksBalanceAcrossTheClouds) {
   EXPECT_NEAR(lost, 300, 1e-12);
   EXPECT_NEAR(imbalance, 0, 1e-6);
   // T by mass, f_s by mass, counts
-  auto& T = metal.scalarField("T");
-  auto& fs = metal.addScalarField("solidFraction");
+  auto& T = metal.scalarField(field::T);
+  auto& fs = metal.addScalarField(field::solidFraction);
   for (std::size_t i = 0; i < 8; ++i) {
     T[i] = Real(800 + 10 * i);
     fs[i] = i < 2 ? 1 : 0;
@@ -294,15 +295,15 @@ TEST(TimeSeries, TheReportShowsWhatACloudLacksAsADash) {
   maps.context.clouds = {"metal", "mold"};
   auto analyses = maps.read("history { type timeSeries; }");
   ParticleCloud metal = latticeBlock(2, 0.01, 3);
-  metal.addScalarField("T");
-  metal.addScalarField("solidFraction");
-  metal.addScalarField("u");
-  metal.addVectorField("U");
+  metal.addScalarField(field::T);
+  metal.addScalarField(field::solidFraction);
+  metal.addScalarField(field::u);
+  metal.addVectorField(field::U);
   ParticleCloud mold = latticeBlock(2, 0.01, 3);
   mold = ParticleCloud("mold");
   mold.resize(2);
-  for (Real& m : mold.addScalarField("mass")) m = 1;
-  for (Real& T : mold.addScalarField("T")) T = 300;
+  for (Real& m : mold.addScalarField(field::mass)) m = 1;
+  for (Real& T : mold.addScalarField(field::T)) T = 300;
   for (int t = 1; t <= 2; ++t) {
     WrittenTime time;
     time.folder = {double(t), std::to_string(t)};
@@ -325,7 +326,7 @@ TEST(HotSpots, APocketCutOffFromTheFeedingPathIsFollowedUntilItFreezes) {
   const Real dx = 0.01;
   ParticleCloud block = latticeBlock(8, dx, 3);
   block.attributes()["spacing"] = dx;
-  auto& fs = block.addScalarField("solidFraction");
+  auto& fs = block.addScalarField(field::solidFraction);
   const auto at = [&](int t) {
     for (std::size_t i = 0; i < block.size(); ++i) {
       const Vector x = block.positions()[i] / dx;                        // (k + 0.5)

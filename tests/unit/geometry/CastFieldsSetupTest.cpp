@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "core/dictionary/SourceLocation.h"
+#include "particles/FieldNames.h"
 #include "support/TemporaryCase.h"
 
 namespace sphcast {
@@ -66,11 +67,11 @@ TEST(CastFieldsSetup, SetFieldsWorksOnTheCloudsItIsGivenAndNamesTheMissingOnes) 
           "min (0.5 -1 -1); max (3 1 1); } } }\n}\n");
   const auto clouds = buildCastClouds(CaseDescription(CaseFolder(folder.root())), {mold});
   ASSERT_EQ(clouds.size(), 1u);
-  const auto& temperature = clouds[0].scalarField("T");
+  const auto& temperature = clouds[0].scalarField(field::T);
   EXPECT_EQ(temperature[0], 0.0);
   EXPECT_EQ(temperature[1], 300.0);
   EXPECT_EQ(temperature[2], 300.0);
-  EXPECT_FALSE(mold.hasScalarField("T"));  // the cloud handed in is left as it was
+  EXPECT_FALSE(mold.hasScalarField(field::T));  // the cloud handed in is left as it was
 
   // A density model is for new clouds; an existing one takes a number.
   folder.write(
@@ -126,7 +127,7 @@ TEST(CastFieldsSetup, TwoDimensionalCloudsHaveTheAreaOfTheirCellAsVolume) {
   ASSERT_EQ(clouds.size(), 1u);
   EXPECT_EQ(clouds[0].size(), 200u);
   for (std::size_t i = 0; i < clouds[0].size(); ++i) {
-    EXPECT_DOUBLE_EQ(double(clouds[0].scalarField("volume")[i]), 1e-4);  // dx^2
+    EXPECT_DOUBLE_EQ(double(clouds[0].scalarField(field::volume)[i]), 1e-4);  // dx^2
     EXPECT_EQ(clouds[0].positions()[i].z(), 0);
   }
 }
@@ -288,7 +289,7 @@ TEST(CastFieldsSetup, TheCloudsMaterialComesFromPhysicsModelsWhenTheDictNamesNon
                    "max (0.02 0.02 0.02); } } fields { rho standard; } } }\n");
   const ParticleCloud metal = buildCastClouds(CaseDescription(CaseFolder(folder.root())), {}).at(0);
   ASSERT_EQ(metal.size(), 8u);
-  for (const Real rho : metal.scalarField("rho")) EXPECT_EQ(rho, Real(2500));
+  for (const Real rho : metal.scalarField(field::rho)) EXPECT_EQ(rho, Real(2500));
 
   // the two files naming different materials is an error naming both places
   folder.write("system/setCastFieldsDict",

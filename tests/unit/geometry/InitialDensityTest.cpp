@@ -9,6 +9,7 @@
 #include "geometry/CastFieldsSetup.h"
 #include "geometry/InitialDensity.h"
 #include "materials/TemperatureTable.h"
+#include "particles/FieldNames.h"
 #include "support/TemporaryCase.h"
 
 namespace sphcast {
@@ -131,7 +132,7 @@ TEST(InitialDensity, HydrostaticColumnStartsWithThePressureOfItsWeight) {
   const double g = 9.81, c = 20.0, rhoS = 2400.0, height = 0.2, dx = 0.005;
   const ParticleCloud metal = ColumnCase("hydrostatic").metal();
   ASSERT_EQ(metal.size(), 10u * 10u * 40u);
-  const auto& rho = metal.scalarField("rho");
+  const auto& rho = metal.scalarField(field::rho);
   // rho of the formula: rho_s (1 + |g| d / c^2), d = H - z (the top layer sits at H - dx/2).
   for (std::size_t i = 0; i < metal.size(); ++i) {
     const double depth = height - static_cast<double>(metal.positions()[i].z());
@@ -170,15 +171,16 @@ TEST(InitialDensity, HydrostaticColumnStartsWithThePressureOfItsWeight) {
 TEST(InitialDensity, StandardAndHydrostaticUseRhoSAtTheInitialTemperature) {
   const std::string table = "table ((300 2700) (900 2400) (1000 2350))";
   const ParticleCloud standard = ColumnCase("standard", table, "950").metal();
-  for (const Real r : standard.scalarField("rho")) EXPECT_DOUBLE_EQ(r, 2375.0);
+  for (const Real r : standard.scalarField(field::rho)) EXPECT_DOUBLE_EQ(r, 2375.0);
   const ParticleCloud hydrostatic = ColumnCase("hydrostatic", table, "950").metal();
   for (std::size_t i = 0; i < hydrostatic.size(); ++i) {
     const double depth = 0.2 - static_cast<double>(hydrostatic.positions()[i].z());
-    EXPECT_NEAR(hydrostatic.scalarField("rho")[i], 2375.0 * (1.0 + 9.81 * depth / 400.0), 1e-9);
+    EXPECT_NEAR(hydrostatic.scalarField(field::rho)[i], 2375.0 * (1.0 + 9.81 * depth / 400.0),
+                1e-9);
   }
   // A number keeps working and is written as given.
   const ParticleCloud given = ColumnCase("2500").metal();
-  for (const Real r : given.scalarField("rho")) EXPECT_EQ(r, 2500.0);
+  for (const Real r : given.scalarField(field::rho)) EXPECT_EQ(r, 2500.0);
 }
 
 TEST(InitialDensity, MistakesNameTheFileLineAndKey) {

@@ -9,6 +9,7 @@
 #include "core/Error.h"
 #include "geometry/GmshGeometry.h"
 #include "geometry/MoldParticleization.h"
+#include "particles/FieldNames.h"
 #include "support/TemporaryCase.h"
 
 namespace sphcast {
@@ -89,12 +90,13 @@ void expectSameParticles(const ParticleCloud& a, const ParticleCloud& b) {
       }
     }
     worstPosition = std::max(worstPosition, nearest);
-    worstDistance = std::max(worstDistance, std::abs(a.scalarField("wallDistance")[i] -
-                                                     b.scalarField("wallDistance")[match]));
+    worstDistance = std::max(worstDistance, std::abs(a.scalarField(field::wallDistance)[i] -
+                                                     b.scalarField(field::wallDistance)[match]));
     worstNormal =
-        std::max(worstNormal, (a.vectorField("normal")[i] - b.vectorField("normal")[match]).norm());
-    worstVolume = std::max(worstVolume,
-                           std::abs(a.scalarField("volume")[i] - b.scalarField("volume")[match]));
+        std::max(worstNormal,
+                 (a.vectorField(field::normal)[i] - b.vectorField(field::normal)[match]).norm());
+    worstVolume = std::max(worstVolume, std::abs(a.scalarField(field::volume)[i] -
+                                                 b.scalarField(field::volume)[match]));
   }
   // Node coordinates go through the file in 16 significant digits: the same to round-off.
   EXPECT_LT(worstPosition, 1e-9 * dx);

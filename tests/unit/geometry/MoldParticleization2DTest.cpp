@@ -13,6 +13,7 @@
 
 #include "core/Error.h"
 #include "geometry/MoldParticleization.h"
+#include "particles/FieldNames.h"
 #include "support/TemporaryCase.h"
 
 namespace sphcast {
@@ -111,9 +112,9 @@ TEST(MoldParticleization2D, TankWallsAreTheLatticeWithClosedCorners) {
   const ParticleCloud& cloud = mold.clouds[0];
   // floor 20 x 3, sides 2 x 10 x 3, two corner squares 3 x 3
   EXPECT_EQ(cloud.size(), 20u * 3 + 2 * 10 * 3 + 2 * 9);
-  const auto& normal = cloud.vectorField("normal");
-  const auto& wallDistance = cloud.scalarField("wallDistance");
-  const auto& volume = cloud.scalarField("volume");
+  const auto& normal = cloud.vectorField(field::normal);
+  const auto& wallDistance = cloud.scalarField(field::wallDistance);
+  const auto& volume = cloud.scalarField(field::volume);
   for (std::size_t i = 0; i < cloud.size(); ++i) {
     const Eigen::Vector3d p = cloud.positions()[i].cast<double>();
     SCOPED_TRACE("particle at (" + std::to_string(p.x()) + ", " + std::to_string(p.y()) + ")");
@@ -149,9 +150,9 @@ TEST(MoldParticleization2D, CircleLayersFollowTheCurveAtArcLengthSpacing) {
                 "Physical Curve(\"walls\") = {1, 2, 3, 4};\nPhysical Surface(\"cavity\") = {1};\n"),
       moldDict2D(dx, layers, shellPatch("walls")));
   const ParticleCloud& cloud = mold.clouds[0];
-  const auto& normal = cloud.vectorField("normal");
-  const auto& wallDistance = cloud.scalarField("wallDistance");
-  const auto& volume = cloud.scalarField("volume");
+  const auto& normal = cloud.vectorField(field::normal);
+  const auto& wallDistance = cloud.scalarField(field::wallDistance);
+  const auto& volume = cloud.scalarField(field::volume);
   std::size_t expected = 0;
   double ringArea = 0.0;
   for (int k = 0; k < layers; ++k) {
@@ -269,9 +270,9 @@ TEST(MoldParticleization2D, SlantedCornersAreClosedWithoutCrowding) {
   EXPECT_GE(closest, 0.5 * dx);
   EXPECT_LE(hole, dx);
   for (std::size_t i = 0; i < cloud.size(); ++i) {
-    EXPECT_NEAR(cloud.vectorField("normal")[i].norm(), 1.0, 1e-12);
-    EXPECT_GT(cloud.scalarField("wallDistance")[i], 0.0);
-    EXPECT_LT(cloud.scalarField("wallDistance")[i], band);
+    EXPECT_NEAR(cloud.vectorField(field::normal)[i].norm(), 1.0, 1e-12);
+    EXPECT_GT(cloud.scalarField(field::wallDistance)[i], 0.0);
+    EXPECT_LT(cloud.scalarField(field::wallDistance)[i], band);
   }
 }
 
@@ -284,10 +285,10 @@ TEST(MoldParticleization2D, VolumeModeFillsADiskWithItsArea) {
   EXPECT_NEAR(double(cloud.size()) * dx * dx / area, 1.0, 0.02);
   double volumeSum = 0.0;
   for (std::size_t i = 0; i < cloud.size(); ++i) {
-    volumeSum += double(cloud.scalarField("volume")[i]);
+    volumeSum += double(cloud.scalarField(field::volume)[i]);
     const Eigen::Vector3d p = cloud.positions()[i].cast<double>();
     EXPECT_LT(p.norm(), radius);
-    EXPECT_NEAR(double(cloud.scalarField("wallDistance")[i]), radius - p.norm(), 1e-4 * dx);
+    EXPECT_NEAR(double(cloud.scalarField(field::wallDistance)[i]), radius - p.norm(), 1e-4 * dx);
   }
   EXPECT_NEAR(volumeSum / area, 1.0, 1e-4);  // the area shared among the particles
 }
@@ -343,7 +344,7 @@ TEST(MoldParticleization2D, MshCurvesGiveTheParticlesOfTheGeo) {
   for (std::size_t i = 0; i < circle.size(); ++i) {
     const double depth = double(circle.positions()[i].norm()) - radius;
     EXPECT_NEAR(depth / smallDx - 0.5, std::round(depth / smallDx - 0.5), 1e-3);
-    EXPECT_NEAR(double(circle.scalarField("wallDistance")[i]), depth, 1e-3 * smallDx);
+    EXPECT_NEAR(double(circle.scalarField(field::wallDistance)[i]), depth, 1e-3 * smallDx);
   }
 }
 

@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "geometry/MoldParticleization.h"
+#include "particles/FieldNames.h"
 #include "support/TemporaryCase.h"
 
 namespace sphcast {
@@ -92,14 +93,15 @@ TEST_P(RotatedBox, ShellIsTheFacesOwnLatticeWithExactDistancesAndNormals) {
     const double distance = (closest - local).norm();
     const Eigen::Vector3d exactNormal = rotation * (closest - local) / distance;
     worstDistance =
-        std::max(worstDistance, std::abs(cloud.scalarField("wallDistance")[i] - distance));
-    worstNormal =
-        std::max(worstNormal, (cloud.vectorField("normal")[i].cast<double>() - exactNormal).norm());
+        std::max(worstDistance, std::abs(cloud.scalarField(field::wallDistance)[i] - distance));
+    worstNormal = std::max(
+        worstNormal, (cloud.vectorField(field::normal)[i].cast<double>() - exactNormal).norm());
     Eigen::Index axis = 0;
     if ((closest - local).cwiseAbs().maxCoeff(&axis) > distance - 1e-9 * dx) {  // behind a face
       const double layer = distance / dx - 0.5;
       worstLayer = std::max(worstLayer, std::abs(layer - std::round(layer)));
-      worstVolume = std::max(worstVolume, std::abs(cloud.scalarField("volume")[i] - dx * dx * dx));
+      worstVolume =
+          std::max(worstVolume, std::abs(cloud.scalarField(field::volume)[i] - dx * dx * dx));
       behindFaces.push_back({local, static_cast<int>(axis) * 2 + (local[axis] > 0.0 ? 1 : 0),
                              static_cast<int>(std::lround(layer))});
     }
@@ -232,9 +234,10 @@ TEST(TiltedCylinder, FlatBottomIsASquareLatticeOfItsOwn) {
     const Eigen::Vector3d& p = positions[i];
     const double along = p.dot(axis);
     if (along >= 0.0 || (p - along * axis).norm() > radius) continue;
-    worstDistance = std::max(worstDistance, std::abs(cloud.scalarField("wallDistance")[i] + along));
+    worstDistance =
+        std::max(worstDistance, std::abs(cloud.scalarField(field::wallDistance)[i] + along));
     worstNormal =
-        std::max(worstNormal, (cloud.vectorField("normal")[i].cast<double>() - axis).norm());
+        std::max(worstNormal, (cloud.vectorField(field::normal)[i].cast<double>() - axis).norm());
     const double layer = -along / dx - 0.5;
     EXPECT_NEAR(layer, std::round(layer), 1e-6);
     if (std::round(layer) == 0.0) bottom.push_back(p);

@@ -12,6 +12,7 @@
 
 #include "geometry/CastFieldsSetup.h"
 #include "geometry/MoldParticleization.h"
+#include "particles/FieldNames.h"
 #include "support/TemporaryCase.h"
 
 namespace sphcast {
@@ -40,7 +41,7 @@ class ConeMold {
     mold_ = particleizeMold(CaseFolder(folder_.root())).clouds;
     const ParticleCloud& walls = mold_.at(0);
     walls_.positions = walls.positions();
-    walls_.volumes = walls.scalarField("volume");
+    walls_.volumes = walls.scalarField(field::volume);
   }
 
   // The metal filling the cone up to fillHeight, relaxed `iterations` times.

@@ -15,6 +15,7 @@
 
 #include "core/dictionary/Dictionary.h"
 #include "inlets/PouringInlet.h"
+#include "particles/FieldNames.h"
 #include "particles/Neighbourhood.h"
 #include "sph/WeaklyCompressibleFlow.h"
 
@@ -26,7 +27,7 @@ const Real density = 1000;
 
 ParticleCloud emptyFluid() {
   ParticleCloud fluid("metal");
-  fluid.addVectorField("U");
+  fluid.addVectorField(field::U);
   for (const char* name : {"rho", "mass", "viscosity", "restDensity"}) fluid.addScalarField(name);
   fluid.addIdField("id");
   fluid.attributes()["spacing"] = dx;
@@ -74,7 +75,7 @@ StreamResult pour(int dimension, const PouringInletSettings& settings, double du
     model.computeRatesAndKick(dt);
     inlet.holdBuffer();
     const auto& x = fluid.positions();
-    const auto& rhoField = fluid.scalarField("rho");
+    const auto& rhoField = fluid.scalarField(field::rho);
     for (std::size_t i = 0; i < x.size(); ++i) {
       const double deviation = std::abs(rhoField[i] / density - 1);
       result.largestDensityDeviation = std::max(result.largestDensityDeviation, deviation);
@@ -91,7 +92,7 @@ StreamResult pour(int dimension, const PouringInletSettings& settings, double du
   }
   // the buffer's particles sit on the lattice: each one's nearest buffer neighbour is dx away
   const auto& x = fluid.positions();
-  const auto& mark = fluid.scalarField("inlet");
+  const auto& mark = fluid.scalarField(field::inlet);
   for (std::size_t i = 0; i < x.size(); ++i) {
     if (mark[i] == 0) continue;
     double nearest = std::numeric_limits<double>::max();
@@ -102,7 +103,7 @@ StreamResult pour(int dimension, const PouringInletSettings& settings, double du
   }
   result.emittedMass = inlet.emittedMass();
   double mass = 0;
-  for (const Real m : fluid.scalarField("mass")) mass += m;
+  for (const Real m : fluid.scalarField(field::mass)) mass += m;
   EXPECT_NEAR(mass, inlet.emittedMass(), 1e-12);
   result.massRate = inlet.massRate();
   result.layerMass = static_cast<double>(inlet.particlesPerLayer()) * inlet.particleMass();

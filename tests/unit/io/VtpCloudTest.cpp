@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "core/Error.h"
+#include "particles/FieldNames.h"
 
 namespace sphcast {
 namespace {
@@ -42,9 +43,9 @@ ParticleCloud randomCloud(std::size_t count, unsigned seed) {
   };
   ParticleCloud cloud("metal");
   cloud.resize(count);
-  auto& temperature = cloud.addScalarField("T");
-  auto& pressure = cloud.addScalarField("p");  // any sign (rho, mass, ... must be positive)
-  auto& velocity = cloud.addVectorField("U");
+  auto& temperature = cloud.addScalarField(field::T);
+  auto& pressure = cloud.addScalarField(field::p);  // any sign (rho, mass, ... must be positive)
+  auto& velocity = cloud.addVectorField(field::U);
   auto& force = cloud.addVectorField("force");
   auto& id = cloud.addIdField("id");
   auto& origin = cloud.addIdField("origin");
@@ -109,8 +110,8 @@ TEST_F(VtpCloudTest, WriteThenReadIsBitExact) {
   EXPECT_TRUE(read.identicalTo(cloud));
   expectAttributesBitwiseEqual(cloud, read);
   EXPECT_TRUE(std::signbit(read.positions()[0].y()));  // -0.0 kept
-  EXPECT_EQ(read.scalarField("T")[2], std::numeric_limits<Real>::max());
-  EXPECT_EQ(read.scalarField("p")[2], std::numeric_limits<Real>::lowest());
+  EXPECT_EQ(read.scalarField(field::T)[2], std::numeric_limits<Real>::max());
+  EXPECT_EQ(read.scalarField(field::p)[2], std::numeric_limits<Real>::lowest());
 }
 
 // A NaN or infinity in a start time's cloud, or a zero or negative mass, density, viscosity or
@@ -135,10 +136,10 @@ TEST_F(VtpCloudTest, NonFiniteOrNonPositiveValuesAreRefusedNamingFileCloudFieldA
   cloud.positions()[13].z() = nan;
   expectRefused(cloud, "the position of particle 13 is nan");
   cloud = randomCloud(20, 9);
-  cloud.scalarField("T")[7] = -inf;
+  cloud.scalarField(field::T)[7] = -inf;
   expectRefused(cloud, "field 'T' of particle 7 is -inf");
   cloud = randomCloud(20, 9);
-  cloud.vectorField("U")[19].y() = inf;
+  cloud.vectorField(field::U)[19].y() = inf;
   expectRefused(cloud, "field 'U' of particle 19 is inf");
 
   // A cloud the flow would divide by zero with (mass, rho, viscosity) or weigh wrongly (volume).
@@ -167,9 +168,9 @@ TEST_F(VtpCloudTest, ReadKeepsFieldKinds) {
   const fs::path file = folder_ / "metal.vtp";
   writeCloudVtp(randomCloud(10, 1), file);
   const ParticleCloud read = readCloudVtp(file, "metal");
-  EXPECT_TRUE(read.hasScalarField("T"));
-  EXPECT_TRUE(read.hasScalarField("p"));
-  EXPECT_TRUE(read.hasVectorField("U"));
+  EXPECT_TRUE(read.hasScalarField(field::T));
+  EXPECT_TRUE(read.hasScalarField(field::p));
+  EXPECT_TRUE(read.hasVectorField(field::U));
   EXPECT_TRUE(read.hasVectorField("force"));
   EXPECT_TRUE(read.hasIdField("id"));
   EXPECT_TRUE(read.hasIdField("origin"));
@@ -180,8 +181,8 @@ TEST_F(VtpCloudTest, ReadKeepsFieldKinds) {
 
 TEST_F(VtpCloudTest, EmptyCloudRoundTrips) {
   ParticleCloud cloud("mold");
-  cloud.addScalarField("T");
-  cloud.addVectorField("U");
+  cloud.addScalarField(field::T);
+  cloud.addVectorField(field::U);
   cloud.addIdField("id");
   cloud.attributes()["spacing"] = 0.001;
   const fs::path file = folder_ / "mold.vtp";

@@ -38,6 +38,7 @@
 #include "io/PvtpCloud.h"
 #include "io/TimeFolders.h"
 #include "io/VtpCloud.h"
+#include "particles/FieldNames.h"
 #include "post/FunctionObject.h"
 #include "sph/FlowTestCases.h"
 
@@ -119,14 +120,15 @@ Difference compare(const fs::path& serialCase, const fs::path& otherCase, const 
       break;
     }
     const std::size_t j = found->second;
-    difference.sameParticles = a[0].scalarField("mass")[i] == b[0].scalarField("mass")[j];
+    difference.sameParticles = a[0].scalarField(field::mass)[i] == b[0].scalarField(field::mass)[j];
     difference.positions =
         std::max(difference.positions,
                  static_cast<double>(
                      (a[0].positions()[i] - b[0].positions()[j]).cwiseAbs().maxCoeff() / dx));
-    difference.densities = std::max(
-        difference.densities,
-        std::abs(static_cast<double>(b[0].scalarField("rho")[j] / a[0].scalarField("rho")[i]) - 1));
+    difference.densities = std::max(difference.densities,
+                                    std::abs(static_cast<double>(b[0].scalarField(field::rho)[j] /
+                                                                 a[0].scalarField(field::rho)[i]) -
+                                             1));
   }
   return difference;
 }
@@ -162,7 +164,7 @@ constexpr Real pourDx = 0.004;
 // A heat case's cloud: ids 0, 1, ..., every particle at T, the spacing pourDx.
 void addIdsAndTemperature(ParticleCloud& cloud, Real temperature) {
   auto& id = cloud.addIdField("id");
-  auto& T = cloud.addScalarField("T");
+  auto& T = cloud.addScalarField(field::T);
   for (std::size_t i = 0; i < cloud.size(); ++i) {
     id[i] = static_cast<std::int64_t>(i);
     T[i] = temperature;
@@ -274,7 +276,7 @@ void writeFreezingCornerCase(const fs::path& root, int ranks) {
       [](int column, int) { return (Real(column - 120) + Real(0.5)) * pourDx; });
   const std::pair<ParticleCloud*, Real> clouds[] = {{&metal, 870}, {&mold, 500}, {&chill, 300}};
   for (const auto& [cloud, temperature] : clouds) addIdsAndTemperature(*cloud, temperature);
-  for (std::size_t i = 0; i < 6; ++i) metal.scalarField("T")[i] = 845;  // the bottom row
+  for (std::size_t i = 0; i < 6; ++i) metal.scalarField(field::T)[i] = 845;  // the bottom row
   fs::create_directories(root / "0");
   writeCloudVtp(metal, root / "0/metal.vtp");
   writeCloudVtp(mold, root / "0/mold.vtp");
@@ -341,9 +343,9 @@ CloudDifference compareCloud(const fs::path& serialCase, const fs::path& otherCa
     difference.positions = std::max(
         difference.positions,
         static_cast<double>((a.positions()[i] - b.positions()[j]).cwiseAbs().maxCoeff() / spacing));
-    difference.temperatures =
-        std::max(difference.temperatures,
-                 std::abs(static_cast<double>(a.scalarField("T")[i] - b.scalarField("T")[j])));
+    difference.temperatures = std::max(
+        difference.temperatures,
+        std::abs(static_cast<double>(a.scalarField(field::T)[i] - b.scalarField(field::T)[j])));
   }
   return difference;
 }
@@ -545,7 +547,8 @@ TEST(ParallelSolverTest, APieceByPieceStartOnMoreRanksThanPiecesGivesEachParticl
   const ParticleCloud& read = clouds.front();
   EXPECT_EQ(read.name(), "metal");
   EXPECT_EQ(read.attributes(), metal.attributes());  // also where no piece was read
-  EXPECT_TRUE(read.hasVectorField("U") && read.hasScalarField("rho") && read.hasIdField("id"));
+  EXPECT_TRUE(read.hasVectorField(field::U) && read.hasScalarField(field::rho) &&
+              read.hasIdField("id"));
   // (1 rank reads both pieces; 2 and 4 ranks one piece on ranks 0 and 1)
   const std::size_t expected = world.size() == 1 ? 200 : world.rank() < pieces ? 100 : 0;
   EXPECT_EQ(read.size(), expected) << "rank " << world.rank();

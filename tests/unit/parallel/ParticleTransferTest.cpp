@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "core/Error.h"
+#include "particles/FieldNames.h"
 #include "particles/Neighbourhood.h"
 #include "particles/WendlandKernel.h"
 
@@ -25,10 +26,10 @@ constexpr Real radius = 2.6;  // the kernel's support, in spacings (the flow's h
 // each particle's id, and a velocity; `first`, `stride`: this rank's share of the ids.
 ParticleCloud block(std::size_t first, std::size_t stride) {
   ParticleCloud cloud("metal");
-  auto& mass = cloud.addScalarField("mass");
-  auto& velocity = cloud.addVectorField("U");
+  auto& mass = cloud.addScalarField(field::mass);
+  auto& velocity = cloud.addVectorField(field::U);
   auto& id = cloud.addIdField("id");
-  cloud.addScalarField("rho");
+  cloud.addScalarField(field::rho);
   std::mt19937 random(3);
   std::uniform_real_distribution<Real> shake(-0.2, 0.2);
   std::size_t n = 0;
@@ -71,8 +72,8 @@ std::vector<std::int64_t> neighbourIds(const ParticleCloud& cloud, const Neighbo
 void densityPass(ParticleCloud& cloud, const NeighbourList& list, std::size_t count,
                  const PeriodicBox& box) {
   const WendlandC2Kernel<3> kernel(radius);
-  auto& rho = cloud.scalarField("rho");
-  const auto& m = cloud.scalarField("mass");
+  auto& rho = cloud.scalarField(field::rho);
+  const auto& m = cloud.scalarField(field::mass);
   const auto& x = cloud.positions();
   for (std::size_t i = 0; i < count; ++i) {
     Real sum = m[i] * kernel.value(0);
@@ -86,8 +87,8 @@ void densityPass(ParticleCloud& cloud, const NeighbourList& list, std::size_t co
 std::vector<Real> shepardPass(const ParticleCloud& cloud, const NeighbourList& list,
                               std::size_t count, const PeriodicBox& box) {
   const WendlandC2Kernel<3> kernel(radius);
-  const auto& rho = cloud.scalarField("rho");
-  const auto& m = cloud.scalarField("mass");
+  const auto& rho = cloud.scalarField(field::rho);
+  const auto& m = cloud.scalarField(field::mass);
   const auto& x = cloud.positions();
   std::vector<Real> phi(count);
   for (std::size_t i = 0; i < count; ++i) {
@@ -115,9 +116,10 @@ TEST(ParticleTransferTest, MigrationSendsEveryParticleToItsOwnerWithItsFields) {
     EXPECT_EQ(rcb.owner(cloud.positions()[i]), world.rank()) << "particle " << i;
     const auto n = cloud.idField("id")[i];
     ++seen[static_cast<std::size_t>(n)];
-    fieldsFollow = fieldsFollow &&
-                   cloud.scalarField("mass")[i] == Real(1) + Real(1e-3) * static_cast<Real>(n) &&
-                   cloud.vectorField("U")[i] == Vector(Real(n), -Real(n), Real(0.5));
+    fieldsFollow =
+        fieldsFollow &&
+        cloud.scalarField(field::mass)[i] == Real(1) + Real(1e-3) * static_cast<Real>(n) &&
+        cloud.vectorField(field::U)[i] == Vector(Real(n), -Real(n), Real(0.5));
   }
   EXPECT_TRUE(fieldsFollow);
   world.sum(seen);
@@ -167,7 +169,7 @@ void expectSerialNeighboursAndSums(const PeriodicBox& box) {
   for (std::size_t i = halo.ownedCount(); i < cloud.size(); ++i) {
     const auto n = static_cast<std::size_t>(cloud.idField("id")[i]);
     copiesTrue = copiesTrue && cloud.positions()[i] == serial.positions()[n] &&
-                 cloud.scalarField("mass")[i] == serial.scalarField("mass")[n];
+                 cloud.scalarField(field::mass)[i] == serial.scalarField(field::mass)[n];
   }
   EXPECT_TRUE(copiesTrue);
 
@@ -180,8 +182,9 @@ void expectSerialNeighboursAndSums(const PeriodicBox& box) {
   double worstRho = 0, worstPhi = 0, worstStale = 0;
   for (std::size_t i = 0; i < halo.ownedCount(); ++i) {
     const auto n = static_cast<std::size_t>(cloud.idField("id")[i]);
-    const auto& rho = serial.scalarField("rho");
-    worstRho = std::max(worstRho, std::abs(double(cloud.scalarField("rho")[i] - rho[n]) / rho[n]));
+    const auto& rho = serial.scalarField(field::rho);
+    worstRho =
+        std::max(worstRho, std::abs(double(cloud.scalarField(field::rho)[i] - rho[n]) / rho[n]));
     worstPhi = std::max(worstPhi, std::abs(double(phi[i] - serialPhi[n]) / serialPhi[n]));
     worstStale = std::max(worstStale, std::abs(double(stalePhi[i] - serialPhi[n]) / serialPhi[n]));
   }
@@ -216,7 +219,7 @@ TEST(ParticleTransferTest, RefreshFollowsTheOwnersAfterTheyMove) {
   const ParticleCloud reference = block(0, 1);
   for (std::size_t i = 0; i < halo.ownedCount(); ++i) {
     cloud.positions()[i] += displaced(cloud.idField("id")[i]);
-    cloud.vectorField("U")[i] *= 2;
+    cloud.vectorField(field::U)[i] *= 2;
   }
   halo.refresh(cloud, world);
   bool followed = true;
@@ -225,7 +228,7 @@ TEST(ParticleTransferTest, RefreshFollowsTheOwnersAfterTheyMove) {
     followed = followed &&
                cloud.positions()[i] ==
                    Vector(reference.positions()[static_cast<std::size_t>(n)] + displaced(n)) &&
-               cloud.vectorField("U")[i] == Vector(2 * Real(n), -2 * Real(n), Real(1));
+               cloud.vectorField(field::U)[i] == Vector(2 * Real(n), -2 * Real(n), Real(1));
   }
   EXPECT_TRUE(followed);
   halo.remove(cloud);
@@ -252,8 +255,8 @@ TEST(ParticleTransferTest, ALayoutGivesTheCloudsNameAttributesAndFieldsWithoutPa
   EXPECT_EQ(empty.name(), "metal");
   EXPECT_EQ(empty.size(), 0u);
   EXPECT_EQ(empty.attributes(), cloud.attributes());  // bit for bit
-  EXPECT_TRUE(empty.hasScalarField("mass") && empty.hasScalarField("rho"));
-  EXPECT_TRUE(empty.hasVectorField("U") && empty.hasIdField("id"));
+  EXPECT_TRUE(empty.hasScalarField(field::mass) && empty.hasScalarField(field::rho));
+  EXPECT_TRUE(empty.hasVectorField(field::U) && empty.hasIdField("id"));
   EXPECT_EQ(empty.scalarFields().size(), 2u);
   // it takes the packed cloud's particles (the same fields)
   ParticleCloud receiver = unpackLayout(packLayout(cloud));
@@ -279,7 +282,7 @@ TEST(ParticleTransferTest, ACloudReadOnRankZeroReachesEveryRankWhole) {
       world);
   EXPECT_EQ(reads, world.master() ? 1 : 0);
   EXPECT_EQ(cloud.size(), world.master() ? 4608u : 0u);
-  EXPECT_TRUE(cloud.hasVectorField("U") && cloud.hasIdField("id"));
+  EXPECT_TRUE(cloud.hasVectorField(field::U) && cloud.hasIdField("id"));
   const auto rcb = decompose(cloud, world);
   migrateParticles(cloud, rcb, world);
   EXPECT_EQ(world.sum(static_cast<std::int64_t>(cloud.size())), 4608);
@@ -303,15 +306,15 @@ TEST(ParticleTransferTest, AMessageForOtherFieldsIsAnError) {
   ParticleCloud sender("metal"), receiver("metal");
   sender.resize(3);
   receiver.resize(2);
-  sender.addScalarField("T");
-  receiver.addScalarField("rho");
+  sender.addScalarField(field::T);
+  receiver.addScalarField(field::rho);
   std::vector<char> buffer;
   packParticles(sender, {0, 2}, buffer);
   EXPECT_THROW(unpackParticles(buffer, receiver), Error);
-  receiver.addScalarField("T");
+  receiver.addScalarField(field::T);
   EXPECT_THROW(unpackParticles(buffer, receiver), Error);  // still one field more
   ParticleCloud same("metal");
-  same.addScalarField("T");
+  same.addScalarField(field::T);
   unpackParticles(buffer, same);
   EXPECT_EQ(same.size(), 2u);
   buffer.pop_back();

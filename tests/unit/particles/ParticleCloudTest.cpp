@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "core/Error.h"
+#include "particles/FieldNames.h"
 
 namespace sphcast {
 namespace {
@@ -10,8 +11,8 @@ namespace {
 ParticleCloud threeParticles() {
   ParticleCloud cloud("metal");
   cloud.resize(3);
-  auto& temperature = cloud.addScalarField("T");
-  auto& velocity = cloud.addVectorField("U");
+  auto& temperature = cloud.addScalarField(field::T);
+  auto& velocity = cloud.addVectorField(field::U);
   auto& id = cloud.addIdField("id");
   for (std::size_t i = 0; i < 3; ++i) {
     cloud.positions()[i] = Vector(Real(i), 0, 0);
@@ -26,8 +27,8 @@ TEST(ParticleCloud, ReorderMovesEveryFieldTogether) {
   ParticleCloud cloud = threeParticles();
   cloud.reorder({2, 0, 1});
   EXPECT_EQ(cloud.positions()[0].x(), 2);
-  EXPECT_EQ(cloud.scalarField("T")[0], 902);
-  EXPECT_EQ(cloud.vectorField("U")[1].y(), 0);
+  EXPECT_EQ(cloud.scalarField(field::T)[0], 902);
+  EXPECT_EQ(cloud.vectorField(field::U)[1].y(), 0);
   EXPECT_EQ(cloud.idField("id")[2], 11);
   EXPECT_THROW(cloud.reorder({0, 1}), Error);
 }
@@ -36,26 +37,28 @@ TEST(ParticleCloud, ResizeGrowsEveryFieldWithZeros) {
   ParticleCloud cloud = threeParticles();
   cloud.resize(5);
   EXPECT_EQ(cloud.size(), 5u);
-  EXPECT_EQ(cloud.scalarField("T").size(), 5u);
-  EXPECT_EQ(cloud.scalarField("T")[4], 0);
+  EXPECT_EQ(cloud.scalarField(field::T).size(), 5u);
+  EXPECT_EQ(cloud.scalarField(field::T)[4], 0);
   EXPECT_EQ(cloud.idField("id")[4], 0);
 }
 
 TEST(ParticleCloud, MissingFieldErrorListsTheFieldsPresent) {
   const ParticleCloud cloud = threeParticles();
   try {
-    cloud.scalarField("rho");
+    cloud.scalarField(field::rho);
     FAIL() << "no error";
   } catch (const Error& error) {
-    EXPECT_STREQ(error.what(), "cloud 'metal' has no scalar field 'rho'; its fields are (position T U id)");
+    EXPECT_STREQ(error.what(),
+                 "cloud 'metal' has no scalar field 'rho'; its fields are (position T U id)");
   }
 }
 
 TEST(ParticleCloud, ANameServesOneKindOfFieldOnly) {
   ParticleCloud cloud = threeParticles();
-  EXPECT_THROW(cloud.addVectorField("T"), Error);
+  EXPECT_THROW(cloud.addVectorField(field::T), Error);
   EXPECT_THROW(cloud.addScalarField("position"), Error);
-  EXPECT_EQ(&cloud.addScalarField("T"), &cloud.scalarField("T"));  // existing one returned
+  EXPECT_EQ(&cloud.addScalarField(field::T),
+            &cloud.scalarField(field::T));  // existing one returned
 }
 
 TEST(ParticleCloud, AppendNeedsTheSameFields) {
@@ -71,8 +74,8 @@ TEST(ParticleCloud, IdenticalToIsBitwise) {
   ParticleCloud a = threeParticles();
   ParticleCloud b = threeParticles();
   EXPECT_TRUE(a.identicalTo(b));
-  b.scalarField("T")[1] = -0.0;
-  a.scalarField("T")[1] = 0.0;
+  b.scalarField(field::T)[1] = -0.0;
+  a.scalarField(field::T)[1] = 0.0;
   EXPECT_FALSE(a.identicalTo(b));  // -0 == 0 numerically, but not bit for bit
   b = threeParticles();
   b.attributes()["spacing"] = 0.001;

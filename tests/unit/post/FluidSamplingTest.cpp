@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "particles/FieldNames.h"
 #include "post/FluidSampling.h"
 #include "sph/FlowTestCases.h"
 
@@ -17,7 +18,7 @@ constexpr Real h = 3 * dx;
 ParticleCloud linearBlock() {
   auto fluid = testing::fluidBlock2D(30, 30, dx, Vector::Zero(), 1000, 1e-3);
   auto& f = fluid.addScalarField("f");
-  auto& velocity = fluid.vectorField("U");
+  auto& velocity = fluid.vectorField(field::U);
   for (std::size_t i = 0; i < fluid.size(); ++i) {
     const Vector& x = fluid.positions()[i];
     f[i] = 2 + 3 * x.x() - 5 * x.y();
@@ -50,7 +51,7 @@ TEST(ShepardInterpolation, IsExactForALinearFieldWhereTheNeighbourhoodIsSymmetri
     EXPECT_NEAR(interpolation.scalar(f, point), linear(point), 1e-12) << point.transpose();
   }
   const Vector point(0.15, 0.15, 0);
-  const Vector velocity = interpolation.vector(fluid.vectorField("U"), point);
+  const Vector velocity = interpolation.vector(fluid.vectorField(field::U), point);
   EXPECT_NEAR((velocity - Vector(0.15, -0.15, 1)).norm(), 0, 1e-12);
 }
 

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "core/dictionary/Dictionary.h"
+#include "particles/FieldNames.h"
 #include "post/FunctionObject.h"
 #include "sph/FlowTestCases.h"
 #include "support/TemporaryFolder.h"
@@ -36,7 +37,7 @@ class FunctionObjectTest : public testing::TemporaryFolderTest {
   ParticleCloud water_ = [] {
     auto fluid = testing::fluidBlock2D(10, 5, 0.01, Vector::Zero(), 1000, 1e-3);
     fluid.attributes().clear();  // no spacing: heights and front are particle centres
-    auto& p = fluid.addScalarField("p");
+    auto& p = fluid.addScalarField(field::p);
     for (std::size_t i = 0; i < p.size(); ++i) p[i] = 100;
     return fluid;
   }();
@@ -115,10 +116,10 @@ TEST_F(FunctionObjectTest, WritesOpenFoamStyleFilesUnderTheStartTime) {
 }
 
 TEST_F(FunctionObjectTest, FieldMinMaxGivesTheExtremesAndWhereTheyAre) {
-  auto& p = water_.scalarField("p");
+  auto& p = water_.scalarField(field::p);
   p[7] = -5;  // the lowest, at particle 7
   p[23] = 250;
-  water_.vectorField("U")[11] = Vector(3, 4, 0);  // |U| = 5, the rest are at rest
+  water_.vectorField(field::U)[11] = Vector(3, 4, 0);  // |U| = 5, the rest are at rest
   FunctionObjectList list(
       Dictionary::parse("functions { R { type fieldMinMax; cloud fluid; fields (p U); } }",
                         "controlDict"),
@@ -147,8 +148,8 @@ TEST_F(FunctionObjectTest, FieldMinMaxGivesTheExtremesAndWhereTheyAre) {
 // massAverage: sum m f / sum m, here of p with two heavy particles: the mean moves toward them
 // as their mass says; a vector field is an error at its key.
 TEST_F(FunctionObjectTest, MassAverageWeighsByMass) {
-  auto& mass = water_.scalarField("mass");
-  auto& p = water_.scalarField("p");
+  auto& mass = water_.scalarField(field::mass);
+  auto& p = water_.scalarField(field::p);
   for (std::size_t i = 0; i < mass.size(); ++i) mass[i] = 1;
   mass[3] = mass[5] = 10;
   p[3] = p[5] = 1000;  // the rest stay at 100

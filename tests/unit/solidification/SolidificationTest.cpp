@@ -13,6 +13,7 @@
 
 #include "../sph/FlowTestCases.h"
 #include "materials/MaterialLibrary.h"
+#include "particles/FieldNames.h"
 #include "post/FluidSampling.h"
 #include "solidification/Solidification.h"
 #include "sph/WeaklyCompressibleFlow.h"
@@ -37,9 +38,9 @@ TEST(Solidification, SolidFractionIsTheShareOfTheFreezingRangesHeatGivenUp) {
   ParticleCloud metal("metal");
   const std::vector<Real> temperatures{970, 888.64, 873, 848, 839.22, 830.44, 800};
   metal.resize(temperatures.size());
-  metal.addScalarField("T") = temperatures;
-  metal.addScalarField("mass");
-  std::fill(metal.scalarField("mass").begin(), metal.scalarField("mass").end(), Real(1));
+  metal.addScalarField(field::T) = temperatures;
+  metal.addScalarField(field::mass);
+  std::fill(metal.scalarField(field::mass).begin(), metal.scalarField(field::mass).end(), Real(1));
   SolidificationSettings settings;
   settings.frozenSolidFraction = Real(0.5);
   settings.viscosityLimit = 100;
@@ -48,12 +49,17 @@ TEST(Solidification, SolidFractionIsTheShareOfTheFreezingRangesHeatGivenUp) {
 
   const double range = 1.33e6 - 8.44e5;
   // 839.22 K is halfway between 830.44 and 848: u = (8.44e5 + 1.11e6) / 2
-  const std::vector<double> expected{0,    0, (1.33e6 - 1.23e6) / range, (1.33e6 - 1.11e6) / range,
-                                     (1.33e6 - 0.5 * (8.44e5 + 1.11e6)) / range, 1, 1};
-  const auto& fraction = metal.scalarField("solidFraction");
-  const auto& frozen = metal.scalarField("frozen");
-  const auto& restDensity = metal.scalarField("restDensity");
-  const auto& viscosity = metal.scalarField("viscosity");
+  const std::vector<double> expected{0,
+                                     0,
+                                     (1.33e6 - 1.23e6) / range,
+                                     (1.33e6 - 1.11e6) / range,
+                                     (1.33e6 - 0.5 * (8.44e5 + 1.11e6)) / range,
+                                     1,
+                                     1};
+  const auto& fraction = metal.scalarField(field::solidFraction);
+  const auto& frozen = metal.scalarField(field::frozen);
+  const auto& restDensity = metal.scalarField(field::restDensity);
+  const auto& viscosity = metal.scalarField(field::viscosity);
   for (std::size_t i = 0; i < temperatures.size(); ++i) {
     EXPECT_NEAR(fraction[i], expected[i], 1e-9) << "T = " << temperatures[i];
     EXPECT_EQ(frozen[i], expected[i] >= 0.5 ? 1 : 0) << "T = " << temperatures[i];
@@ -72,14 +78,14 @@ TEST(Solidification, SolidFractionIsTheShareOfTheFreezingRangesHeatGivenUp) {
   EXPECT_EQ(solidification.summary().liquid, 2u);
 
   // A frozen particle keeps the rho_s it froze with as it cools on; remelted, it follows T again.
-  metal.scalarField("T")[3] = 820;  // frozen at 848 K above: it was not, so rho_s follows T
-  metal.scalarField("T")[4] = 810;  // frozen at 839.22 K
+  metal.scalarField(field::T)[3] = 820;  // frozen at 848 K above: it was not, so rho_s follows T
+  metal.scalarField(field::T)[4] = 810;  // frozen at 839.22 K
   const Real frozenWith = restDensity[4];
   solidification.update(0.0, 0.0);
   EXPECT_EQ(restDensity[4], frozenWith);
   EXPECT_EQ(frozen[3], 1);
   EXPECT_NEAR(restDensity[3], (*material.density)(820.0), 1e-9);
-  metal.scalarField("T")[4] = 900;
+  metal.scalarField(field::T)[4] = 900;
   solidification.update(0.0, 0.0);
   EXPECT_EQ(frozen[4], 0);
   EXPECT_NEAR(restDensity[4], (*material.density)(900.0), 1e-9);
@@ -96,29 +102,29 @@ TEST(Solidification, RecordsWhenEachParticleCrossesLiquidusCriticalAndSolidus) {
   const InternalEnergyTable& u = *material.internalEnergy;
   ParticleCloud metal("metal");
   metal.resize(1);
-  metal.addScalarField("mass")[0] = 1;
+  metal.addScalarField(field::mass)[0] = 1;
   const Real q = 2.0e4;  // W/kg
-  metal.addScalarField("energyRate")[0] = -q;
+  metal.addScalarField(field::energyRate)[0] = -q;
   const double u0 = u.energy(950);
-  metal.addScalarField("T")[0] = 950;
+  metal.addScalarField(field::T)[0] = 950;
   Solidification solidification(SolidificationSettings{}, material, metal);
   solidification.update(0.0, 0.0);
-  EXPECT_EQ(metal.scalarField("liquidusTime")[0], -1);
+  EXPECT_EQ(metal.scalarField(field::liquidusTime)[0], -1);
   const double step = 0.37;
   for (int k = 1; k * step < 40; ++k) {
-    metal.scalarField("T")[0] = u.temperature(static_cast<Real>(u0 - q * k * step));
+    metal.scalarField(field::T)[0] = u.temperature(static_cast<Real>(u0 - q * k * step));
     solidification.update(k * step, step);
   }
   const double criticalT = 830.44 + 0.1 * (888.64 - 830.44);  // 836.26 K
-  EXPECT_NEAR(metal.scalarField("liquidusTime")[0], (u0 - u.energy(888.64)) / q, 1e-9);
-  EXPECT_NEAR(metal.scalarField("criticalTime")[0], (u0 - u.energy(criticalT)) / q, 1e-9);
-  EXPECT_NEAR(metal.scalarField("solidusTime")[0], (u0 - u.energy(830.44)) / q, 1e-9);
-  EXPECT_NEAR(metal.scalarField("coolingRate")[0], q / ((1.11e6 - 8.44e5) / (848 - 830.44)),
+  EXPECT_NEAR(metal.scalarField(field::liquidusTime)[0], (u0 - u.energy(888.64)) / q, 1e-9);
+  EXPECT_NEAR(metal.scalarField(field::criticalTime)[0], (u0 - u.energy(criticalT)) / q, 1e-9);
+  EXPECT_NEAR(metal.scalarField(field::solidusTime)[0], (u0 - u.energy(830.44)) / q, 1e-9);
+  EXPECT_NEAR(metal.scalarField(field::coolingRate)[0], q / ((1.11e6 - 8.44e5) / (848 - 830.44)),
               1e-6);
   // solidus 24.3 s after the liquidus: 4.86e5 J/kg of the freezing range at 2e4 W/kg
-  EXPECT_NEAR(metal.scalarField("solidusTime")[0] - metal.scalarField("liquidusTime")[0],
+  EXPECT_NEAR(metal.scalarField(field::solidusTime)[0] - metal.scalarField(field::liquidusTime)[0],
               (1.33e6 - 8.44e5) / q, 0.05 * (1.33e6 - 8.44e5) / q);
-  metal.scalarField("T")[0] = 900;
+  metal.scalarField(field::T)[0] = 900;
   solidification.update(41.0, step);
   for (const std::string& name : Solidification::historyFields()) {
     EXPECT_EQ(metal.scalarField(name)[0], -1) << name;
@@ -131,7 +137,7 @@ TEST(Solidification, RecordsWhenEachParticleCrossesLiquidusCriticalAndSolidus) {
 // wall does, and leave the step at the acoustic limit although its table viscosity (4.7e4 Pa s)
 // would need steps ~1e5 times shorter.
 struct ColumnResult {
-  double front = 0;              // Z at T = 2
+  double front = 0;               // Z at T = 2
   double frozenDisplacement = 0;  // largest, m
   double frozenDensityDeviation = 0;
   std::string limiter;
@@ -150,9 +156,9 @@ ColumnResult collapseColumn(bool frozenBackWall) {
   const int tankColumns = 5 * columns + frozenColumns;
   const Real hot = 970, cold = 820;
   // the melt (and the frozen block) from x = 0; the melt's back at x = frozenColumns dx
-  auto fluid = testing::fluidBlock2D(columns + frozenColumns, 2 * columns, dx, Vector::Zero(),
-                                     2400, 1e-3);
-  auto& T = fluid.addScalarField("T");
+  auto fluid =
+      testing::fluidBlock2D(columns + frozenColumns, 2 * columns, dx, Vector::Zero(), 2400, 1e-3);
+  auto& T = fluid.addScalarField(field::T);
   for (std::size_t i = 0; i < fluid.size(); ++i) {
     T[i] = fluid.positions()[i].x() < frozenColumns * dx ? cold : hot;
   }
@@ -161,11 +167,11 @@ ColumnResult collapseColumn(bool frozenBackWall) {
   settings.viscosityLimit = Real(0.125) * Real((*material.density)(888.64)) * dx * c / maxCo;
   Solidification solidification(settings, material, fluid);
   solidification.update(0.0, 0.0);
-  const auto& restDensity = fluid.scalarField("restDensity");
+  const auto& restDensity = fluid.scalarField(field::restDensity);
   for (std::size_t i = 0; i < fluid.size(); ++i) {  // hydrostatic start
-    fluid.scalarField("rho")[i] =
+    fluid.scalarField(field::rho)[i] =
         restDensity[i] * (1 + g * (2 * a - fluid.positions()[i].y()) / (c * c));
-    fluid.scalarField("mass")[i] = restDensity[i] * dx * dx;
+    fluid.scalarField(field::mass)[i] = restDensity[i] * dx * dx;
   }
 
   auto wall = testing::tankWalls2D(tankColumns, 3 * columns, dx);
@@ -180,7 +186,7 @@ ColumnResult collapseColumn(bool frozenBackWall) {
   // the flow reorders the cloud each step: the frozen particles are compared as sorted sets
   std::vector<Vector> frozenStart;
   for (std::size_t i = 0; i < fluid.size(); ++i) {
-    if (fluid.scalarField("frozen")[i] != 0) frozenStart.push_back(fluid.positions()[i]);
+    if (fluid.scalarField(field::frozen)[i] != 0) frozenStart.push_back(fluid.positions()[i]);
   }
   const double endTime = 2 * std::sqrt(a / (2 * g));
   double t = 0;
@@ -196,11 +202,11 @@ ColumnResult collapseColumn(bool frozenBackWall) {
   for (std::size_t i = 0; i < fluid.size(); ++i) {
     const Vector& x = fluid.positions()[i];
     if (x.x() < 0 || x.y() < 0 || x.x() > tankColumns * dx) ++result.escaped;
-    if (fluid.scalarField("frozen")[i] == 0) continue;
+    if (fluid.scalarField(field::frozen)[i] == 0) continue;
     frozenEnd.push_back(x);
     result.frozenDensityDeviation =
         std::max(result.frozenDensityDeviation,
-                 std::abs(double(fluid.scalarField("rho")[i] / restDensity[i]) - 1));
+                 std::abs(double(fluid.scalarField(field::rho)[i] / restDensity[i]) - 1));
   }
   auto byPosition = [](const Vector& p, const Vector& q) {
     return p.x() < q.x() || (p.x() == q.x() && p.y() < q.y());
@@ -219,12 +225,12 @@ ColumnResult collapseColumn(bool frozenBackWall) {
 TEST(Solidification, FrozenBlockStaysPutAndHoldsTheMeltLikeAWallAtTheAcousticStep) {
   const ColumnResult frozen = collapseColumn(true);
   const ColumnResult wall = collapseColumn(false);
-  std::printf("column collapse to T = 2, a/dx = 20: front Z %.3f against a frozen block, %.3f "
-              "against a wall (Martin & Moyce: 2.9); frozen block moved %.3g m, its density "
-              "within %.3g %% of rho_s; step limited by %s, viscous limit %.3g x acoustic\n",
-              frozen.front, wall.front, frozen.frozenDisplacement,
-              100 * frozen.frozenDensityDeviation, frozen.limiter.c_str(),
-              frozen.viscousOverAcoustic);
+  std::printf(
+      "column collapse to T = 2, a/dx = 20: front Z %.3f against a frozen block, %.3f "
+      "against a wall (Martin & Moyce: 2.9); frozen block moved %.3g m, its density "
+      "within %.3g %% of rho_s; step limited by %s, viscous limit %.3g x acoustic\n",
+      frozen.front, wall.front, frozen.frozenDisplacement, 100 * frozen.frozenDensityDeviation,
+      frozen.limiter.c_str(), frozen.viscousOverAcoustic);
   EXPECT_EQ(frozen.frozenDisplacement, 0.0);
   EXPECT_EQ(frozen.escaped, 0u);
   // the melt ran out as far as against a wall: within a quarter of a (five particles)
@@ -240,15 +246,15 @@ TEST(Solidification, FrozenBlockStaysPutAndHoldsTheMeltLikeAWallAtTheAcousticSte
 // (the shrinkage cavity) as tall as the melt's volume, sum m / rho, leaves empty, with no
 // pressure below the cavitation limit and no particles clumped by tension.
 struct PocketResult {
-  double gap = 0;            // mean distance from the melt's top row to the roof, less dx
-  double expectedGap = 0;    // the pocket's height times the volume lost
+  double gap = 0;          // mean distance from the melt's top row to the roof, less dx
+  double expectedGap = 0;  // the pocket's height times the volume lost
   double lowestPressure = 0;
-  double closestPair = 0;    // in dx
+  double closestPair = 0;  // in dx
   std::size_t escaped = 0;
 };
 
 PocketResult shrinkInPocket(Real cavitationPressure) {  // Pa
-  const int inner = 24;  // the pocket, in particles
+  const int inner = 24;                                 // the pocket, in particles
   const int shell = 3;
   const int size = inner + 2 * shell;
   const Real dx = 1e-3;
@@ -258,7 +264,7 @@ PocketResult shrinkInPocket(Real cavitationPressure) {  // Pa
   const Real rho0 = 2400;
   const Real shrinkage = Real(0.05);
   auto fluid = testing::fluidBlock2D(size, size, dx, Vector::Zero(), rho0, 0.5);
-  auto& frozen = fluid.addScalarField("frozen");
+  auto& frozen = fluid.addScalarField(field::frozen);
   auto inPocket = [&](const Vector& x) {
     return x.x() > shell * dx && x.x() < (size - shell) * dx && x.y() > shell * dx &&
            x.y() < (size - shell) * dx;
@@ -267,7 +273,7 @@ PocketResult shrinkInPocket(Real cavitationPressure) {  // Pa
     const Vector& x = fluid.positions()[i];
     frozen[i] = inPocket(x) ? 0 : 1;
     // the melt at its new rho_s (it has cooled), with the density it had: 5 % too light
-    if (inPocket(x)) fluid.scalarField("restDensity")[i] = rho0 * (1 + shrinkage);
+    if (inPocket(x)) fluid.scalarField(field::restDensity)[i] = rho0 * (1 + shrinkage);
   }
   FlowSettings settings;
   settings.dimension = 2;
@@ -288,7 +294,7 @@ PocketResult shrinkInPocket(Real cavitationPressure) {  // Pa
   result.lowestPressure = std::numeric_limits<double>::infinity();
   result.closestPair = std::numeric_limits<double>::infinity();
   const Real roof = (size - shell) * dx;  // the roof's lowest row sits half a dx above
-  std::vector<double> tops(inner, 0.0);  // the highest melt particle in each column
+  std::vector<double> tops(inner, 0.0);   // the highest melt particle in each column
   for (std::size_t i = 0; i < fluid.size(); ++i) {
     const Vector& x = fluid.positions()[i];
     if (frozen[i] != 0) continue;
@@ -296,7 +302,7 @@ PocketResult shrinkInPocket(Real cavitationPressure) {  // Pa
       ++result.escaped;
       continue;
     }
-    result.lowestPressure = std::min(result.lowestPressure, double(fluid.scalarField("p")[i]));
+    result.lowestPressure = std::min(result.lowestPressure, double(fluid.scalarField(field::p)[i]));
     const int column = std::clamp(int(x.x() / dx) - shell, 0, inner - 1);
     tops[column] = std::max(tops[column], double(x.y()));
     for (std::size_t j = i + 1; j < fluid.size(); ++j) {
@@ -313,7 +319,8 @@ PocketResult shrinkInPocket(Real cavitationPressure) {  // Pa
   // the pocket's floor leaves this much of the pocket empty
   double meltVolume = 0;
   for (std::size_t i = 0; i < fluid.size(); ++i) {
-    if (frozen[i] == 0) meltVolume += fluid.scalarField("mass")[i] / fluid.scalarField("rho")[i];
+    if (frozen[i] == 0)
+      meltVolume += fluid.scalarField(field::mass)[i] / fluid.scalarField(field::rho)[i];
   }
   result.expectedGap = inner - meltVolume / (inner * dx * dx);
   return result;
@@ -321,10 +328,11 @@ PocketResult shrinkInPocket(Real cavitationPressure) {  // Pa
 
 TEST(Solidification, MeltShrinkingInsideFrozenMetalOpensACavityAtTheTop) {
   const PocketResult limited = shrinkInPocket(0);
-  std::printf("pocket of 24 x 24 particles, rho_s up 5 %%, cavitationPressure 0: the void under "
-              "the roof %.2f dx (mass balance %.2f), lowest p %.3g Pa, closest melt pair %.2f "
-              "dx\n",
-              limited.gap, limited.expectedGap, limited.lowestPressure, limited.closestPair);
+  std::printf(
+      "pocket of 24 x 24 particles, rho_s up 5 %%, cavitationPressure 0: the void under "
+      "the roof %.2f dx (mass balance %.2f), lowest p %.3g Pa, closest melt pair %.2f "
+      "dx\n",
+      limited.gap, limited.expectedGap, limited.lowestPressure, limited.closestPair);
   EXPECT_EQ(limited.escaped, 0u);
   EXPECT_GE(limited.lowestPressure, 0.0);
   EXPECT_NEAR(limited.gap, limited.expectedGap, 0.25 * limited.expectedGap);
@@ -342,7 +350,7 @@ ParticleCloud freezeColumn(int threads, std::size_t& frozeDuringRun) {
   const Real dx = 0.005;
   const Real c = 20;
   auto fluid = testing::fluidBlock2D(20, 20, dx, Vector::Zero(), 2400, 1e-3);
-  auto& T = fluid.addScalarField("T");
+  auto& T = fluid.addScalarField(field::T);
   for (std::size_t i = 0; i < fluid.size(); ++i) {
     T[i] = fluid.positions()[i].x() < 5 * dx ? 820 : 860;
   }
@@ -351,8 +359,8 @@ ParticleCloud freezeColumn(int threads, std::size_t& frozeDuringRun) {
   Solidification solidification(settings, material, fluid);
   solidification.update(0.0, 0.0);
   for (std::size_t i = 0; i < fluid.size(); ++i) {
-    fluid.scalarField("rho")[i] = fluid.scalarField("restDensity")[i];
-    fluid.scalarField("mass")[i] = fluid.scalarField("restDensity")[i] * dx * dx;
+    fluid.scalarField(field::rho)[i] = fluid.scalarField(field::restDensity)[i];
+    fluid.scalarField(field::mass)[i] = fluid.scalarField(field::restDensity)[i] * dx * dx;
   }
   const std::size_t frozenAtStart = solidification.summary().frozen;
   auto wall = testing::tankWalls2D(30, 30, dx);
@@ -367,7 +375,7 @@ ParticleCloud freezeColumn(int threads, std::size_t& frozeDuringRun) {
   for (int step = 0; step < 300; ++step) {
     flow.step(flow.stepLimits(0.25).smallest(limiter));
     if (step % 10 == 9) {
-      for (Real& t : fluid.scalarField("T")) t -= 1;
+      for (Real& t : fluid.scalarField(field::T)) t -= 1;
       solidification.update(0.0, 0.0);
     }
   }

@@ -16,6 +16,7 @@
 #include "core/dictionary/Dictionary.h"
 #include "geometry/CastFieldsSetup.h"
 #include "io/VtpCloud.h"
+#include "particles/FieldNames.h"
 #include "solver/CastingSolver.h"
 #include "sph/FlowSetup.h"
 #include "sph/FlowTestCases.h"
@@ -80,7 +81,7 @@ void writeCastingCase(const testing::TemporaryCase& folder) {
       lid, 22, 35, 10, 13, dx, Vector::Zero(), [](int, int) { return Vector(0, -1, 0); },
       [](int, int row) { return (Real(row - 10) + Real(0.5)) * dx; });
   for (ParticleCloud* cloud : {&metal, &mold, &lid}) {
-    auto& T = cloud->addScalarField("T");
+    auto& T = cloud->addScalarField(field::T);
     for (Real& t : T) t = cloud == &metal ? Real(950) : Real(500);
     cloud->attributes()["spacing"] = dx;
   }

@@ -11,6 +11,7 @@
 
 #include "core/Error.h"
 #include "core/dictionary/Dictionary.h"
+#include "particles/FieldNames.h"
 
 namespace sphcast {
 namespace {
@@ -18,9 +19,9 @@ namespace {
 ParticleCloud fluidWithDeviations(std::size_t count) {
   ParticleCloud cloud("metal");
   cloud.resize(count);
-  auto& u = cloud.addVectorField("U");
-  auto& rho = cloud.addScalarField("rho");
-  auto& rest = cloud.addScalarField("restDensity");
+  auto& u = cloud.addVectorField(field::U);
+  auto& rho = cloud.addScalarField(field::rho);
+  auto& rest = cloud.addScalarField(field::restDensity);
   for (std::size_t i = 0; i < count; ++i) {
     cloud.positions()[i] = Vector(Real(i) * Real(1e-6), 0, 0);
     u[i] = Vector::Zero();
@@ -34,7 +35,7 @@ const Domain box{Vector::Constant(-1), Vector::Constant(1)};
 
 TEST(RunHealth, FindsTheLargestDensityDeviationAndWhereItIs) {
   ParticleCloud cloud = fluidWithDeviations(1000);
-  cloud.scalarField("rho")[617] = 2400 * 1.07;
+  cloud.scalarField(field::rho)[617] = 2400 * 1.07;
   const CloudHealth health = measureCloudHealth(cloud, box);
   EXPECT_TRUE(health.finiteAndInside());
   EXPECT_NEAR(health.largestDensityDeviation, 0.07, 1e-12);
@@ -45,8 +46,8 @@ TEST(RunHealth, FindsTheLargestDensityDeviationAndWhereItIs) {
 TEST(RunHealth, CountsNonFiniteAndOutsideParticlesAndNamesTheFirst) {
   ParticleCloud cloud = fluidWithDeviations(1000);
   cloud.positions()[700] = Vector(2, 0, 0);  // outside
-  cloud.vectorField("U")[300][1] = std::numeric_limits<Real>::quiet_NaN();
-  cloud.scalarField("rho")[900] = std::numeric_limits<Real>::infinity();
+  cloud.vectorField(field::U)[300][1] = std::numeric_limits<Real>::quiet_NaN();
+  cloud.scalarField(field::rho)[900] = std::numeric_limits<Real>::infinity();
   const CloudHealth health = measureCloudHealth(cloud, box);
   EXPECT_EQ(health.nonFinite, 2u);
   EXPECT_EQ(health.outside, 1u);
@@ -55,8 +56,8 @@ TEST(RunHealth, CountsNonFiniteAndOutsideParticlesAndNamesTheFirst) {
 
 TEST(RunHealth, OneAndTwoThreadsFindTheSame) {
   ParticleCloud cloud = fluidWithDeviations(100000);
-  cloud.scalarField("rho")[4242] = 2400 * 1.1;
-  cloud.scalarField("rho")[77777] = 2400 * 1.1;  // the same deviation: the first one is named
+  cloud.scalarField(field::rho)[4242] = 2400 * 1.1;
+  cloud.scalarField(field::rho)[77777] = 2400 * 1.1;  // the same deviation: the first one is named
   cloud.positions()[5000] = Vector(0, 5, 0);
   const int previous = omp_get_max_threads();
   omp_set_num_threads(1);

@@ -13,6 +13,7 @@
 #include <string>
 
 #include "FlowTestCases.h"
+#include "particles/FieldNames.h"
 #include "post/FluidSampling.h"
 #include "sph/WeaklyCompressibleFlow.h"
 
@@ -77,7 +78,7 @@ DamBreakResult runDamBreak(int columns, double endT, const Numerics& numerics = 
   auto fluid = testing::fluidBlock2D(columns, rows, dx, Vector::Zero(), rho0, 1e-3);
   for (std::size_t i = 0; i < fluid.size(); ++i) {
     const Real depth = 2 * a - fluid.positions()[i].y();
-    fluid.scalarField("rho")[i] = rho0 * (1 + g * depth / (c * c));  // hydrostatic start
+    fluid.scalarField(field::rho)[i] = rho0 * (1 + g * depth / (c * c));  // hydrostatic start
   }
 
   auto wall = testing::tankWalls2D(tankColumns, wallRows, dx);

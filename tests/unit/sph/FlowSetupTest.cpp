@@ -11,6 +11,7 @@
 #include "core/CaseFolder.h"
 #include "core/Error.h"
 #include "core/dictionary/SourceLocation.h"
+#include "particles/FieldNames.h"
 #include "sph/FlowSetup.h"
 #include "support/TemporaryCase.h"
 
@@ -111,21 +112,21 @@ TEST(FlowSetup, RestDensityFromATemperatureTable) {
   ParticleCloud water("water");
   water.resize(3);
   water.attributes()["spacing"] = 0.01;
-  auto& temperature = water.addScalarField("T");
+  auto& temperature = water.addScalarField(field::T);
   temperature = {850, 950, 1100};
-  water.addScalarField("volume") = {1e-9, 1e-9, 1e-9};
+  water.addScalarField(field::volume) = {1e-9, 1e-9, 1e-9};
   prepareFluidFields(setup, water);
   const std::vector<Real> expected{2450, 2375, 2350};  // interpolated; clamped above 1000 K
   for (std::size_t i = 0; i < 3; ++i) {
-    EXPECT_DOUBLE_EQ(water.scalarField("restDensity")[i], expected[i]);
-    EXPECT_DOUBLE_EQ(water.scalarField("rho")[i], expected[i]);
-    EXPECT_DOUBLE_EQ(water.scalarField("mass")[i], expected[i] * 1e-9);
+    EXPECT_DOUBLE_EQ(water.scalarField(field::restDensity)[i], expected[i]);
+    EXPECT_DOUBLE_EQ(water.scalarField(field::rho)[i], expected[i]);
+    EXPECT_DOUBLE_EQ(water.scalarField(field::mass)[i], expected[i] * 1e-9);
   }
 
   ParticleCloud cold("water");
   cold.resize(1);
   cold.attributes()["spacing"] = 0.01;
-  cold.addScalarField("volume") = {1e-9};
+  cold.addScalarField(field::volume) = {1e-9};
   try {
     prepareFluidFields(setup, cold);
     FAIL() << "a table without T was accepted";
@@ -148,10 +149,10 @@ TEST(FlowSetup, ViscosityFromATemperatureTableIsInterpolatedLogLinearly) {
   ParticleCloud water("water");
   water.resize(3);
   water.attributes()["spacing"] = 0.01;
-  water.addScalarField("T") = {850, 700, 1000};
-  water.addScalarField("volume") = {1e-9, 1e-9, 1e-9};
+  water.addScalarField(field::T) = {850, 700, 1000};
+  water.addScalarField(field::volume) = {1e-9, 1e-9, 1e-9};
   prepareFluidFields(setup, water);
-  const auto& mu = water.scalarField("viscosity");
+  const auto& mu = water.scalarField(field::viscosity);
   EXPECT_NEAR(mu[0], 1.0, 1e-12);  // sqrt(100 * 1e-2), the geometric mean
   EXPECT_DOUBLE_EQ(mu[1], 100);    // clamped
   EXPECT_DOUBLE_EQ(mu[2], 1e-2);
@@ -231,7 +232,7 @@ TEST(FlowSetup, FluidWithoutSpacingOrWithASupportRadiusOutOfRangeIsAnError) {
   const FlowSetup setup = FlowCase("", "densityScheme riemann;\n").read();  // h = 0.03 m
   ParticleCloud water("water");
   water.resize(2);
-  water.addScalarField("volume") = {1e-6, 1e-6};
+  water.addScalarField(field::volume) = {1e-6, 1e-6};
   try {
     prepareFluidFields(setup, water);
     ADD_FAILURE() << "a cloud without spacing was accepted";
@@ -266,10 +267,10 @@ TEST(FlowSetup, StartPressureIsTheEquationOfStateOfTheStartDensity) {
   ParticleCloud water("water");
   water.resize(3);
   water.attributes()["spacing"] = 0.01;
-  water.addScalarField("volume") = {1e-6, 1e-6, 1e-6};
+  water.addScalarField(field::volume) = {1e-6, 1e-6, 1e-6};
   EXPECT_EQ(startPressure(setup, water), (std::vector<Real>{0, 0, 0}));
-  EXPECT_FALSE(water.hasScalarField("rho"));  // the cloud itself is left as it was
-  water.addScalarField("rho") = {1000, 1001, 999.5};
+  EXPECT_FALSE(water.hasScalarField(field::rho));  // the cloud itself is left as it was
+  water.addScalarField(field::rho) = {1000, 1001, 999.5};
   EXPECT_EQ(startPressure(setup, water), (std::vector<Real>{0, 100, -50}));
 }
 
@@ -336,11 +337,11 @@ TEST(FlowSetup, SoundSpeedCheckForeseesTheFallAndTheInitialSpeed) {
 
   settings.soundSpeed = 50;  // Mach 0.079
   EXPECT_FALSE(checkSoundSpeed(settings, water, {&tank}).tooLow);
-  water.addVectorField("U")[1] = Vector(3, 0, 0);  // Mach 0.0995
+  water.addVectorField(field::U)[1] = Vector(3, 0, 0);  // Mach 0.0995
   check = checkSoundSpeed(settings, water, {&tank});
   EXPECT_NEAR(check.largestSpeed, std::sqrt(9 + fall * fall), 1e-6);
   EXPECT_FALSE(check.tooLow) << check.message;
-  water.vectorField("U")[0] = Vector(0, -3.2, 0);  // Mach 0.1018
+  water.vectorField(field::U)[0] = Vector(0, -3.2, 0);  // Mach 0.1018
   EXPECT_TRUE(checkSoundSpeed(settings, water, {&tank}).tooLow);
   // without walls the fall is the fluid's own height
   EXPECT_NEAR(checkSoundSpeed(settings, water, {}).fallHeight, 0.5, 1e-6);

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "particles/FieldNames.h"
 #include "particles/ParticleCloud.h"
 
 namespace sphcast::testing {
@@ -11,11 +12,11 @@ inline ParticleCloud fluidBlock2D(int columns, int rows, Real dx, const Vector& 
                                   Real viscosity) {
   ParticleCloud fluid("fluid");
   fluid.resize(static_cast<std::size_t>(columns * rows));
-  auto& U = fluid.addVectorField("U");
-  auto& rho = fluid.addScalarField("rho");
-  auto& mass = fluid.addScalarField("mass");
-  auto& mu = fluid.addScalarField("viscosity");
-  auto& rest = fluid.addScalarField("restDensity");
+  auto& U = fluid.addVectorField(field::U);
+  auto& rho = fluid.addScalarField(field::rho);
+  auto& mass = fluid.addScalarField(field::mass);
+  auto& mu = fluid.addScalarField(field::viscosity);
+  auto& rest = fluid.addScalarField(field::restDensity);
   std::size_t i = 0;
   for (int row = 0; row < rows; ++row) {
     for (int column = 0; column < columns; ++column, ++i) {
@@ -43,19 +44,19 @@ inline void addWallCells(ParticleCloud& wall, int columnBegin, int columnEnd, in
       const std::size_t k = wall.size();
       wall.resize(k + 1);
       wall.positions()[k] = lower + Vector((column + Real(0.5)) * dx, (row + Real(0.5)) * dx, 0);
-      wall.scalarField("volume")[k] = dx * dx;
+      wall.scalarField(field::volume)[k] = dx * dx;
       const Vector normal = normalOf(column, row).normalized();
-      wall.vectorField("normal")[k] = normal;
-      wall.scalarField("wallDistance")[k] = depthOf(column, row);
+      wall.vectorField(field::normal)[k] = normal;
+      wall.scalarField(field::wallDistance)[k] = depthOf(column, row);
     }
   }
 }
 
 inline ParticleCloud emptyWall(const std::string& name = "wall") {
   ParticleCloud wall(name);
-  wall.addScalarField("volume");
-  wall.addVectorField("normal");
-  wall.addScalarField("wallDistance");
+  wall.addScalarField(field::volume);
+  wall.addVectorField(field::normal);
+  wall.addScalarField(field::wallDistance);
   return wall;
 }
 

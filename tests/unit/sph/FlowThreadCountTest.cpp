@@ -12,6 +12,7 @@
 #include <string>
 
 #include "FlowTestCases.h"
+#include "particles/FieldNames.h"
 #include "sph/WeaklyCompressibleFlow.h"
 
 namespace sphcast {
@@ -29,7 +30,7 @@ ParticleCloud runDamBreak(int threads, const Scheme& scheme, int steps, std::siz
   omp_set_num_threads(threads);
   const Real dx = 0.005;
   auto fluid = testing::fluidBlock2D(15, 30, dx, Vector::Zero(), 1000, 1e-3);
-  for (Vector& u : fluid.vectorField("U")) u = Vector(1.0, 0, 0);
+  for (Vector& u : fluid.vectorField(field::U)) u = Vector(1.0, 0, 0);
   auto wall = testing::tankWalls2D(24, 40, dx);
   FlowSettings settings;
   settings.dimension = 2;

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "FlowTestCases.h"
+#include "particles/FieldNames.h"
 #include "sph/WeaklyCompressibleFlow.h"
 
 namespace sphcast {
@@ -31,7 +32,8 @@ TankResult runTank(const std::string& scheme, double dimensionlessTime,
   auto fluid = testing::fluidBlock2D(columns, rows, dx, Vector::Zero(), rho0, 1e-3);
   for (std::size_t i = 0; i < fluid.size(); ++i) {
     // Start in hydrostatic balance: rho = rho0 (1 + g (H - y) / c^2).
-    fluid.scalarField("rho")[i] = rho0 * (1 + g * (height - fluid.positions()[i].y()) / (c * c));
+    fluid.scalarField(field::rho)[i] =
+        rho0 * (1 + g * (height - fluid.positions()[i].y()) / (c * c));
   }
   const auto start = fluid.positions();
   auto id = fluid.addIdField("id");
@@ -43,15 +45,18 @@ TankResult runTank(const std::string& scheme, double dimensionlessTime,
   // The normal and depth of a wall cell: towards the fluid, distance behind the nearest face
   // (behind a corner, the distance to the corner).
   auto outside = [=](int column, int row) {
-    const Real ox = column < 0 ? Real(column + 0.5) : (column >= columns ? Real(column - columns + 0.5) : 0);
+    const Real ox =
+        column < 0 ? Real(column + 0.5) : (column >= columns ? Real(column - columns + 0.5) : 0);
     const Real oy = row < 0 ? Real(row + 0.5) : 0;
     return Vector(ox, oy, 0);
   };
   auto normal = [=](int column, int row) { return Vector(-outside(column, row)); };
   auto depth = [=](int column, int row) { return outside(column, row).norm() * dx; };
-  testing::addWallCells(wall, -layers, columns + layers, -layers, 0, dx, Vector::Zero(), normal, depth);
+  testing::addWallCells(wall, -layers, columns + layers, -layers, 0, dx, Vector::Zero(), normal,
+                        depth);
   testing::addWallCells(wall, -layers, 0, 0, rows + 10, dx, Vector::Zero(), normal, depth);
-  testing::addWallCells(wall, columns, columns + layers, 0, rows + 10, dx, Vector::Zero(), normal, depth);
+  testing::addWallCells(wall, columns, columns + layers, 0, rows + 10, dx, Vector::Zero(), normal,
+                        depth);
 
   FlowSettings settings;
   settings.dimension = 2;
@@ -77,10 +82,10 @@ TankResult runTank(const std::string& scheme, double dimensionlessTime,
   for (std::size_t i = 0; i < fluid.size(); ++i) {
     const Vector& x = fluid.positions()[i];
     const double exact = rho0 * g * (height - x.y());
-    squares += std::pow(fluid.scalarField("p")[i] - exact, 2);
-    sum += fluid.scalarField("p")[i] - exact;
-    result.largestSpeed =
-        std::max(result.largestSpeed, double(fluid.vectorField("U")[i].norm()) / std::sqrt(g * height));
+    squares += std::pow(fluid.scalarField(field::p)[i] - exact, 2);
+    sum += fluid.scalarField(field::p)[i] - exact;
+    result.largestSpeed = std::max(
+        result.largestSpeed, double(fluid.vectorField(field::U)[i].norm()) / std::sqrt(g * height));
     const auto original = static_cast<std::size_t>(fluid.idField("id")[i]);
     result.largestDrift = std::max(result.largestDrift, double((x - start[original]).norm()) / dx);
     if (x.x() < 0 || x.x() > width || x.y() < 0) ++result.escaped;
@@ -91,10 +96,11 @@ TankResult runTank(const std::string& scheme, double dimensionlessTime,
 }
 
 void print(const char* run, const TankResult& result) {
-  std::printf("hydrostatic tank 2D, 20x20, %s: pressure RMS error %.4f rho g H (mean %.4f), "
-              "largest speed %.4f sqrt(gH), largest drift %.3f dx, %zu escaped\n",
-              run, result.pressureError, result.pressureOffset, result.largestSpeed,
-              result.largestDrift, result.escaped);
+  std::printf(
+      "hydrostatic tank 2D, 20x20, %s: pressure RMS error %.4f rho g H (mean %.4f), "
+      "largest speed %.4f sqrt(gH), largest drift %.3f dx, %zu escaped\n",
+      run, result.pressureError, result.pressureOffset, result.largestSpeed, result.largestDrift,
+      result.escaped);
 }
 
 TEST(HydrostaticTank, RiemannSchemeKeepsTheColumnAtRestWithHydrostaticPressure) {

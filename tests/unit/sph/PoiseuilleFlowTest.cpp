@@ -10,6 +10,7 @@
 #include <numbers>
 
 #include "FlowTestCases.h"
+#include "particles/FieldNames.h"
 #include "sph/WeaklyCompressibleFlow.h"
 
 namespace sphcast {
@@ -90,7 +91,7 @@ PoiseuilleError runPoiseuille(int rowsAcross, const std::string& scheme,
     for (std::size_t i = 0; i < fluid.size(); ++i) {
       const double y = fluid.positions()[i].y();
       const double exact = slip || againstPlug ? bodyForce * t : poiseuilleSeries(y, t, width);
-      const double error = std::abs(fluid.vectorField("U")[i].x() - exact);
+      const double error = std::abs(fluid.vectorField(field::U)[i].x() - exact);
       worst = std::max(worst, error / peak);
     }
     return worst;

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "FlowTestCases.h"
+#include "particles/FieldNames.h"
 #include "sph/WeaklyCompressibleFlow.h"
 
 namespace sphcast {
@@ -16,7 +17,7 @@ double interiorLaplacianRatio(const std::string& viscousForm) {
   auto fluid = testing::fluidBlock2D(columns, rows, dx, Vector::Zero(), 1000, 1e-3);
   for (std::size_t i = 0; i < fluid.size(); ++i) {
     const Real y = fluid.positions()[i].y();
-    fluid.vectorField("U")[i] = Vector(y * (width - y), 0, 0);
+    fluid.vectorField(field::U)[i] = Vector(y * (width - y), 0, 0);
   }
   FlowSettings settings;
   settings.dimension = 2;
@@ -29,7 +30,7 @@ double interiorLaplacianRatio(const std::string& viscousForm) {
   // A particle in the middle rows: its neighbourhood is full and the profile is exact there.
   for (std::size_t i = 0; i < fluid.size(); ++i) {
     if (std::abs(fluid.positions()[i].y() - Real(10.5) * dx) < dx / 4) {
-      return fluid.vectorField("acceleration")[i].x() / (-2 * 1e-6);
+      return fluid.vectorField(field::acceleration)[i].x() / (-2 * 1e-6);
     }
   }
   return 0;

@@ -10,6 +10,7 @@
 #include <numbers>
 
 #include "ThermalTestCases.h"
+#include "particles/FieldNames.h"
 
 namespace sphcast::testing {
 namespace {
@@ -37,8 +38,8 @@ ParticleCloud heldSurface(const std::string& name, Real x0, bool left, int layer
   ParticleCloud cloud =
       latticeBlock(name, Vector(left ? x0 - layers * dx : x0, 0, 0), layers, across, 1, dx, 2, T);
   if (!withSurface) return cloud;
-  auto& depth = cloud.addScalarField("wallDistance");
-  auto& normal = cloud.addVectorField("normal");
+  auto& depth = cloud.addScalarField(field::wallDistance);
+  auto& normal = cloud.addVectorField(field::normal);
   for (std::size_t i = 0; i < cloud.size(); ++i) {
     depth[i] = std::abs(cloud.positions()[i][0] - x0);
     normal[i] = Vector(left ? 1 : -1, 0, 0);
@@ -49,7 +50,7 @@ ParticleCloud heldSurface(const std::string& name, Real x0, bool left, int layer
 // L2 norm over the particles with x < reach of (T - exact(x)) / scale.
 template <class Exact>
 double relativeL2(const ParticleCloud& cloud, Exact exact, double reach, double scale) {
-  const auto& T = cloud.scalarField("T");
+  const auto& T = cloud.scalarField(field::T);
   double sum = 0;
   int count = 0;
   for (std::size_t i = 0; i < T.size(); ++i) {
@@ -79,7 +80,8 @@ double semiInfiniteError(int particlesAcrossHeatedLength, double maxDi = 0.1,
   const double startLength = 2 * std::sqrt(alpha * t / 4);
   if (smoothStart) {
     for (std::size_t i = 0; i < body.size(); ++i) {
-      body.scalarField("T")[i] = Real(300 + 100 * std::erf(body.positions()[i][0] / startLength));
+      body.scalarField(field::T)[i] =
+          Real(300 + 100 * std::erf(body.positions()[i][0] / startLength));
     }
   }
   run.add(std::move(body), "body");
@@ -144,8 +146,8 @@ TEST(ConductionValidationTest, HeldBoxWithoutASurfaceGetsItAtTheStart) {
   const ParticleCloud& held = run.clouds[1];
   for (std::size_t k = 0; k < held.size(); ++k) {
     const Real x = held.positions()[k][0];
-    const Real depth = held.scalarField("wallDistance")[k];
-    const Vector normal = held.vectorField("normal")[k];
+    const Real depth = held.scalarField(field::wallDistance)[k];
+    const Vector normal = held.vectorField(field::normal)[k];
     if (depth == 0 && normal.isZero()) {  // no body particle within h: no surface
       EXPECT_LT(x, -2 * dx) << "the first two layers must get their surface";
       continue;
@@ -180,14 +182,14 @@ TEST(ConductionValidationTest, LongerStepsUpToMaxDiStayAccurateAndBounded) {
     run.maxDi = maxDi;
     run.add(latticeBlock("block", Vector(0, 0, 0), 10, 10, 10, dx, 3, 600), "iron");
     std::uint32_t seed = 12345;  // a fixed scatter of +-20 K on each particle
-    for (Real& T : run.clouds.front().scalarField("T")) {
+    for (Real& T : run.clouds.front().scalarField(field::T)) {
       seed = seed * 1664525u + 1013904223u;
       T += Real(40) * (Real(seed >> 8) / Real(1 << 24) - Real(0.5));
     }
     run.start("clouds (block); conduction on;");
     run.advanceTo(100 * run.stableDeltaT());
     Real lowest = 1e9, highest = 0;
-    for (const Real T : run.clouds.front().scalarField("T")) {
+    for (const Real T : run.clouds.front().scalarField(field::T)) {
       lowest = std::min(lowest, T);
       highest = std::max(highest, T);
     }
@@ -247,8 +249,8 @@ ContactErrors contactOfAluminiumAndIron(bool ironSurface) {
   run.add(latticeBlock("aluminium", Vector(-n * dx, 0, 0), n, across, 1, dx, 2, 900), "aluminium");
   ParticleCloud iron = latticeBlock("iron", Vector(0, 0, 0), n, across, 1, dx, 2, 300);
   if (ironSurface) {
-    auto& depth = iron.addScalarField("wallDistance");
-    auto& normal = iron.addVectorField("normal");
+    auto& depth = iron.addScalarField(field::wallDistance);
+    auto& normal = iron.addVectorField(field::normal);
     for (std::size_t k = 0; k < iron.size(); ++k) {
       depth[k] = iron.positions()[k][0];
       normal[k] = Vector(-1, 0, 0);
@@ -270,7 +272,7 @@ ContactErrors contactOfAluminiumAndIron(bool ironSurface) {
   // the contact temperature from the particles next to the interface (x = -dx/2, +dx/2),
   // each inverted through its side's erf profile, averaged
   auto interfaceEstimate = [&](const ParticleCloud& cloud, double far, double alpha) {
-    const auto& T = cloud.scalarField("T");
+    const auto& T = cloud.scalarField(field::T);
     double sum = 0;
     int count = 0;
     for (std::size_t i = 0; i < T.size(); ++i) {
@@ -357,13 +359,13 @@ TEST(ConductionValidationTest, HeldPatchesActAsHeldClouds) {
   };
   ThermalRun wholes = slab(false);
   ThermalRun patches = slab(true);
-  const auto& a = wholes.clouds.front().scalarField("T");
-  const auto& b = patches.clouds.front().scalarField("T");
+  const auto& a = wholes.clouds.front().scalarField(field::T);
+  const auto& b = patches.clouds.front().scalarField(field::T);
   ASSERT_EQ(a.size(), b.size());
   for (std::size_t i = 0; i < a.size(); ++i) ASSERT_NEAR(a[i], b[i], 1e-9 * a[i]) << i;
   const ParticleCloud& wall = patches.clouds[1];
   for (std::size_t i = 0; i < wall.size(); ++i) {
-    ASSERT_EQ(wall.scalarField("T")[i], wall.idField("patch")[i] == 7 ? 300 : 350);
+    ASSERT_EQ(wall.scalarField(field::T)[i], wall.idField("patch")[i] == 7 ? 300 : 350);
   }
   const double change = patches.internalEnergy(patches.clouds[0]) -
                         patches.clouds[0].attributes().at("internalEnergyAtStart");
@@ -390,9 +392,9 @@ TEST(ConductionValidationTest, SameBitsOnOneAndTwoThreads) {
         "atmosphere { T 300; coefficients ((metal 20) (mold 20)); } radiation { T 300; }");
     run.exposedArea->compute();  // the pass a flow step runs
     run.advanceTo(50 * run.stableDeltaT());
-    return std::vector<std::vector<Real>>{run.clouds[0].scalarField("u"),
-                                          run.clouds[1].scalarField("u"),
-                                          run.clouds[0].scalarField("exposedArea")};
+    return std::vector<std::vector<Real>>{run.clouds[0].scalarField(field::u),
+                                          run.clouds[1].scalarField(field::u),
+                                          run.clouds[0].scalarField(field::exposedArea)};
   };
   const auto one = runWith(1);
   const auto two = runWith(2);

@@ -12,6 +12,7 @@
 #include <numbers>
 
 #include "ThermalTestCases.h"
+#include "particles/FieldNames.h"
 
 namespace sphcast::testing {
 namespace {
@@ -45,7 +46,7 @@ double neumannLambda() {
 // column means of the two lattice columns (at x = first + k dx) that bracket it.
 double frontPosition(const ParticleCloud& cloud, double dx, double first) {
   std::vector<double> sum, count;
-  const auto& T = cloud.scalarField("T");
+  const auto& T = cloud.scalarField(field::T);
   for (std::size_t i = 0; i < T.size(); ++i) {
     const auto column =
         static_cast<std::size_t>(std::lround((cloud.positions()[i][0] - first) / dx));
@@ -71,8 +72,8 @@ double frontError(double dx, int length, double& wallSeconds) {
   run.add(latticeBlock("melt", Vector(0, 0, 0), length, across, 1, Real(dx), 2, Real(Ti)), "alloy");
   ParticleCloud held =
       latticeBlock("wall", Vector(Real(-4 * dx), 0, 0), 4, across, 1, Real(dx), 2, Real(Tw));
-  auto& depth = held.addScalarField("wallDistance");
-  auto& normal = held.addVectorField("normal");
+  auto& depth = held.addScalarField(field::wallDistance);
+  auto& normal = held.addVectorField(field::normal);
   for (std::size_t i = 0; i < held.size(); ++i) {
     depth[i] = -held.positions()[i][0];
     normal[i] = Vector(1, 0, 0);

@@ -10,6 +10,7 @@
 #include <random>
 
 #include "ThermalTestCases.h"
+#include "particles/FieldNames.h"
 
 namespace sphcast::testing {
 namespace {
@@ -37,13 +38,13 @@ ThermalRun ball(int n, double T) {
 
 double totalArea(const ThermalRun& run) {
   double sum = 0;
-  for (const Real area : run.clouds.front().scalarField("exposedArea")) sum += area;
+  for (const Real area : run.clouds.front().scalarField(field::exposedArea)) sum += area;
   return sum;
 }
 
 double meanTemperature(const ParticleCloud& cloud) {
   double sum = 0;
-  for (const Real T : cloud.scalarField("T")) sum += T;
+  for (const Real T : cloud.scalarField(field::T)) sum += T;
   return sum / double(cloud.size());
 }
 
@@ -108,7 +109,7 @@ TEST(SurfaceHeatLossTest, ExposedAreaOfADisorderedCubeStaysAtItsSurface) {
     double total = 0, interior = 0;
     for (std::size_t i = 0; i < body.size(); ++i) {
       const Vector& x = body.positions()[i];
-      const Real area = body.scalarField("exposedArea")[i];
+      const Real area = body.scalarField(field::exposedArea)[i];
       total += area;
       // deeper than h from every face: no area belongs there
       if ((x.array() > 3 * dx).all() && (x.array() < Real(0.01) - 3 * dx).all()) interior += area;

@@ -12,6 +12,7 @@
 
 #include "core/dictionary/Dictionary.h"
 #include "materials/MaterialLibrary.h"
+#include "particles/FieldNames.h"
 #include "particles/Neighbourhood.h"
 #include "sph/ExposedArea.h"
 #include "thermal/EnergyEquation.h"
@@ -24,8 +25,8 @@ inline ParticleCloud latticeBlock(const std::string& name, const Vector& lower, 
                                   int nz, Real dx, int dimension, Real T) {
   ParticleCloud cloud(name);
   cloud.resize(static_cast<std::size_t>(nx) * ny * nz);
-  auto& volume = cloud.addScalarField("volume");
-  auto& temperature = cloud.addScalarField("T");
+  auto& volume = cloud.addScalarField(field::volume);
+  auto& temperature = cloud.addScalarField(field::T);
   std::size_t n = 0;
   for (int k = 0; k < nz; ++k) {
     for (int j = 0; j < ny; ++j) {
@@ -141,8 +142,8 @@ struct ThermalRun {
   }
 
   double internalEnergy(const ParticleCloud& cloud) const {
-    const auto& mass = cloud.scalarField("mass");
-    const auto& u = cloud.scalarField("u");
+    const auto& mass = cloud.scalarField(field::mass);
+    const auto& u = cloud.scalarField(field::u);
     double total = 0;
     for (std::size_t i = 0; i < u.size(); ++i) total += double(mass[i]) * double(u[i]);
     return total;
