@@ -11,6 +11,7 @@
 
 #include "BodyTestCases.h"
 #include "bodies/RigidBody.h"
+#include "particles/FieldNames.h"
 #include "particles/Neighbourhood.h"
 #include "sph/FlowTestCases.h"
 #include "sph/WeaklyCompressibleFlow.h"
@@ -32,8 +33,8 @@ struct DropResult {
 
 Vector fluidMomentum(const ParticleCloud& fluid) {
   Vector momentum = Vector::Zero();
-  const auto& v = fluid.vectorField("U");
-  const auto& m = fluid.scalarField("mass");
+  const auto& v = fluid.vectorField(field::U);
+  const auto& m = fluid.scalarField(field::mass);
   for (std::size_t i = 0; i < fluid.size(); ++i) momentum += m[i] * v[i];
   return momentum;
 }
@@ -63,7 +64,7 @@ DropResult dropBodyOntoPool(int steps) {
   flow.start();
   body.setLoadsAndKick(flow.wallLoad(block).force, flow.wallLoad(block).torque, 0, 0);
   double fluidMass = 0;
-  for (const Real m : fluid.scalarField("mass")) fluidMass += m;
+  for (const Real m : fluid.scalarField(field::mass)) fluidMass += m;
 
   DropResult result;
   double time = 0;

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <string>
 
+#include "particles/FieldNames.h"
 #include "particles/ParticleCloud.h"
 
 namespace sphcast::testing {
@@ -15,9 +16,9 @@ namespace sphcast::testing {
 inline ParticleCloud boxBody(int nx, int ny, int nz, Real dx, const Vector& lower, bool plane,
                              const std::string& name = "body") {
   ParticleCloud body(name);
-  body.addScalarField("volume");
-  body.addVectorField("normal");
-  body.addScalarField("wallDistance");
+  body.addScalarField(field::volume);
+  body.addVectorField(field::normal);
+  body.addScalarField(field::wallDistance);
   for (int k = 0; k < nz; ++k) {
     for (int j = 0; j < ny; ++j) {
       for (int i = 0; i < nx; ++i) {
@@ -31,9 +32,9 @@ inline ParticleCloud boxBody(int nx, int ny, int nz, Real dx, const Vector& lowe
         const int nearest = static_cast<int>(std::min_element(toFace, toFace + 6) - toFace);
         Vector n = Vector::Zero();
         n[nearest / 2] = nearest % 2 == 0 ? -1 : 1;
-        body.scalarField("volume")[p] = plane ? dx * dx : dx * dx * dx;
-        body.vectorField("normal")[p] = n;
-        body.scalarField("wallDistance")[p] = (toFace[nearest] + Real(0.5)) * dx;
+        body.scalarField(field::volume)[p] = plane ? dx * dx : dx * dx * dx;
+        body.vectorField(field::normal)[p] = n;
+        body.scalarField(field::wallDistance)[p] = (toFace[nearest] + Real(0.5)) * dx;
       }
     }
   }

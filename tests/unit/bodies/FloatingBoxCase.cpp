@@ -8,6 +8,7 @@
 
 #include "BodyTestCases.h"
 #include "bodies/RigidBody.h"
+#include "particles/FieldNames.h"
 #include "particles/Neighbourhood.h"
 #include "sph/FlowTestCases.h"
 #include "sph/WeaklyCompressibleFlow.h"
@@ -21,11 +22,11 @@ const Real g = 9.81;
 // A 3D block of liquid on the lattice (cell centres from the origin), at rest.
 ParticleCloud fluidBlock3D(int columns, int rows, Real dx, Real viscosity) {
   ParticleCloud fluid("fluid");
-  auto& U = fluid.addVectorField("U");
-  auto& rho = fluid.addScalarField("rho");
-  auto& mass = fluid.addScalarField("mass");
-  auto& mu = fluid.addScalarField("viscosity");
-  auto& rest = fluid.addScalarField("restDensity");
+  auto& U = fluid.addVectorField(field::U);
+  auto& rho = fluid.addScalarField(field::rho);
+  auto& mass = fluid.addScalarField(field::mass);
+  auto& mu = fluid.addScalarField(field::viscosity);
+  auto& rest = fluid.addScalarField(field::restDensity);
   for (int k = 0; k < rows; ++k) {
     for (int j = 0; j < columns; ++j) {
       for (int i = 0; i < columns; ++i) {
@@ -60,9 +61,9 @@ ParticleCloud tankWalls3D(int columns, int height, Real dx) {
         const std::size_t n = wall.size();
         wall.resize(n + 1);
         wall.positions()[n] = dx * Vector(i + Real(0.5), j + Real(0.5), k + Real(0.5));
-        wall.scalarField("volume")[n] = dx * dx * dx;
-        wall.vectorField("normal")[n] = -out.normalized();
-        wall.scalarField("wallDistance")[n] = out.norm() * dx;
+        wall.scalarField(field::volume)[n] = dx * dx * dx;
+        wall.vectorField(field::normal)[n] = -out.normalized();
+        wall.scalarField(field::wallDistance)[n] = out.norm() * dx;
       }
     }
   }
@@ -88,7 +89,7 @@ Floating floatBox(int dimension, double densityRatio, double seconds, int coarse
                             ? fluidBlock2D(columns, rows, dx, Vector::Zero(), liquidDensity, 0.5)
                             : fluidBlock3D(columns, rows, dx, 0.5);
   for (std::size_t i = 0; i < fluid.size(); ++i) {  // hydrostatic start
-    fluid.scalarField("rho")[i] =
+    fluid.scalarField(field::rho)[i] =
         liquidDensity * (1 + g * (rows * dx - fluid.positions()[i][up]) / (c * c));
   }
   ParticleCloud tank =

@@ -13,6 +13,7 @@
 #include "BodyTestCases.h"
 #include "bodies/BodyWallContact.h"
 #include "bodies/RigidBody.h"
+#include "particles/FieldNames.h"
 #include "particles/Neighbourhood.h"
 #include "sph/FlowTestCases.h"
 #include "sph/WeaklyCompressibleFlow.h"
@@ -82,7 +83,7 @@ TEST(HeavyBody, DroppedIntoAShallowPoolRestsOnTheFloorAndHoldsTheLiquidOut) {
                                       double(x.x()) - leftmost, rightmost - double(x.x())});
       behind = std::max(behind, inside);
       deepestLiquid = std::max(deepestLiquid, behind / dx);
-      const double dev = std::abs(double(fluid.scalarField("rho")[i]) / 1000 - 1);
+      const double dev = std::abs(double(fluid.scalarField(field::rho)[i]) / 1000 - 1);
       densityDeviation = std::max(densityDeviation, dev);
     }
   }

@@ -10,6 +10,7 @@
 #include "BodyTestCases.h"
 #include "bodies/RigidBody.h"
 #include "core/dictionary/Dictionary.h"
+#include "particles/FieldNames.h"
 
 namespace sphcast {
 namespace {
@@ -70,8 +71,8 @@ TEST(RigidBody, FreeBodyFallsAsHalfGTSquaredAndKeepsItsVelocity) {
   EXPECT_LT((body.displacement() - exact).norm(), 1e-13);
   EXPECT_LT((body.velocity() - g * time).norm(), 1e-13);
   EXPECT_LT((cloud.positions()[5] - (start + exact)).norm(), 1e-13);
-  EXPECT_LT((cloud.vectorField("U")[5] - g * time).norm(), 1e-13);
-  EXPECT_LT((cloud.vectorField("acceleration")[5] - g).norm(), 1e-13);
+  EXPECT_LT((cloud.vectorField(field::U)[5] - g * time).norm(), 1e-13);
+  EXPECT_LT((cloud.vectorField(field::acceleration)[5] - g).norm(), 1e-13);
   // a body moving at v with no force: x = v t (the state read back with a velocity)
   auto moving = testing::boxBody(4, 4, 4, dx, Vector::Zero(), false);
   RigidBody coasting(densityBody(), moving, Vector::Zero());
@@ -142,7 +143,7 @@ TEST(RigidBody, HeldUntilReleaseThenFalls) {
   stepWithoutFluid(body, 1e-3, 51, time);
   EXPECT_EQ(body.displacement(), Vector::Zero());
   EXPECT_EQ(body.velocity(), Vector::Zero());
-  EXPECT_EQ(cloud.vectorField("U")[0], Vector::Zero());
+  EXPECT_EQ(cloud.vectorField(field::U)[0], Vector::Zero());
   const double release = time;  // the first step to start after releaseTime
   stepWithoutFluid(body, 1e-3, 50, time);
   const double free = time - release;
@@ -191,9 +192,9 @@ TEST(RigidBody, TorqueFreeSpinConservesAngularMomentumAndTurnsTheParticles) {
   const Vector turned(std::cos(angle) * arm.x() - std::sin(angle) * arm.y(),
                       std::sin(angle) * arm.x() + std::cos(angle) * arm.y(), arm.z());
   EXPECT_LT((cloud.positions()[0] - (centre + turned)).norm(), 1e-12);
-  EXPECT_NEAR(cloud.vectorField("normal")[0].norm(), 1, 1e-14);
+  EXPECT_NEAR(cloud.vectorField(field::normal)[0].norm(), 1, 1e-14);
   // U of a particle: w x r
-  EXPECT_LT((cloud.vectorField("U")[0] - Vector(0, 0, omega).cross(turned)).norm(), 1e-9);
+  EXPECT_LT((cloud.vectorField(field::U)[0] - Vector(0, 0, omega).cross(turned)).norm(), 1e-9);
 }
 
 TEST(RigidBody, StateReadBackContinuesBitForBit) {

@@ -15,6 +15,7 @@
 #include <Eigen/Dense>
 
 #include "SurfaceTensionTestCases.h"
+#include "particles/FieldNames.h"
 #include "particles/Neighbourhood.h"
 #include "sph/FlowTestCases.h"
 #include "surface/ContinuumSurfaceForce.h"
@@ -51,7 +52,7 @@ StaticDropResult staticDropWith(int dimension, int across, double capillaryTimes
   CapillaryRun<Tension> run(flow, tension, fluid, {});
   const double capillaryTime = std::sqrt(rho * std::pow(radius, 3) / sigma);
   const auto start = std::chrono::steady_clock::now();
-  const auto& U0 = fluid.vectorField("U");
+  const auto& U0 = fluid.vectorField(field::U);
   double nextReport = 0.5 * capillaryTime;
   while (run.time < capillaryTimes * capillaryTime) {
     run.step(run.stableDeltaT());
@@ -66,9 +67,9 @@ StaticDropResult staticDropWith(int dimension, int across, double capillaryTimes
   StaticDropResult result;
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const auto& x = fluid.positions();
-  const auto& U = fluid.vectorField("U");
-  const auto& density = fluid.scalarField("rho");
-  const auto& rest = fluid.scalarField("restDensity");
+  const auto& U = fluid.vectorField(field::U);
+  const auto& density = fluid.scalarField(field::rho);
+  const auto& rest = fluid.scalarField(field::restDensity);
   Vector centre = Vector::Zero(), drift = Vector::Zero();
   for (std::size_t i = 0; i < x.size(); ++i) {
     centre += x[i];
@@ -92,7 +93,7 @@ StaticDropResult staticDropWith(int dimension, int across, double capillaryTimes
   }
   result.meanSpeed = speedSum / n / capillarySpeed;
   if constexpr (std::is_same_v<Tension, ContinuumSurfaceForce>) {
-    const auto& kappa = fluid.scalarField("curvature");
+    const auto& kappa = fluid.scalarField(field::curvature);
     double kw = 0, w = 0, ps = 0;
     for (std::size_t i = 0; i < x.size(); ++i) {
       if (!run.tension.onSurface()[i]) continue;
@@ -140,10 +141,11 @@ OscillationResult oscillatingDropWith(int dimension, int across, double periods,
                                  std::sqrt(1000.0 * (dimension - 1) * sigma / (rho * R))) *
                         options.soundSpeedScale);
   const double c = flow.soundSpeed;
-  auto& U = fluid.vectorField("U");
+  auto& U = fluid.vectorField(field::U);
   for (std::size_t i = 0; i < fluid.size(); ++i) {
     const Vector& x = fluid.positions()[i];
-    fluid.scalarField("rho")[i] = rho + static_cast<Real>(sigma * (dimension - 1) / R / (c * c));
+    fluid.scalarField(field::rho)[i] =
+        rho + static_cast<Real>(sigma * (dimension - 1) / R / (c * c));
     U[i] = dimension == 2 ? Vector(A * x[0], -A * x[1], 0)
                           : Vector(-A * x[0], -A * x[1], 2 * A * x[2]);
   }
@@ -199,12 +201,12 @@ SessileResult settleDrop(CapillaryRun<Tension>& run, ParticleCloud& fluid,
     if (!options.trace || ++steps % traceEvery != 0) continue;
     double fastest = 0, lowest = 1e9, kmax = 0;
     std::size_t f = 0;
-    const auto& U = fluid.vectorField("U");
+    const auto& U = fluid.vectorField(field::U);
     for (std::size_t i = 0; i < fluid.size(); ++i) {
       fastest = std::max(fastest, static_cast<double>(U[i].norm()));
       if (U[i].norm() > U[f].norm()) f = i;
       lowest = std::min(lowest, static_cast<double>(fluid.positions()[i][up] / dx));
-      kmax = std::max(kmax, std::abs(static_cast<double>(fluid.scalarField("curvature")[i])));
+      kmax = std::max(kmax, std::abs(static_cast<double>(fluid.scalarField(field::curvature)[i])));
     }
     std::cout << "  t " << run.time << " fastest " << fastest << " lowest " << lowest
               << " dx, largest |kappa| dx " << kmax * dx << std::endl;
@@ -217,9 +219,9 @@ SessileResult settleDrop(CapillaryRun<Tension>& run, ParticleCloud& fluid,
         std::cout << "    fastest at " << (fluid.positions()[f] / dx).transpose() << " dx, U "
                   << U[f].transpose() << ", " << near - 1 << " fluid within h, g "
                   << run.tension.colourGradient()[f].transpose() * dx << " /dx, kappa dx "
-                  << fluid.scalarField("curvature")[f] * dx << ", surface "
+                  << fluid.scalarField(field::curvature)[f] * dx << ", surface "
                   << int(run.tension.onSurface()[f]) << ", a "
-                  << fluid.vectorField("acceleration")[f].transpose() << std::endl;
+                  << fluid.vectorField(field::acceleration)[f].transpose() << std::endl;
       }
     }
   }
@@ -316,9 +318,9 @@ SessileResult sessileDropWith(double degrees, int layers, double capillaryTimes,
         const std::size_t index = wall.size();
         wall.resize(index + 1);
         wall.positions()[index] = cylinderCentre + radius * normal;
-        wall.scalarField("volume")[index] = dx * dx;
-        wall.vectorField("normal")[index] = normal;
-        wall.scalarField("wallDistance")[index] = (ring + Real(0.5)) * dx;
+        wall.scalarField(field::volume)[index] = dx * dx;
+        wall.vectorField(field::normal)[index] = normal;
+        wall.scalarField(field::wallDistance)[index] = (ring + Real(0.5)) * dx;
       }
     }
   } else {
@@ -469,9 +471,9 @@ GapResult gapEntry(int gap, double ratio, double capillaryTimes, double degrees,
       const std::size_t k = wall.size();
       wall.resize(k + 1);
       wall.positions()[k] = x;
-      wall.scalarField("volume")[k] = dx * dx;
-      wall.vectorField("normal")[k] = (nearest - x) / distance;
-      wall.scalarField("wallDistance")[k] = distance;
+      wall.scalarField(field::volume)[k] = dx * dx;
+      wall.vectorField(field::normal)[k] = (nearest - x) / distance;
+      wall.scalarField(field::wallDistance)[k] = distance;
     }
   }
   ParticleCloud fluid = latticeFluid(

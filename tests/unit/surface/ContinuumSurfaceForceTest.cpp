@@ -19,6 +19,7 @@
 
 #include "CapillaryCases.h"
 #include "SurfaceTensionTestCases.h"
+#include "particles/FieldNames.h"
 #include "particles/Neighbourhood.h"
 #include "particles/WendlandKernel.h"
 #include "sph/FlowTestCases.h"
@@ -85,7 +86,7 @@ struct SurfaceCase {
         testing::tensionSettings(dimension, 3 * dx, dx, 0.07), fluid,
         std::vector<const ParticleCloud*>{}, *neighbourhood);
     neighbourhood->update();
-    auto& a = fluid.vectorField("acceleration");
+    auto& a = fluid.vectorField(field::acceleration);
     std::fill(a.begin(), a.end(), Vector::Zero());
     tension->addAcceleration();
   }
@@ -103,8 +104,8 @@ TEST(ContinuumSurfaceForce, AFlatSurfaceHasNoCurvatureNoForceAndItsFacesNormals)
     SurfaceCase slab(dimension, dx, lower, upper, [&](const Vector& x) { return x[1] < thick; },
                      {true, false, dimension == 3});
     const auto& x = slab.fluid.positions();
-    const auto& kappa = slab.fluid.scalarField("curvature");
-    const auto& a = slab.fluid.vectorField("acceleration");
+    const auto& kappa = slab.fluid.scalarField(field::curvature);
+    const auto& a = slab.fluid.vectorField(field::acceleration);
     int surface = 0;
     for (std::size_t i = 0; i < x.size(); ++i) {
       EXPECT_NEAR(kappa[i], 0, 1e-6 / dx) << dimension << "D particle " << i;
@@ -186,18 +187,18 @@ TEST(ContinuumSurfaceForce, TheFlowsColourGradientIsTheModelsOwn) {
   // frozen metal with no melt within two hops (the flow's loop skips it, leaving NaN): the
   // model sums it within a hop of the rest, and leaves the farther metal at g = 0; the melt's
   // curvature is the same bits as with every g summed
-  auto& frozen = fluid.addScalarField("frozen");
+  auto& frozen = fluid.addScalarField(field::frozen);
   for (std::size_t i = 0; i < fluid.size(); ++i) frozen[i] = fluid.positions()[i][1] < 10 * dx;
   run.flow.computeRatesAndKick(0);
   ASSERT_EQ(run.tension.passesWithFlowsGradient(), before + 2);
   const std::vector<Vector> withFrozen = run.tension.colourGradient();
-  const std::vector<Real> curvature = fluid.scalarField("curvature");
+  const std::vector<Real> curvature = fluid.scalarField(field::curvature);
   run.tension.addAcceleration();  // its own sums throughout
   std::size_t melt = 0, left = 0;
   for (std::size_t i = 0; i < own.size(); ++i) {
     if (frozen[i] == 0) {
       ++melt;
-      EXPECT_EQ(curvature[i], fluid.scalarField("curvature")[i]) << "particle " << i;
+      EXPECT_EQ(curvature[i], fluid.scalarField(field::curvature)[i]) << "particle " << i;
     }
     left += withFrozen[i] == Vector::Zero() && run.tension.colourGradient()[i] != Vector::Zero();
   }
@@ -257,7 +258,7 @@ TEST(ContinuumSurfaceForce, SameBitsOnOneAndTwoThreads) {
     settings.cosContactAngle = Real(0.5);
     ContinuumSurfaceForce tension(settings, fluid, {&wall}, neighbourhood);
     neighbourhood.update(CloudOrder::keep);
-    auto& a = fluid.vectorField("acceleration");
+    auto& a = fluid.vectorField(field::acceleration);
     std::fill(a.begin(), a.end(), Vector::Zero());
     tension.addAcceleration();
     turned = 0;
@@ -294,7 +295,7 @@ EquilibriumResult laplaceEquilibrium(int dimension, int layers) {
   const double radius = dimension == 2 ? std::sqrt(n * dx * dx / std::numbers::pi)
                                        : std::cbrt(3 * n * dx * dx * dx / (4 * std::numbers::pi));
   const double laplace = sigma * (dimension - 1) / radius;
-  for (Real& density : fluid.scalarField("rho")) {
+  for (Real& density : fluid.scalarField(field::rho)) {
     density = rho + static_cast<Real>(laplace / (c * c));
   }
   FlowSettings flow;
@@ -304,13 +305,13 @@ EquilibriumResult laplaceEquilibrium(int dimension, int layers) {
   testing::CapillaryRun<ContinuumSurfaceForce> run(
       flow, testing::tensionSettings(dimension, 3 * dx, dx, sigma), fluid, {});
   run.flow.computeRatesAndKick(0);  // the rates (a kick of no time)
-  auto& a = fluid.vectorField("acceleration");
+  auto& a = fluid.vectorField(field::acceleration);
   const std::vector<Vector> total(a.begin(), a.end());
   // the force alone, at the same positions
   std::fill(a.begin(), a.end(), Vector::Zero());
   run.tension.addAcceleration();
   const std::vector<Vector> force(a.begin(), a.end());
-  const auto& kappa = fluid.scalarField("curvature");
+  const auto& kappa = fluid.scalarField(field::curvature);
   const auto& x = fluid.positions();
   EquilibriumResult result;
   double forceSquares = 0, residualSquares = 0, forceSum = 0, radial = 0, count = 0;

@@ -9,6 +9,7 @@
 #include <cmath>
 
 #include "SurfaceTensionTestCases.h"
+#include "particles/FieldNames.h"
 
 namespace sphcast {
 namespace {
@@ -40,7 +41,7 @@ TEST(DropletStability, AtRestForAHundredThousandSteps) {
       ASSERT_TRUE(x[i].allFinite()) << "step " << step;
       farthest = std::max(farthest, static_cast<double>((x[i] - centre).norm()));
       densityDeviation =
-          std::max(densityDeviation, std::abs(fluid.scalarField("rho")[i] / rho - 1.0));
+          std::max(densityDeviation, std::abs(fluid.scalarField(field::rho)[i] / rho - 1.0));
       for (const std::uint32_t j : run.neighbourhood.pairs(fluid, fluid).of(i)) {
         closest = std::min(closest, static_cast<double>((x[i] - x[j]).norm()));
       }

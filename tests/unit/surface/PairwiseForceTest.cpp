@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "SurfaceTensionTestCases.h"
+#include "particles/FieldNames.h"
 #include "particles/Neighbourhood.h"
 #include "sph/FlowTestCases.h"
 #include "surface/PairwiseForce.h"
@@ -44,7 +45,7 @@ std::vector<Vector> acceleration(int dimension, Real dx, ParticleCloud& fluid,
   settings.cosContactAngle = cosTheta;
   PairwiseForce tension(settings, fluid, walls, neighbourhood);
   neighbourhood.update();
-  auto& a = fluid.vectorField("acceleration");
+  auto& a = fluid.vectorField(field::acceleration);
   std::fill(a.begin(), a.end(), Vector::Zero());
   tension.addAcceleration();
   return a;

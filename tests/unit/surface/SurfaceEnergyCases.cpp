@@ -12,6 +12,7 @@
 #include <Eigen/Dense>
 
 #include "SurfaceTensionTestCases.h"
+#include "particles/FieldNames.h"
 #include "particles/Neighbourhood.h"
 #include "sph/FlowTestCases.h"
 #include "surface/SurfaceEnergyTension.h"
@@ -29,7 +30,7 @@ double slabTension(const ParticleCloud& fluid, const SurfaceTensionSettings& set
   auto energyAt = [&](Real e) {
     ParticleCloud copy = fluid;
     for (Vector& x : copy.positions()) x[0] = lower + (x[0] - lower) * (1 + e);
-    for (Real& r : copy.scalarField("rho")) r /= 1 + e;
+    for (Real& r : copy.scalarField(field::rho)) r /= 1 + e;
     PeriodicBox box;
     box.setPeriodic(0, lower, length * (1 + e));
     if (settings.dimension == 3) box.setPeriodic(2, lower, length);
@@ -42,9 +43,9 @@ double slabTension(const ParticleCloud& fluid, const SurfaceTensionSettings& set
   const Real e = Real(1e-5);
   const double slope = (energyAt(e) - energyAt(-e)) / (2 * e);
   double work = 0;
-  const auto& p = fluid.scalarField("p");
+  const auto& p = fluid.scalarField(field::p);
   for (std::size_t i = 0; i < fluid.size(); ++i) {
-    work += p[i] * fluid.scalarField("mass")[i] / fluid.scalarField("rho")[i];
+    work += p[i] * fluid.scalarField(field::mass)[i] / fluid.scalarField(field::rho)[i];
   }
   return (slope - work) / (2 * area);
 }
@@ -109,12 +110,12 @@ DropletResult oscillatingDroplet(const DropletSetup& setup) {
   tension.coreRadius = static_cast<Real>(setup.core);
   const Real A = setup.amplitude * omegaLamb;  // a0 omega / R
   for (std::size_t i = 0; i < fluid.size(); ++i) {
-    fluid.scalarField("rho")[i] = rho + laplace / (c * c);
+    fluid.scalarField(field::rho)[i] = rho + laplace / (c * c);
   }
   CapillaryRun run(flow, tension, fluid, {});
   // The lattice's staircase surface relaxes first, its energy (a large multiple of the mode's)
   // taken out by damping the velocities, over `relaxation` capillary times.
-  auto& U = fluid.vectorField("U");
+  auto& U = fluid.vectorField(field::U);
   const double relaxEnd = setup.relaxation * std::sqrt(rho * std::pow(radius, 3) / sigma);
   while (run.time < relaxEnd) {
     run.step(run.stableDeltaT());
@@ -154,7 +155,7 @@ DropletResult oscillatingDroplet(const DropletSetup& setup) {
     const long trace = setup.traceEvery;
     if (trace > 0 && static_cast<long>(result.steps) % trace == 0) {
       double kinetic = 0;
-      for (const Vector& u : fluid.vectorField("U")) kinetic += 0.5 * u.squaredNorm();
+      for (const Vector& u : fluid.vectorField(field::U)) kinetic += 0.5 * u.squaredNorm();
       double closest = 1e9;
       const auto& xs = fluid.positions();
       for (std::size_t i = 0; i < xs.size(); ++i) {
@@ -167,7 +168,7 @@ DropletResult oscillatingDroplet(const DropletSetup& setup) {
     }
     times.push_back(t0 + dt);
     moments.push_back(now);
-    for (const Real r : fluid.scalarField("rho")) {
+    for (const Real r : fluid.scalarField(field::rho)) {
       result.largestDensityDeviation =
           std::max(result.largestDensityDeviation, std::abs(r / rho - 1));
     }
@@ -231,7 +232,8 @@ StaticDropletResult staticDroplet(const StaticDropletSetup& setup) {
   SurfaceTensionSettings tension = tensionSettings(d, h, dx, sigma);
   tension.densityCoupling = setup.densityCoupling;
   tension.coreRadius = core;
-  for (Real& r : fluid.scalarField("rho")) r = rho + static_cast<Real>(result.laplace) / (c * c);
+  for (Real& r : fluid.scalarField(field::rho))
+    r = rho + static_cast<Real>(result.laplace) / (c * c);
   CapillaryRun run(flow, tension, fluid, {});
   if (slab) {
     std::cout << "lattice slab: mechanical tension / sigma "
@@ -253,11 +255,11 @@ StaticDropletResult staticDroplet(const StaticDropletSetup& setup) {
   for (std::size_t i = 0; i < fluid.size(); ++i) {
     const Vector offset = fluid.positions()[i] - centre;
     if ((slab ? std::abs(offset[1]) : offset.norm()) < 0.5 * result.radius) {
-      pressure += fluid.scalarField("p")[i];
+      pressure += fluid.scalarField(field::p)[i];
       ++inner;
     }
-    result.spuriousVelocity =
-        std::max(result.spuriousVelocity, static_cast<double>(fluid.vectorField("U")[i].norm()));
+    result.spuriousVelocity = std::max(result.spuriousVelocity,
+                                       static_cast<double>(fluid.vectorField(field::U)[i].norm()));
   }
   result.jump = pressure / inner;
   if (slab) {
@@ -330,7 +332,7 @@ SettledDrop settleOnWall(const WallDropSetup& setup) {
   const auto start = std::chrono::steady_clock::now();
   while (run.time < end) {
     run.step(run.stableDeltaT());
-    for (Vector& u : fluid.vectorField("U")) u *= damping;
+    for (Vector& u : fluid.vectorField(field::U)) u *= damping;
     ++result.steps;
   }
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -340,7 +342,7 @@ SettledDrop settleOnWall(const WallDropSetup& setup) {
   // wall surface at y = 0, cos theta = -y_centre / R. A centre higher than R is a drop that
   // has left the wall.
   const auto& x = fluid.positions();
-  const auto& energy = fluid.scalarField("surfaceEnergy");
+  const auto& energy = fluid.scalarField(field::surfaceEnergy);
   const Real largest = *std::max_element(energy.begin(), energy.end());
   Eigen::MatrixXd a(0, 3);
   Eigen::VectorXd b(0);

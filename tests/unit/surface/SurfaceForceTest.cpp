@@ -11,6 +11,7 @@
 #include <omp.h>
 
 #include "SurfaceTensionTestCases.h"
+#include "particles/FieldNames.h"
 #include "sph/ExposedArea.h"
 #include "sph/FlowTestCases.h"
 
@@ -22,11 +23,11 @@ using testing::tensionSettings;
 
 // The force of the model on every particle (m a, acceleration zeroed first).
 std::vector<Vector> forces(SurfaceEnergyTension& tension, ParticleCloud& fluid) {
-  auto& a = fluid.vectorField("acceleration");
+  auto& a = fluid.vectorField(field::acceleration);
   std::fill(a.begin(), a.end(), Vector::Zero());
   tension.addAcceleration();
   std::vector<Vector> f(fluid.size());
-  for (std::size_t i = 0; i < f.size(); ++i) f[i] = fluid.scalarField("mass")[i] * a[i];
+  for (std::size_t i = 0; i < f.size(); ++i) f[i] = fluid.scalarField(field::mass)[i] * a[i];
   return f;
 }
 
@@ -142,7 +143,7 @@ TEST(SurfaceEnergy, DensityDerivativeIsTheDerivativeOfTheEnergy) {
         d, dx, Vector::Constant(-radius - dx), Vector::Constant(radius + dx),
         [&](const Vector& x) { return x.norm() < radius; }, 1000, 1e-3, 0.15);
     for (std::size_t i = 0; i < fluid.size(); ++i) {  // densities a few per cent apart
-      fluid.scalarField("rho")[i] = 1000 * (1 + Real(0.03) * std::sin(Real(i)));
+      fluid.scalarField(field::rho)[i] = 1000 * (1 + Real(0.03) * std::sin(Real(i)));
     }
     Neighbourhood neighbourhood(h, PeriodicBox());
     neighbourhood.addCloud(fluid, Neighbourhood::Motion::moving);
@@ -154,7 +155,7 @@ TEST(SurfaceEnergy, DensityDerivativeIsTheDerivativeOfTheEnergy) {
     for (const Real value : psi) largest = std::max(largest, std::abs(value));
     ASSERT_GT(largest, 0);
     for (std::size_t j = 0; j < fluid.size(); ++j) {
-      Real& rho = fluid.scalarField("rho")[j];
+      Real& rho = fluid.scalarField(field::rho)[j];
       const Real rho0 = rho, delta = Real(1e-6) * rho0;
       rho = rho0 + delta;
       const double plus = tension.energy();

@@ -13,6 +13,7 @@
 
 #include "core/dictionary/Dictionary.h"
 #include "materials/MaterialLibrary.h"
+#include "particles/FieldNames.h"
 #include "particles/Neighbourhood.h"
 #include "sph/FlowTestCases.h"
 #include "sph/WeaklyCompressibleFlow.h"
@@ -55,13 +56,13 @@ inline ParticleCloud fluidAtRest(int dimension, Real dx, const std::vector<Vecto
                                  Real rho, Real mu) {
   ParticleCloud fluid("fluid");
   fluid.resize(positions.size());
-  auto& U = fluid.addVectorField("U");
-  auto& density = fluid.addScalarField("rho");
-  auto& mass = fluid.addScalarField("mass");
-  auto& viscosity = fluid.addScalarField("viscosity");
-  auto& rest = fluid.addScalarField("restDensity");
-  fluid.addVectorField("acceleration");
-  fluid.addScalarField("densityRate");
+  auto& U = fluid.addVectorField(field::U);
+  auto& density = fluid.addScalarField(field::rho);
+  auto& mass = fluid.addScalarField(field::mass);
+  auto& viscosity = fluid.addScalarField(field::viscosity);
+  auto& rest = fluid.addScalarField(field::restDensity);
+  fluid.addVectorField(field::acceleration);
+  fluid.addScalarField(field::densityRate);
   for (std::size_t i = 0; i < positions.size(); ++i) {
     fluid.positions()[i] = positions[i];
     U[i] = Vector::Zero();
@@ -151,8 +152,8 @@ inline ParticleCloud floorInZ(int reach, Real dx) {
         [dx](int, int row) { return (-row - Real(0.5)) * dx; });
   }
   for (Vector& x : wall.positions()) x = Vector(x[0], x[2], x[1]);
-  for (Vector& n : wall.vectorField("normal")) n = Vector(0, 0, 1);
-  for (Real& v : wall.scalarField("volume")) v = dx * dx * dx;  // addWallCells gives 2D's dx^2
+  for (Vector& n : wall.vectorField(field::normal)) n = Vector(0, 0, 1);
+  for (Real& v : wall.scalarField(field::volume)) v = dx * dx * dx;  // addWallCells gives 2D's dx^2
   return wall;
 }
 
