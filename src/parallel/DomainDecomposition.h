@@ -23,8 +23,8 @@ class DomainDecomposition : public HaloSync {
  public:
   struct Cloud {
     ParticleCloud* cloud = nullptr;
-    bool moves = false;             // migrates at every rebuild (the metal); else at re-balances
-    std::int64_t weight = 1;        // one particle's share of a rank's work
+    bool moves = false;       // migrates at every rebuild (the metal); else at re-balances
+    std::int64_t weight = 1;  // one particle's share of a rank's work
   };
 
   // haloRadius: the neighbour search's reach (support radius plus skin).
@@ -51,6 +51,12 @@ class DomainDecomposition : public HaloSync {
                const std::source_location& where) override;
   void refresh(ParticleCloud& cloud, const std::vector<std::string>& fields,
                const std::source_location& where) override;
+  void sumOverRanks(std::vector<double>& values, const std::source_location& where) override {
+    comm_.sum(values, where);
+  }
+  double maxOverRanks(double value, const std::source_location& where) override {
+    return comm_.max(value, where);
+  }
 
   const Communicator& communicator() const { return comm_; }
   const RecursiveBisection& bisection() const { return bisection_; }

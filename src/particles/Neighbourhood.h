@@ -25,6 +25,10 @@ class HaloSync {
   // Collective: the halo's entries of the named fields of the cloud from their owners.
   virtual void refresh(ParticleCloud& cloud, const std::vector<std::string>& fields,
                        const std::source_location& where) = 0;
+  // Collective: each of `values` summed over the ranks, in place; and the largest of `value`
+  // (a model's sums over its owned particles: an implicit solve's dot products).
+  virtual void sumOverRanks(std::vector<double>& values, const std::source_location& where) = 0;
+  virtual double maxOverRanks(double value, const std::source_location& where) = 0;
 };
 
 // How a cloud is stored along the grid after a search.
@@ -100,6 +104,15 @@ class Neighbourhood {
                 std::source_location where = std::source_location::current()) const {
     if (haloSync_) haloSync_->refresh(cloud, fields, where);
   }
+  // Sums and maxima over the ranks of a decomposed run; a serial run's are its own.
+  void sumOverRanks(std::vector<double>& values,
+                    std::source_location where = std::source_location::current()) const {
+    if (haloSync_) haloSync_->sumOverRanks(values, where);
+  }
+  double maxOverRanks(double value,
+                      std::source_location where = std::source_location::current()) const {
+    return haloSync_ ? haloSync_->maxOverRanks(value, where) : value;
+  }
 
   // The list requested for (a, b), as of the last update(); throws Error if never requested.
   const NeighbourList& pairs(const ParticleCloud& a, const ParticleCloud& b) const;
@@ -127,12 +140,12 @@ class Neighbourhood {
     // at the last update: a rigid cloud's tell whether it moved, a moving cloud's (with a skin)
     // which of its particles moved
     std::vector<Vector> lastPositions;
-    std::vector<std::uint8_t> moved;      // per particle: moved since the last update
+    std::vector<std::uint8_t> moved;  // per particle: moved since the last update
   };
   struct Pairs {
-    std::size_t a, b;     // entries
-    NeighbourList list;   // closer than h
-    NeighbourList wide;   // closer than h + s, at the last rebuild (only with a skin)
+    std::size_t a, b;    // entries
+    NeighbourList list;  // closer than h
+    NeighbourList wide;  // closer than h + s, at the last rebuild (only with a skin)
     bool built = false;
   };
   std::size_t entryOf(const ParticleCloud& cloud) const;

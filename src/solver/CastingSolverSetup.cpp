@@ -320,8 +320,9 @@ void CastingSolver::setUpFlow() {
   info() << "Flow: weakly compressible SPH (" << settings.dimension << "D), densityScheme "
          << settings.densityScheme << ", kernelCorrection "
          << (settings.kernelCorrection ? "on" : "off") << ", viscousForm " << settings.viscousForm
-         << ", " << settings.walls.all.describe() << ", h = " << settings.supportRadius
-         << " m, c = " << settings.soundSpeed << " m/s\n"
+         << ", " << settings.walls.all.describe() << ", viscositySolver "
+         << describeViscositySolver(settings.viscositySolver, settings.implicitViscosity)
+         << ", h = " << settings.supportRadius << " m, c = " << settings.soundSpeed << " m/s\n"
          << "    pair lists: searched with h + " << models_.neighbourhood->skin()
          << " m, reused until particles may have closed in by that skin\n"
          << "    fluid " << fluid.name() << ": " << countOf(fluid) << " particles\n";
@@ -447,7 +448,9 @@ void CastingSolver::setUpSolidification() {
   SolidificationSettings settings = solidificationSetup_.settings;
   const Material& material = *solidificationSetup_.material;
   ParticleCloud& metal = cloudNamed(solidificationSetup_.cloud);
-  if (models_.flow) {
+  // The mush's viscosity is capped only where the flow steps it explicitly: solved implicitly
+  // (viscositySolver auto or implicit) it sets no step limit (sph/ImplicitViscosity.h).
+  if (models_.flow && models_.flow->settings().viscositySolver == ViscositySolver::explicitForm) {
     const FlowSettings& flow = flowSetup_.settings;
     const double spacing = models_.fluid->attributes().at("spacing");
     // 0.9 of the viscosity whose explicit limit 0.125 dx^2 rho / mu is the acoustic step

@@ -49,6 +49,15 @@ void RunMonitor::logStep(bool printBlock, bool cooling) {
          << " J  moved back from walls "
          << comm_.sum(static_cast<std::int64_t>(models_.flow->lastWallClearance().corrected))
          << '\n';
+    const FlowWork& work = models_.flow->work();
+    if (work.implicitViscousSteps > 0) {  // (every rank takes the same steps alike)
+      const ImplicitViscosityReport& last = models_.flow->lastViscousSolve();
+      line << "Viscosity solved implicitly in " << work.implicitViscousSteps << " of "
+           << work.flowSteps << " flow steps, "
+           << double(work.viscousIterations) / double(work.implicitViscousSteps)
+           << " iterations a solve (the last " << last.iterations << ", residual " << last.residual
+           << ")\n";
+    }
     info() << line.str();
   }
   if (!models_.movingMolds.empty())
@@ -128,6 +137,7 @@ void RunMonitor::logTimeSpent() {
   if (models_.flow) {
     const FlowTimings& t = models_.flow->timings();
     line << " wall clearance " << t.wallClearance << ", flow rates " << t.rates;
+    if (t.viscousSolve > 0) line << ", implicit viscosity " << t.viscousSolve;
     if (models_.surfaceTension)
       line << " (surface tension " << models_.surfaceTension->seconds() << ")";
     line << ", flow integration " << t.integration << ",";

@@ -80,6 +80,17 @@ struct MorrisViscosity {
   }
 };
 
+// The viscous term left out of the rates: the flow steps it implicitly after the second kick
+// (ImplicitViscosity.h, viscositySolver implicit or auto in system/sphSchemes).
+struct ImplicitlySolvedViscosity {
+  static constexpr const char* name = "implicit";
+  template <int Dim>
+  static Vector acceleration(Real, Real, Real, const Vector&, const Vector&, Real, const Vector&,
+                             Real) {
+    return Vector::Zero();
+  }
+};
+
 // Contributions of one fluid neighbour j to fluid particle i (paper eqs. (1) and (2)):
 //   drho_i/dt += 2 rho_i (m_j / rho_j) (v_i - v*) . grad_i W_ij
 //   dv_i/dt   += -2 m_j p* / (rho_i rho_j) grad_i W_ij  + the Viscosity form's term

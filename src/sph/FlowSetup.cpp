@@ -43,11 +43,46 @@ FlowSetup readFlowSetup(const CaseDescription& description) {
   const Dictionary& schemes = description.schemes();
   schemes.checkKeys({"densityScheme", "kernelCorrection", "viscousForm", "wallSlip",
                      "wallDissipation", "supportRadius", "soundSpeed", "deltaSPHCoeffs",
-                     "wallClearance", "neighbourListSkin"});
+                     "wallClearance", "neighbourListSkin", "viscositySolver",
+                     "viscositySolverCoeffs"});
   FlowSettings& settings = setup.settings;
   settings.densityScheme = schemes.getChoice("densityScheme", {"riemann", "standard", "deltaSPH"});
   settings.kernelCorrection = schemes.getOrDefault<bool>("kernelCorrection", false);
   settings.viscousForm = schemes.getChoice("viscousForm", {"Morris", "Cleary"});
+  const std::string solver =
+      schemes.getChoiceOrDefault("viscositySolver", {"auto", "explicit", "implicit"}, "auto");
+  settings.viscositySolver = solver == "implicit"   ? ViscositySolver::implicitForm
+                             : solver == "explicit" ? ViscositySolver::explicitForm
+                                                    : ViscositySolver::automatic;
+  if (solver == "implicit" && settings.viscousForm == "Cleary") {
+    throw DictionaryError(schemes.location("viscositySolver"),
+                          "viscositySolver implicit solves the Morris form; set viscousForm "
+                          "Morris in " +
+                              schemes.name());
+  }
+  if (schemes.found("viscositySolverCoeffs")) {
+    const Dictionary& coeffs = schemes.subDict("viscositySolverCoeffs");
+    coeffs.checkKeys({"tolerance", "relTol", "maxIter"});
+    ImplicitViscositySettings& implicit = settings.implicitViscosity;
+    implicit.tolerance = coeffs.getOrDefault<Real>("tolerance", implicit.tolerance);
+    implicit.relativeTolerance = coeffs.getOrDefault<Real>("relTol", implicit.relativeTolerance);
+    implicit.maxIterations = coeffs.getOrDefault<int>("maxIter", implicit.maxIterations);
+    if (!(implicit.relativeTolerance >= 0 && implicit.relativeTolerance < 1)) {
+      throw DictionaryError(
+          coeffs.location("relTol"),
+          "'relTol' (of the residual against its start) must lie in [0, 1) in " + coeffs.name());
+    }
+    if (!(implicit.tolerance > 0 && implicit.tolerance < 1)) {
+      throw DictionaryError(coeffs.location("tolerance"),
+                            "'tolerance' (of the residual against the right side) must lie in "
+                            "(0, 1) in " +
+                                coeffs.name());
+    }
+    if (implicit.maxIterations < 1) {
+      throw DictionaryError(coeffs.location("maxIter"),
+                            "'maxIter' must be at least 1 in " + coeffs.name());
+    }
+  }
   settings.walls.all = readWallCondition(schemes, WallCondition());
   for (const auto& [cloud, entry] : description.wallEntries()) {
     settings.walls.own[cloud] = readWallCondition(*entry, settings.walls.all);

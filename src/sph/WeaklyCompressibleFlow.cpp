@@ -72,6 +72,15 @@ void WeaklyCompressibleFlow::checkInput() {
     throw Error("unknown viscousForm '" + settings_.viscousForm +
                 "'; valid viscousForm are: (Morris Cleary)");
   }
+  // The implicit solve is the Morris form's (ImplicitViscosity.h): with Cleary's the viscosity
+  // stays explicit under auto, and implicit is refused.
+  if (settings_.viscousForm == "Cleary") {
+    if (settings_.viscositySolver == ViscositySolver::implicitForm) {
+      throw Error("viscositySolver implicit solves the Morris form; set viscousForm Morris");
+    }
+    settings_.viscositySolver = ViscositySolver::explicitForm;
+  }
+  implicitViscosity_ = ImplicitViscosity(settings_.implicitViscosity);
   const auto spacing = fluid_.attributes().find("spacing");
   if (spacing == fluid_.attributes().end() || !(spacing->second > 0)) {
     throw Error("flow: cloud '" + fluid_.name() +
@@ -307,6 +316,7 @@ void WeaklyCompressibleFlow::computeRatesAndKick(double deltaT) {
   auto& rho = fluid_.scalarField(field::rho);
   const auto& densityRate = fluid_.scalarField(field::densityRate);
   const auto& acceleration = fluid_.vectorField(field::acceleration);
+  viscosityImplicit_ = solvesViscosityImplicitly(deltaT);
   addWallTime(timings_.rates, [&] {
     updatePressure();
     computeRates();
@@ -319,6 +329,7 @@ void WeaklyCompressibleFlow::computeRatesAndKick(double deltaT) {
     }
     updatePressure();
   });
+  if (viscosityImplicit_) solveViscosity(dt);
 }
 
 // deltaSPH's step: Stormer-Verlet with the density as a position-like variable,
@@ -337,6 +348,7 @@ void WeaklyCompressibleFlow::computeRatesAndKick(double deltaT) {
 // the pairs (the 2D dam break at a/dx = 20: 4.2 s against riemann's 2.8 s).
 void WeaklyCompressibleFlow::computeRatesAndKickStormerVerlet(Real dt) {
   const Real halfDt = Real(0.5) * dt;
+  viscosityImplicit_ = solvesViscosityImplicitly(dt);
   auto& v = fluid_.vectorField(field::U);
   auto& rho = fluid_.scalarField(field::rho);
   const auto& densityRate = fluid_.scalarField(field::densityRate);
@@ -352,6 +364,60 @@ void WeaklyCompressibleFlow::computeRatesAndKickStormerVerlet(Real dt) {
 #pragma omp parallel for
     for (std::size_t i = 0; i < v.size(); ++i) v[i] += halfDt * acceleration[i];
   });
+  if (viscosityImplicit_) solveViscosity(dt);
+}
+
+double WeaklyCompressibleFlow::explicitViscousLimit() const {
+  const auto& rho = fluid_.scalarField(field::rho);
+  const auto& mu = fluid_.scalarField(field::viscosity);
+  double largest = 0;
+  const std::size_t owned = fluid_.ownedSize();
+#pragma omp parallel for reduction(max : largest)
+  for (std::size_t i = 0; i < owned; ++i) {
+    largest = std::max(largest, static_cast<double>(mu[i] / rho[i]));
+  }
+  largest = neighbourhood_.maxOverRanks(largest);  // every rank decides alike
+  const double dx = fluid_.attributes().at("spacing");
+  return largest > 0 ? 0.125 * dx * dx / largest : std::numeric_limits<double>::infinity();
+}
+
+bool WeaklyCompressibleFlow::solvesViscosityImplicitly(double deltaT) const {
+  switch (settings_.viscositySolver) {
+    case ViscositySolver::implicitForm:
+      return true;
+    case ViscositySolver::automatic:
+      return deltaT > explicitViscousLimit();
+    default:
+      return false;
+  }
+}
+
+// After the second kick: U stepped by the viscous term over dt, backward in time, and the
+// walls' loads given the viscous shear the rates left out.
+void WeaklyCompressibleFlow::solveViscosity(Real dt) {
+  std::vector<ViscousWall> walls;
+  for (std::size_t w = 0; w < walls_.size(); ++w) {
+    const ParticleCloud& wall = *walls_[w];
+    walls.push_back(
+        {&wall.positions(), wall.hasVectorField(field::U) ? &wall.vectorField(field::U) : nullptr,
+         &wall.scalarField(field::volume), &wall.vectorField(field::normal),
+         &wall.scalarField(field::wallDistance), &wallPairs(w), settings_.walls.of(wall.name())});
+  }
+  const Real spacing = static_cast<Real>(fluid_.attributes().at("spacing"));
+  addWallTime(timings_.viscousSolve, [&] {
+    lastViscousSolve_ = settings_.dimension == 2
+                            ? implicitViscosity_.solve<2>(fluid_, neighbourhood_, walls,
+                                                          settings_.supportRadius, spacing, dt)
+                            : implicitViscosity_.solve<3>(fluid_, neighbourhood_, walls,
+                                                          settings_.supportRadius, spacing, dt);
+  });
+  ++work_.implicitViscousSteps;
+  work_.viscousIterations += static_cast<std::uint64_t>(lastViscousSolve_.iterations);
+  for (std::size_t w = 0; w < walls_.size(); ++w) {
+    if (!loadMeasured_[w]) continue;
+    wallLoads_[w].force += implicitViscosity_.wallForces()[w];
+    wallLoads_[w].torque += implicitViscosity_.wallTorques()[w];
+  }
 }
 
 FlowStepLimits WeaklyCompressibleFlow::stepLimits(double maxCo) const {
@@ -412,13 +478,24 @@ FlowStepLimits WeaklyCompressibleFlow::stepLimits(double maxCo) const {
       forceLimiter = model->limitName();
     }
   }
-  return {maxCo * dx / (settings_.soundSpeed + fastest),
-          largestKinematicViscosity > 0 ? 0.125 * dx * dx / largestKinematicViscosity : infinite,
-          g > 0 ? 0.25 * std::sqrt(dx / g) : infinite,
-          largestAcceleration > 0 ? 0.25 * std::sqrt(dx / largestAcceleration) : infinite,
-          largestRelativeDensityRate > 0 ? maxDensityChange / largestRelativeDensityRate : infinite,
-          forceLimit,
-          forceLimiter};
+  FlowStepLimits limits{
+      maxCo * dx / (settings_.soundSpeed + fastest),
+      largestKinematicViscosity > 0 ? 0.125 * dx * dx / largestKinematicViscosity : infinite,
+      g > 0 ? 0.25 * std::sqrt(dx / g) : infinite,
+      largestAcceleration > 0 ? 0.25 * std::sqrt(dx / largestAcceleration) : infinite,
+      largestRelativeDensityRate > 0 ? maxDensityChange / largestRelativeDensityRate : infinite,
+      forceLimit,
+      forceLimiter};
+  // A viscosity solved implicitly sets no limit: always (implicit), or where its explicit limit
+  // is below every other (auto: solvesViscosityImplicitly then takes the step's length for it).
+  if (settings_.viscositySolver == ViscositySolver::implicitForm) {
+    limits.viscous = infinite;
+  } else if (settings_.viscositySolver == ViscositySolver::automatic) {
+    const double others = std::min({limits.acoustic, limits.bodyForce, limits.acceleration,
+                                    limits.densityRate, limits.forceModel});
+    if (limits.viscous < others) limits.viscous = infinite;
+  }
+  return limits;
 }
 
 }  // namespace sphcast

@@ -10,6 +10,7 @@
 #include "particles/Neighbourhood.h"
 #include "particles/ParticleCloud.h"
 #include "sph/FluidForceModel.h"
+#include "sph/ImplicitViscosity.h"
 #include "sph/KernelCorrection.h"
 #include "sph/WallClearance.h"
 
@@ -31,6 +32,10 @@ struct FlowSettings {
   Real deltaSPHDiffusion = Real(0.1);
   Real deltaSPHViscosity = Real(0.02);
   std::string viscousForm = "Morris";  // Morris | Cleary (FlowRates.h says why Morris)
+  // viscositySolver and viscositySolverCoeffs in system/sphSchemes (ImplicitViscosity.h); the
+  // implicit solve takes the Morris form
+  ViscositySolver viscositySolver = ViscositySolver::automatic;
+  ImplicitViscositySettings implicitViscosity;
   // The walls' conditions (boundaries/WallCondition.h): wallSlip and wallDissipation of
   // system/sphSchemes for every wall, a wall's own entry in physicsModels' flow walls for it.
   WallConditions walls;
@@ -51,9 +56,11 @@ struct FlowSettings {
 // The work the rate passes did and left out since the start, in particle-steps (one particle's
 // rates in one flow step), for the log's account of what the run skipped.
 struct FlowWork {
-  std::uint64_t flowSteps = 0;      // acceleration passes
-  std::uint64_t particleSteps = 0;  // every fluid particle at every acceleration pass
-  std::uint64_t skippedFrozen = 0;  // frozen with no melt within two neighbour hops
+  std::uint64_t flowSteps = 0;             // acceleration passes
+  std::uint64_t particleSteps = 0;         // every fluid particle at every acceleration pass
+  std::uint64_t skippedFrozen = 0;         // frozen with no melt within two neighbour hops
+  std::uint64_t implicitViscousSteps = 0;  // flow steps whose viscosity was solved implicitly
+  std::uint64_t viscousIterations = 0;     // the conjugate gradient's iterations in them
 };
 
 // Wall time spent in each part of the flow's steps, seconds since construction.
@@ -61,13 +68,14 @@ struct FlowTimings {
   double neighbourSearch = 0;  // grids, reorder, pair lists (a flow with its own neighbourhood)
   double wallClearance = 0;    // keepClearOfWalls
   double rates = 0;            // wall pressure, correction, the pair loops
+  double viscousSolve = 0;     // the implicit viscosity's solves
   double integration = 0;      // kicks and drifts
 };
 
 // Why the step is what it is: each limit in seconds, for the log.
 struct FlowStepLimits {
   double acoustic;      // maxCo dx / (c + |v|max)
-  double viscous;       // 0.125 dx^2 / nu_max
+  double viscous;       // 0.125 dx^2 / nu_max; infinite where the viscosity is solved implicitly
   double bodyForce;     // 0.25 sqrt(dx / |g|)
   double acceleration;  // 0.25 sqrt(dx / |a|max), Monaghan's force criterion
   double densityRate;   // 0.02 min rho / |drho/dt|: no density changes by more than 2 % a step
@@ -164,6 +172,10 @@ class WeaklyCompressibleFlow {
   // What the wall clearance did in the last step (for the run's health checks).
   const WallClearanceReport& lastWallClearance() const { return lastClearance_; }
 
+  // The last implicit viscosity solve (zero iterations before the first).
+  const ImplicitViscosityReport& lastViscousSolve() const { return lastViscousSolve_; }
+  const FlowSettings& settings() const { return settings_; }
+
   const FlowTimings& timings() const { return timings_; }
   const FlowWork& work() const { return work_; }
 
@@ -194,6 +206,11 @@ class WeaklyCompressibleFlow {
   }
   void computeRates(RatePart part = RatePart::both);
   void holdFrozenParticles();
+  // The explicit viscous limit 0.125 dx^2 / nu_max of the owned particles (infinite without
+  // viscosity), and whether a step of deltaT solves the viscosity implicitly.
+  double explicitViscousLimit() const;
+  bool solvesViscosityImplicitly(double deltaT) const;
+  void solveViscosity(Real dt);
   // Returns the count of frozen particles with no melt within two hops (the rate pass skips them).
   std::uint64_t markFrozenNearMelt();
   template <int Dim>
@@ -232,6 +249,9 @@ class WeaklyCompressibleFlow {
   std::vector<std::uint8_t> frozenTouchesMelt_, frozenNearMelt_;  // markFrozenNearMelt
   FlowTimings timings_;
   FlowWork work_;
+  ImplicitViscosity implicitViscosity_;
+  bool viscosityImplicit_ = false;  // in the rates of the step being taken
+  ImplicitViscosityReport lastViscousSolve_;
 };
 
 }  // namespace sphcast

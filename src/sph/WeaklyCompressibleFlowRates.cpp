@@ -386,7 +386,9 @@ void WeaklyCompressibleFlow::computeRatesWithInterface(RatePart part) {
         break;
     }
   };
-  if (settings_.viscousForm == "Morris") {
+  if (viscosityImplicit_ && part != RatePart::densityRate) {
+    withViscosity.template operator()<ImplicitlySolvedViscosity>();
+  } else if (settings_.viscousForm == "Morris") {
     withViscosity.template operator()<MorrisViscosity>();
   } else {
     withViscosity.template operator()<ClearyViscosity>();
