@@ -32,8 +32,8 @@ CaseDescription::CaseDescription(const CaseFolder& caseFolder)
   if (!std::filesystem::exists(modelsFile)) return;
   hasModels_ = true;
   models_ = Dictionary::read(modelsFile);
-  models_.checkKeys({"dimension", "periodic", "materials", "flow", "heatTransfer", "surfaceTension",
-                     "solidification"});
+  models_.checkKeys({"dimension", "periodic", "materials", "flow", "rheology", "heatTransfer",
+                     "surfaceTension", "solidification"});
   dimension_ = models_.getOrDefault<int>("dimension", 3);
   if (dimension_ != 2 && dimension_ != 3) {
     throw DictionaryError(models_.location("dimension"),

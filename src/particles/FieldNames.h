@@ -51,6 +51,10 @@ inline constexpr const char* solidusTime = "solidusTime";            // s
 inline constexpr const char* coolingRate = "coolingRate";            // -dT/dt at T_c, K/s
 inline constexpr const char* criticalGradient = "criticalGradient";  // |grad T| at T_c, K/m
 
+// rheology (rheology/ThixotropicSemiSolid.h)
+inline constexpr const char* structure = "structure";  // lambda: 1 fully built, 0 broken
+inline constexpr const char* shearRate = "shearRate";  // sqrt(2 D:D), 1/s
+
 // Pouring (inlets/PouringInlet.h) and the first contact with the mold (sph/FillTime.h)
 inline constexpr const char* inlet = "inlet";  // in an inlet's buffer: 1 + its number; 0 once out
 inline constexpr const char* fillTime = "fillTime";  // s (-1: no contact yet)

@@ -64,11 +64,11 @@ struct SolidificationSettings {
 // What the metal looks like after an update, for the log.
 struct SolidificationSummary {
   std::size_t particles = 0;
-  std::size_t liquid = 0;         // f_s = 0
-  std::size_t frozen = 0;         // f_s >= frozenSolidFraction
-  std::size_t solid = 0;          // f_s = 1
+  std::size_t liquid = 0;  // f_s = 0
+  std::size_t frozen = 0;  // f_s >= frozenSolidFraction
+  std::size_t solid = 0;   // f_s = 1
   std::size_t viscosityCapped = 0;
-  double solidFraction = 0;       // mass-weighted mean of f_s
+  double solidFraction = 0;  // mass-weighted mean of f_s
 };
 
 // f_s at temperature T of a material with a freezing range and u(T) (the formula above), for
@@ -98,6 +98,9 @@ class Solidification {
   std::vector<std::size_t> pendingCriticalGradients() const;
 
   const SolidificationSettings& settings() const { return settings_; }
+  // The fraction at which a particle freezes, set by the rheology (its coherency); the next
+  // update freezes by it.
+  void setFrozenSolidFraction(Real fraction) { settings_.frozenSolidFraction = fraction; }
   // Of the owned particles of every rank of comm in a decomposed run (collective).
   SolidificationSummary summary(const Communicator& comm = Communicator::self()) const;
   // Every particle fully solid (f_s = 1), on every rank of comm (collective).
@@ -109,8 +112,8 @@ class Solidification {
   Material material_;  // a copy: the tables it reads
   ParticleCloud& metal_;
   Real liquidusEnergy_, freezingRangeEnergy_;  // u(T_liq), u(T_liq) - u(T_sol)
-  Real criticalEnergy_, solidusEnergy_;         // u(T_c), u(T_sol)
-  Real criticalSpecificHeat_;                   // du/dT at T_c
+  Real criticalEnergy_, solidusEnergy_;        // u(T_c), u(T_sol)
+  Real criticalSpecificHeat_;                  // du/dT at T_c
 };
 
 }  // namespace sphcast

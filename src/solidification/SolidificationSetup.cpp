@@ -58,6 +58,7 @@ SolidificationSetup readSolidificationSetup(const CaseDescription& description) 
                             "'frozenSolidFraction' must lie in (0, 1] in " + dict.name());
     }
     setup.settings.frozenSolidFraction = static_cast<Real>(fraction);
+    setup.frozenSolidFractionAt = dict.location("frozenSolidFraction");
   }
   if (dict.found("cavitationPressure")) {
     setup.cavitationPressure = dict.get<Real>("cavitationPressure", pressure);

@@ -40,7 +40,10 @@ namespace sphcast {
 // cavitationPressure are errors. The solver caps the mush's viscosity at 0.9 times the
 // acoustic step's viscous limit, 0.9 x 0.125 rho_s(T_liq) dx c / maxCo (0.9: melt a few per cent
 // lighter than rho_s(T_liq), in a cavity, still steps at the acoustic limit), with the larger of
-// controlDict's maxCo and the cooling mode's.
+// controlDict's maxCo and the cooling mode's, where the flow steps the viscosity explicitly
+// (viscositySolver explicit); solved implicitly (auto, implicit) the mush keeps its mu(T).
+// A rheology that knows where the mush stops flowing (rheology thixotropicSemiSolid's maxPacking)
+// sets frozenSolidFraction, which is then not written here.
 // Cooling to the end in fewer steps (CastingSolver::evolveCooling): the flow's time runs
 // slower than the heat's by heat step / (flowStepsPerHeatStep acoustic steps). What feeds the
 // shrinkage is the flow time per heat step, flowStepsPerHeatStep x maxCo dx / c: a still melt
@@ -61,6 +64,8 @@ struct SolidificationSetup {
   bool endWhenSolid = false;
   std::string cloud;                 // that solidifies
   std::optional<Material> material;  // its
+  // where frozenSolidFraction is written, when it is (a rheology that sets it refuses it)
+  std::optional<SourceLocation> frozenSolidFractionAt;
 };
 
 SolidificationSetup readSolidificationSetup(const CaseDescription& description);

@@ -6,6 +6,7 @@
 #include "parallel/DomainDecomposition.h"
 #include "particles/Neighbourhood.h"
 #include "particles/ParticleCloud.h"
+#include "rheology/RheologyModel.h"
 #include "solidification/Solidification.h"
 #include "solver/MovingMolds.h"
 #include "solver/PouringInlets.h"
@@ -26,6 +27,7 @@ struct CastingModels {
   std::unique_ptr<DomainDecomposition> decomposition;  // a parallel run's
   std::unique_ptr<WeaklyCompressibleFlow> flow;
   std::unique_ptr<SurfaceTensionModel> surfaceTension;  // a force model of the flow
+  std::unique_ptr<RheologyModel> rheology;              // the fluid's viscosity beyond mu(T)
   ParticleCloud* fluid = nullptr;                       // the flow's
   std::vector<const ParticleCloud*> walls;              // the flow's walls
   std::unique_ptr<EnergyEquation> energy;

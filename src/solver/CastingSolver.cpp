@@ -101,9 +101,10 @@ void CastingSolver::flowFirstKickAndDrift(double deltaT) {
   models_.pouringInlets.pour(time_.value(), models_.decomposition.get());
 }
 
-// The second half, after the search: the rates at the new positions and the second kicks, the
-// inlets' buffers held.
+// The second half, after the search: the rheology's viscosity, the rates at the new positions
+// and the second kicks, the inlets' buffers held.
 void CastingSolver::flowRatesAndSecondKick(double deltaT) {
+  if (models_.rheology) models_.rheology->update(deltaT);  // the viscosity the rates take
   models_.flow->computeRatesAndKick(deltaT);
   models_.movingMolds.kick(deltaT, time_.value());
   models_.pouringInlets.holdBuffers();

@@ -70,6 +70,7 @@ class CastingSolver {
   void setUpBodies();
   void setUpHeat();
   void setUpSolidification();
+  void setUpRheology();
   void recordCriticalGradients();
   void startModels();
   void setUpFunctionObjects(const Dictionary& controlDict);

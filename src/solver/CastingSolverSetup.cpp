@@ -86,6 +86,7 @@ CastingSolver::CastingSolver(const CaseFolder& caseFolder, const Communicator& c
     if (!bodySetup_.bodies.empty()) setUpBodies();
     if (heatSetup_.enabled) setUpHeat();
     if (solidificationSetup_.enabled) setUpSolidification();
+    setUpRheology();
     startModels();
     // setCastFields wrote the first time without the clouds and fields the models add (a held
     // mold with its T, solidFraction, ...): written again with them, ParaView lists every field
@@ -444,6 +445,38 @@ void CastingSolver::setUpHeat() {
 
 // The fluid's rho_s, mu and solid fraction from its T before the flow's start state is computed
 // (a restart gets the same values: a frozen particle's rho_s is read back, the others follow T).
+// physicsModels' rheology: the Newtonian mu(T) (the default) needs nothing per step; another
+// law writes the fluid's viscosity before every flow step's rates, and where it knows the
+// solid fraction at which the mush stops flowing, the solidification freezes there.
+void CastingSolver::setUpRheology() {
+  const Dictionary* rheology = description_.modelsEntry("rheology");
+  if (!rheology) return;
+  const std::string name = rheology->found("model") ? rheologyModels().choose(*rheology, "model")
+                                                    : rheologyModels().names().front();
+  if (!models_.flow) {
+    throw DictionaryError(rheology->location(), "'rheology' in " + rheology->name() +
+                                                    " sets the flow's viscosity, but there is "
+                                                    "no flow (flow { model weaklyCompressible; })");
+  }
+  models_.rheology = rheologyModels().build(
+      name,
+      RheologyContext{*models_.fluid, description_.fluidMaterial(), *models_.neighbourhood,
+                      description_.dimension(), flowSetup_.settings.supportRadius},
+      *rheology);
+  info() << "Rheology: " << models_.rheology->description() << '\n';
+  const Real coherent = models_.rheology->coherentSolidFraction();
+  if (coherent <= 0 || !models_.solidification) return;
+  if (solidificationSetup_.frozenSolidFractionAt) {
+    throw DictionaryError(*solidificationSetup_.frozenSolidFractionAt,
+                          "'frozenSolidFraction' is set by rheology " + name +
+                              " (the mush stops flowing at f_s " + std::to_string(coherent) +
+                              "); remove it");
+  }
+  models_.solidification->setFrozenSolidFraction(coherent);
+  models_.solidification->update(time_.value(), 0.0);
+  info() << "    the metal freezes at f_s " << coherent << ", where the mush stops flowing\n";
+}
+
 void CastingSolver::setUpSolidification() {
   SolidificationSettings settings = solidificationSetup_.settings;
   const Material& material = *solidificationSetup_.material;

@@ -16,6 +16,7 @@
 #include "core/dictionary/Dictionary.h"
 #include "particles/ParticleCloud.h"
 #include "post/FunctionObject.h"
+#include "rheology/RheologyModel.h"
 #include "support/TemporaryCase.h"
 #include "surface/SurfaceTensionModel.h"
 #include "thermal/HeatTransferRegistration.h"
@@ -103,6 +104,7 @@ TEST(ModelRegistry, EveryRegisteredNameIsDocumented) {
   expectDocumented(functionObjects, "doc/design.md");
   expectDocumented(surfaceTensionModels().names(), "doc/physics.md");
   expectDocumented(heatTransferPaths().names(), "doc/physics.md");
+  expectDocumented(rheologyModels().names(), "doc/physics.md");
 }
 
 }  // namespace
