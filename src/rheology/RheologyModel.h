@@ -41,6 +41,9 @@ class RheologyModel {
   // The solid fraction at which the mush stops flowing and a particle freezes, or a negative
   // value where the model sets none (solidification's frozenSolidFraction then holds).
   virtual Real coherentSolidFraction() const { return Real(-1); }
+  // Whether update writes the viscosity (the solidification then leaves it alone); the
+  // Newtonian mu(T) is the solidification's to write.
+  virtual bool writesViscosity() const { return true; }
 };
 
 // The models by the names physicsModels gives them (rheology { model NAME; <NAME>Coeffs {} }),
@@ -56,6 +59,7 @@ class NewtonianViscosity : public RheologyModel {
   NewtonianViscosity(const RheologyContext& context, const Dictionary& settings);
   void update(double) override {}
   std::vector<std::string> fields() const override { return {}; }
+  bool writesViscosity() const override { return false; }
   std::string description() const override {
     return "Newtonian: mu(T) of the material's table (the paper's)";
   }

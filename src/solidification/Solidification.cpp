@@ -103,7 +103,7 @@ void Solidification::update(double time, double heatDeltaT) {
     // a frozen particle keeps the rho_s it froze with (its contraction moves nothing)
     if (!isFrozen || frozen[i] == 0) restDensity[i] = static_cast<Real>(density(T));
     frozen[i] = isFrozen ? Real(1) : Real(0);
-    viscosity[i] = std::min(static_cast<Real>(mu(T)), limit);
+    if (!rheologyWritesViscosity_) viscosity[i] = std::min(static_cast<Real>(mu(T)), limit);
     // the history
     if (energy > liquidusEnergy_) {
       liquidusTime[i] = criticalTime[i] = coolingRate[i] = solidusTime[i] = Real(-1);

@@ -101,6 +101,9 @@ class Solidification {
   // The fraction at which a particle freezes, set by the rheology (its coherency); the next
   // update freezes by it.
   void setFrozenSolidFraction(Real fraction) { settings_.frozenSolidFraction = fraction; }
+  // A rheology writes the fluid's viscosity before every flow step (rheology/RheologyModel.h):
+  // the updates then leave it as that law set it, so the written field is what the flow took.
+  void leaveViscosityToRheology() { rheologyWritesViscosity_ = true; }
   // Of the owned particles of every rank of comm in a decomposed run (collective).
   SolidificationSummary summary(const Communicator& comm = Communicator::self()) const;
   // Every particle fully solid (f_s = 1), on every rank of comm (collective).
@@ -114,6 +117,7 @@ class Solidification {
   Real liquidusEnergy_, freezingRangeEnergy_;  // u(T_liq), u(T_liq) - u(T_sol)
   Real criticalEnergy_, solidusEnergy_;        // u(T_c), u(T_sol)
   Real criticalSpecificHeat_;                  // du/dT at T_c
+  bool rheologyWritesViscosity_ = false;
 };
 
 }  // namespace sphcast

@@ -464,6 +464,9 @@ void CastingSolver::setUpRheology() {
                       description_.dimension(), flowSetup_.settings.supportRadius},
       *rheology);
   info() << "Rheology: " << models_.rheology->description() << '\n';
+  if (models_.solidification && models_.rheology->writesViscosity()) {
+    models_.solidification->leaveViscosityToRheology();
+  }
   const Real coherent = models_.rheology->coherentSolidFraction();
   if (coherent <= 0 || !models_.solidification) return;
   if (solidificationSetup_.frozenSolidFractionAt) {

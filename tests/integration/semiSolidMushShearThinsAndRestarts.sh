@@ -3,7 +3,8 @@
 # 300 K, with rheology thixotropicSemiSolid. The mush keeps its table's viscosity at rest
 # (solved implicitly: no step limit from it), its structure breaks down where the impact shears
 # it (structure below 1, within [0, 1]), the metal freezes at the model's maxPacking, a restart
-# reproduces the uninterrupted run bit for bit (the structure is read back), and a
+# reproduces the uninterrupted run bit for bit (the structure is read back), the written viscosity
+# is the one the flow took (not the table's at rest), and a
 # frozenSolidFraction written beside the rheology is an error naming file and line.
 . "$SPHCAST_TEST_TOOLS"
 
@@ -36,6 +37,26 @@ broken = min(structure)
 print(f"{len(cloud)} particles, {len(mush)} in the mush at 0.6 s; structure {broken:.3f} .. "
       f"{max(structure):.3f}, largest shear rate {max(p['shearRate'] for p in cloud.values()):.3g} 1/s")
 assert broken < 0.999, "no shear broke the structure anywhere"
+# the written viscosity is the one the flow took: below the table's mu(T) (AC4CH, log-linear in
+# T) where the structure broke down, mu(T) where the metal is liquid
+import math
+table = ((803.0, 4.88e4), (830.44, 4.73e4), (848, 2.154e3), (873, 1.86e2), (888.64, 1.57e-3),
+         (973, 1.28e-3))
+def mu(T):
+    if T <= table[0][0]: return table[0][1]
+    for (t0, m0), (t1, m1) in zip(table, table[1:]):
+        if T <= t1:
+            return math.exp(math.log(m0) + (T - t0) / (t1 - t0) * (math.log(m1) - math.log(m0)))
+    return table[-1][1]
+cloud = read_cloud("0.6/metal.vtp", ("structure", "solidFraction", "viscosity", "T"))
+thinned = [p for p in cloud.values() if 0 < p["solidFraction"] < 0.6 and p["structure"] < 0.99]
+assert thinned, "no mush particle with a broken structure at 0.6 s"
+assert all(p["viscosity"] < 0.99 * mu(p["T"]) for p in thinned), \
+    "the written viscosity is the table's at rest where the structure broke down"
+liquid = [p for p in cloud.values() if p["solidFraction"] == 0]
+# (within 1 %: the flow took mu at the last flow step's T, 0.14 % from the written T here)
+assert all(abs(p["viscosity"] / mu(p["T"]) - 1) < 1e-2 for p in liquid), "liquid not at mu(T)"
+print(f"{len(thinned)} thinned mush particles below mu(T); {len(liquid)} liquid at mu(T)")
 PY
 cd "$scratch/stopped" || exit 1
 setEntry system/controlDict endTime 0.3
