@@ -1,6 +1,7 @@
 #include "rheology/RheologyModel.h"
 
 #include "core/dictionary/Dictionary.h"
+#include "rheology/HerschelBulkley.h"
 #include "rheology/ThixotropicSemiSolid.h"
 
 namespace sphcast {
@@ -14,6 +15,7 @@ RheologyModels& rheologyModels() {
     RheologyModels registry("rheology");
     registry.add<NewtonianViscosity>("newtonian");  // the default
     registry.add<ThixotropicSemiSolid>("thixotropicSemiSolid");
+    registry.add<HerschelBulkley>("herschelBulkley");
     return registry;
   }();
   return models;

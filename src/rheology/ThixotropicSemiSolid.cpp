@@ -7,12 +7,10 @@
 #include "core/Error.h"
 #include "core/dictionary/Dictionary.h"
 #include "particles/FieldNames.h"
-#include "particles/WendlandKernel.h"
+#include "rheology/ShearRate.h"
 
 namespace sphcast {
 namespace {
-
-using Matrix3 = Eigen::Matrix<Real, 3, 3>;
 
 ThixotropicSemiSolidSettings readSettings(const Dictionary& rheology) {
   rheology.checkKeys({"model", "thixotropicSemiSolidCoeffs"});
@@ -108,37 +106,9 @@ Real ThixotropicSemiSolid::viscosity(Real solidFraction, Real temperature, Real 
   return broken / (denominator * denominator);
 }
 
-template <int Dim>
-void ThixotropicSemiSolid::computeShearRates() {
-  const WendlandC2Kernel<Dim> kernel(supportRadius_);
-  const PeriodicBox periodic = neighbourhood_.periodicBox();
-  const NeighbourList& pairs = neighbourhood_.pairs(fluid_, fluid_);
-  const auto& x = fluid_.positions();
-  const auto& v = fluid_.vectorField(field::U);
-  const auto& rho = fluid_.scalarField(field::rho);
-  const auto& mass = fluid_.scalarField(field::mass);
-  auto& shearRate = fluid_.scalarField(field::shearRate);
-  const std::size_t owned = fluid_.ownedSize();
-#pragma omp parallel for schedule(static)
-  for (std::size_t i = 0; i < owned; ++i) {
-    // grad v_i = sum_j V_j (v_j - v_i) (x) grad_i W_ij
-    Matrix3 gradient = Matrix3::Zero();
-    for (const std::uint32_t j : pairs.of(i)) {
-      const Vector xij = periodic.separation(x[i], x[j]);
-      const Vector gradW = kernel.gradient(xij, xij.norm());
-      gradient += (mass[j] / rho[j]) * (v[j] - v[i]) * gradW.transpose();
-    }
-    const Matrix3 strain = Real(0.5) * (gradient + gradient.transpose());
-    shearRate[i] = std::sqrt(Real(2) * strain.cwiseAbs2().sum());
-  }
-}
-
 void ThixotropicSemiSolid::update(double dt) {
-  if (dimension_ == 2) {
-    computeShearRates<2>();
-  } else {
-    computeShearRates<3>();
-  }
+  computeShearRates(fluid_, neighbourhood_, dimension_, supportRadius_,
+                    fluid_.scalarField(field::shearRate));
   const auto& temperature = fluid_.scalarField(field::T);
   const auto& solidFraction = fluid_.scalarField(field::solidFraction);
   const Real* frozen =

@@ -25,7 +25,7 @@ struct ThixotropicSemiSolidSettings {
 // particle a structure parameter lambda in [0, 1] (1: fully built) follows Moore's kinetics
 //   d lambda / dt = a (1 - lambda) - b lambda gammaDot^m,
 // integrated exactly over each flow step at the step's shear rate gammaDot = sqrt(2 D:D)
-// (D the SPH strain rate of the fluid neighbours):
+// (D the SPH strain rate of the fluid neighbours, rheology/ShearRate.h):
 //   lambda' = lambda_e + (lambda - lambda_e) exp(-k dt),  k = a + b gammaDot^m,
 //   lambda_e = a / k.
 // The viscosity lies between the fully built and the fully broken structure, as OpenFOAM's
@@ -63,9 +63,6 @@ class ThixotropicSemiSolid : public RheologyModel {
   const ThixotropicSemiSolidSettings& settings() const { return settings_; }
 
  private:
-  template <int Dim>
-  void computeShearRates();
-
   ParticleCloud& fluid_;
   const Neighbourhood& neighbourhood_;
   int dimension_;

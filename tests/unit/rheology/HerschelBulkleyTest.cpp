@@ -1,0 +1,213 @@
+// The Herschel-Bulkley rheology (rheology/HerschelBulkley.h) in steady plane Poiseuille flow
+// between no-slip walls, driven by a body force F (pressure gradient G = rho F), against the
+// exact profile (Bird, Armstrong & Hassager 1987, Dynamics of Polymeric Liquids vol. 1, §4.2):
+// with s the distance from the channel's middle, H its half-width and s0 = tau0 / G the plug's
+// half-width,
+//   u(s) = n/(n+1) (G/k)^(1/n) [(H - s0)^(1+1/n) - (s - s0)^(1+1/n)]  for s > s0,
+//   u(s) = u(s0)                                                    in the plug.
+// A power law (tau0 = 0, n = 1/2) and a Bingham plastic (n = 1, s0 = 0.4 H), each at 10, 20 and
+// 40 rows across; the viscosity spans three decades (mu0 = 1e3 times the wall's), solved
+// implicitly at the acoustic step. Also the law itself and the dictionary's errors.
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+
+#include <omp.h>
+
+#include "core/Error.h"
+#include "core/dictionary/Dictionary.h"
+#include "materials/Material.h"
+#include "particles/FieldNames.h"
+#include "rheology/HerschelBulkley.h"
+#include "rheology/RheologyModel.h"
+#include "sph/FlowTestCases.h"
+#include "sph/WeaklyCompressibleFlow.h"
+
+namespace sphcast {
+namespace {
+
+constexpr double channelWidth = 1e-3, halfWidth = channelWidth / 2;
+constexpr double density = 1000, bodyForce = 2e-4;
+constexpr double pressureGradient = density * bodyForce;  // G, Pa/m: the wall stress is G H
+
+double exactVelocity(const HerschelBulkleySettings& law, double s) {
+  const double plug = law.yieldStress / pressureGradient;
+  const double power = 1 + 1 / law.exponent;
+  const double scale = law.exponent / (law.exponent + 1) *
+                       std::pow(pressureGradient / law.consistency, 1 / law.exponent);
+  return scale * (std::pow(halfWidth - plug, power) - std::pow(std::max(s - plug, 0.0), power));
+}
+
+struct ChannelRun {
+  double error;  // largest |u - u_exact| / u_max over the particles at the end
+  double drift;  // change of the mean u over the last tenth of the run, / u_max
+  double cpuSeconds;
+};
+
+// velocities: when given, the fluid's velocities at the end (in the fluid's order)
+ChannelRun runChannel(const HerschelBulkleySettings& law, int rows, double endTime,
+                      std::vector<Vector>* velocities = nullptr) {
+  const Real dx = Real(channelWidth / rows);
+  const int columns = 8;  // periodic in x over 8 dx > 2 h
+  const double peak = exactVelocity(law, 0);
+  auto fluid =
+      testing::fluidBlock2D(columns, rows, dx, Vector::Zero(), Real(density), law.restViscosity);
+  auto wall = testing::emptyWall();
+  testing::addWallCells(
+      wall, 0, columns, -3, 0, dx, Vector::Zero(), [](int, int) { return Vector(0, 1, 0); },
+      [dx](int, int row) { return (-row - Real(0.5)) * dx; });
+  testing::addWallCells(
+      wall, 0, columns, rows, rows + 3, dx, Vector::Zero(),
+      [](int, int) { return Vector(0, -1, 0); },
+      [dx, rows](int, int row) { return (row - rows + Real(0.5)) * dx; });
+  FlowSettings settings;
+  settings.dimension = 2;
+  settings.supportRadius = 3 * dx;
+  settings.soundSpeed = Real(100 * peak);  // Mach 0.01
+  settings.gravity = Vector(Real(bodyForce), 0, 0);
+  settings.viscositySolver = ViscositySolver::automatic;
+  settings.periodic.setPeriodic(0, 0, columns * dx);
+  WeaklyCompressibleFlow flow(settings, fluid, {&wall});
+  const Material noTables;
+  HerschelBulkley rheology(
+      RheologyContext{fluid, noTables, flow.neighbourhood(), 2, settings.supportRadius}, law);
+
+  const auto& u = fluid.vectorField(field::U);
+  // the mean velocity (the particles are reordered along the grid every step)
+  auto meanVelocity = [&] {
+    double sum = 0;
+    for (const Vector& v : u) sum += v.x();
+    return sum / static_cast<double>(u.size());
+  };
+  double before = -1;
+  const auto start = std::chrono::steady_clock::now();
+  double t = 0;
+  std::string limiter;
+  for (const double until : {0.9 * endTime, endTime}) {
+    while (t < until - 1e-12) {
+      const double dt = std::min(flow.stepLimits(0.25).smallest(limiter), until - t);
+      rheology.update(dt);
+      flow.step(dt);
+      t += dt;
+    }
+    if (before < 0) before = meanVelocity();
+  }
+  ChannelRun run{0, 0,
+                 std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()};
+  for (std::size_t i = 0; i < fluid.size(); ++i) {
+    const double s = std::abs(fluid.positions()[i].y() - halfWidth);
+    run.error = std::max(run.error, std::abs(u[i].x() - exactVelocity(law, s)) / peak);
+  }
+  run.drift = std::abs(meanVelocity() - before) / peak;
+  if (velocities) *velocities = u;
+  return run;
+}
+
+// Within 5 % of u_max from 20 rows across (10 across the half-width) and converging; at 10 rows
+// (the Bingham plug 8 dx wide, its edges a kernel support from the walls' sheared layers) the
+// error is only printed: measured 13 % (power law) and 21 % (Bingham). The Bingham error from
+// 20 rows up (3 %: the plug moves that much too fast) is the kernel's smoothing of the shear
+// rate across the yield surface, which yields a layer about 4 dx into the plug.
+void expectProfiles(const char* name, const HerschelBulkleySettings& law, double endTime) {
+  std::vector<ChannelRun> runs;
+  for (const int rows : {10, 20, 40}) {
+    runs.push_back(runChannel(law, rows, endTime));
+    std::printf(
+        "%s, %2d rows: max |u - u_exact| / u_max %.4f (mean u still moving %.1e), "
+        "%.2f s CPU\n",
+        name, rows, runs.back().error, runs.back().drift, runs.back().cpuSeconds);
+  }
+  EXPECT_LT(runs[1].error, 0.05) << name << " at 20 rows";
+  EXPECT_LT(runs[2].error, 0.05) << name << " at 40 rows";
+  EXPECT_LT(runs[2].error, runs[1].error) << name << ": no convergence";
+  EXPECT_LT(runs[1].error, runs[0].error) << name << ": no convergence";
+  for (const ChannelRun& run : runs) EXPECT_LT(run.drift, 5e-3) << name << ": not steady";
+}
+
+HerschelBulkleySettings binghamPlastic() {
+  HerschelBulkleySettings bingham;
+  bingham.yieldStress = Real(0.4 * pressureGradient * halfWidth);  // s0 = 0.4 H
+  bingham.consistency = Real(1e-3);
+  bingham.exponent = 1;
+  bingham.restViscosity = 1;  // 1e3 times the plastic viscosity
+  return bingham;
+}
+
+TEST(HerschelBulkley, PowerLawChannelFollowsTheExactProfile) {
+  HerschelBulkleySettings powerLaw;
+  powerLaw.consistency = Real(2.5e-4);  // u_max 2.7e-5 m/s, wall shear rate 0.16 1/s
+  powerLaw.exponent = Real(0.5);
+  powerLaw.restViscosity = 1;  // 1.5e3 times the wall's 6.3e-4 Pa s
+  expectProfiles("power law n = 0.5", powerLaw, 5.0);
+}
+
+TEST(HerschelBulkley, BinghamChannelCarriesAPlug) {
+  expectProfiles("Bingham s0 = 0.4 H", binghamPlastic(), 2.0);
+}
+
+// The shear rates and the viscosity (per particle, no sums across threads): the same bits on
+// one and two threads, through the implicit solve.
+TEST(HerschelBulkley, SameBitsOnOneAndTwoThreads) {
+  std::vector<Vector> one, two;
+  omp_set_num_threads(1);
+  runChannel(binghamPlastic(), 20, 0.2, &one);
+  omp_set_num_threads(2);
+  runChannel(binghamPlastic(), 20, 0.2, &two);
+  ASSERT_EQ(one.size(), two.size());
+  for (std::size_t i = 0; i < one.size(); ++i) ASSERT_EQ(one[i], two[i]) << "particle " << i;
+}
+
+TEST(HerschelBulkley, TheLawBetweenItsLimits) {
+  HerschelBulkleySettings law;
+  law.yieldStress = 10;
+  law.consistency = 2;
+  law.exponent = Real(0.5);
+  law.restViscosity = 1e4;
+  ParticleCloud fluid = testing::fluidBlock2D(1, 1, 1, Vector::Zero(), 1000, 1);
+  Neighbourhood neighbourhood(3, PeriodicBox());
+  const Material noTables;
+  const HerschelBulkley model(RheologyContext{fluid, noTables, neighbourhood, 2, 3}, law);
+  EXPECT_EQ(model.viscosity(0), 1e4);     // at rest: mu0
+  EXPECT_EQ(model.viscosity(1e-4), 1e4);  // below tau0 / mu0 = 1e-3 1/s: the cap
+  EXPECT_NEAR(model.viscosity(100), (10 + 2 * 10) / 100.0, 1e-6);
+}
+
+TEST(HerschelBulkley, ItsDictionaryIsChecked) {
+  ParticleCloud fluid = testing::fluidBlock2D(1, 1, 1, Vector::Zero(), 1000, 1);
+  Neighbourhood neighbourhood(3, PeriodicBox());
+  const Material noTables;
+  const RheologyContext context{fluid, noTables, neighbourhood, 2, 3};
+  auto build = [&](const std::string& text) {
+    return rheologyModels().build("herschelBulkley", context,
+                                  Dictionary::parse(text, "constant/physicsModels"));
+  };
+  const auto model = build(
+      "model herschelBulkley; herschelBulkleyCoeffs { tau0 5; k 0.1; n 0.4; "
+      "mu0 1e3; }");
+  EXPECT_NE(model->description().find("tau0 = 5 Pa"), std::string::npos);
+  auto expectError = [&](const std::string& text, const std::string& message) {
+    try {
+      build(text);
+      ADD_FAILURE() << "accepted: " << text;
+    } catch (const Error& error) {
+      EXPECT_NE(std::string(error.what()).find(message), std::string::npos) << error.what();
+      EXPECT_NE(std::string(error.what()).find("physicsModels:1"), std::string::npos)
+          << error.what();
+    }
+  };
+  expectError("model herschelBulkley;", "needs herschelBulkleyCoeffs");
+  expectError("model herschelBulkley; herschelBulkleyCoeffs { tau0 5; k 0.1; n 0.4; }", "mu0");
+  expectError("model herschelBulkley; herschelBulkleyCoeffs { tau0 5; k 0.1; n 0; mu0 1; }",
+              "'n' must be positive");
+  expectError("model herschelBulkley; herschelBulkleyCoeffs { tau0 -1; k 0.1; n 1; mu0 1; }",
+              "'tau0' must be zero or positive");
+  expectError("model herschelBulkley; herschelBulkleyCoeffs { tau0 0; k 0; n 1; mu0 1; }",
+              "both zero");
+  expectError("model herschelBulkley; herschelBulkleyCoeffs { tau0 0; k 1; n 1; mu0 1; nu0 1; }",
+              "nu0");
+}
+
+}  // namespace
+}  // namespace sphcast
