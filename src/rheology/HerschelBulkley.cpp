@@ -53,6 +53,7 @@ HerschelBulkley::HerschelBulkley(const RheologyContext& context, const Dictionar
 HerschelBulkley::HerschelBulkley(const RheologyContext& context, HerschelBulkleySettings settings)
     : fluid_(context.fluid),
       neighbourhood_(context.neighbourhood),
+      walls_(context.walls),
       dimension_(context.dimension),
       supportRadius_(context.supportRadius),
       settings_(settings) {
@@ -80,7 +81,7 @@ Real HerschelBulkley::viscosity(Real shearRate) const {
 
 void HerschelBulkley::update(double) {
   auto& shearRate = fluid_.scalarField(field::shearRate);
-  computeShearRates(fluid_, neighbourhood_, dimension_, supportRadius_, shearRate);
+  computeShearRates(fluid_, neighbourhood_, walls_, dimension_, supportRadius_, shearRate);
   const Real* frozen =
       fluid_.hasScalarField(field::frozen) ? fluid_.scalarField(field::frozen).data() : nullptr;
   auto& mu = fluid_.scalarField(field::viscosity);

@@ -45,6 +45,7 @@ class HerschelBulkley : public RheologyModel {
  private:
   ParticleCloud& fluid_;
   const Neighbourhood& neighbourhood_;
+  std::vector<ShearWall> walls_;
   int dimension_;
   Real supportRadius_;
   HerschelBulkleySettings settings_;

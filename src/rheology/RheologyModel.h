@@ -8,18 +8,20 @@
 #include "materials/Material.h"
 #include "particles/Neighbourhood.h"
 #include "particles/ParticleCloud.h"
+#include "rheology/ShearRate.h"
 
 namespace sphcast {
 
 class Dictionary;
 
 // What a rheology is built on: the flow's fluid (with T and solidFraction where the metal
-// solidifies), its material, the neighbourhood whose fluid pairs give the velocity gradient, the
-// dimension and h.
+// solidifies), its material, the neighbourhood whose fluid and wall pairs give the velocity
+// gradient, the flow's walls (shearWalls), the dimension and h.
 struct RheologyContext {
   ParticleCloud& fluid;
   const Material& material;
   const Neighbourhood& neighbourhood;
+  std::vector<ShearWall> walls;
   int dimension;
   Real supportRadius;
 };

@@ -5,6 +5,7 @@
 #include "particles/FieldNames.h"
 #include "particles/WendlandKernel.h"
 #include "sph/KernelCorrection.h"
+#include "sph/WeaklyCompressibleFlow.h"
 
 namespace sphcast {
 namespace {
@@ -14,7 +15,8 @@ namespace {
 constexpr CorrectionFallback truncatedSupport{Real(0.1), Real(0.3)};
 
 template <int Dim>
-void shearRates(const ParticleCloud& fluid, const Neighbourhood& neighbourhood, Real supportRadius,
+void shearRates(const ParticleCloud& fluid, const Neighbourhood& neighbourhood,
+                const std::vector<ShearWall>& walls, Real supportRadius,
                 std::vector<Real>& shearRate) {
   const WendlandC2Kernel<Dim> kernel(supportRadius);
   const PeriodicBox periodic = neighbourhood.periodicBox();
@@ -24,6 +26,26 @@ void shearRates(const ParticleCloud& fluid, const Neighbourhood& neighbourhood, 
   const auto& rho = fluid.scalarField(field::rho);
   const auto& mass = fluid.scalarField(field::mass);
   const std::size_t owned = fluid.ownedSize();
+  struct WallArrays {
+    const std::vector<Vector>& position;
+    const std::vector<Vector>* velocity;  // null: at rest
+    const std::vector<Real>& volume;
+    const std::vector<Vector>& normal;
+    const std::vector<Real>& depth;
+    const NeighbourList& pairs;
+    bool slip;
+  };
+  std::vector<WallArrays> wallArrays;
+  for (const ShearWall& wall : walls) {
+    const ParticleCloud& cloud = *wall.cloud;
+    wallArrays.push_back({cloud.positions(),
+                          cloud.hasVectorField(field::U) ? &cloud.vectorField(field::U) : nullptr,
+                          cloud.scalarField(field::volume), cloud.vectorField(field::normal),
+                          cloud.scalarField(field::wallDistance), neighbourhood.pairs(fluid, cloud),
+                          wall.condition.slip()});
+  }
+  const Real halfSpacing =
+      walls.empty() ? Real(0) : Real(0.5) * static_cast<Real>(fluid.attributes().at("spacing"));
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < owned; ++i) {
     Matrix gradient = Matrix::Zero();  // sum_j V_j (v_j - v_i) (x) grad_i W_ij
@@ -35,6 +57,20 @@ void shearRates(const ParticleCloud& fluid, const Neighbourhood& neighbourhood, 
       gradient.noalias() += volume * (v[j] - v[i]) * kernel.gradient(xij, r).transpose();
       moment.add(volume, kernel.derivativeOverDistance(r), xij);
     }
+    for (const WallArrays& wall : wallArrays) {
+      for (const std::uint32_t k : wall.pairs.of(i)) {
+        const Vector xik = periodic.separation(x[i], wall.position[k]);
+        const Real r = xik.norm();
+        const Vector& normal = wall.normal[k];
+        const Real fluidDistance = std::max(xik.dot(normal) - wall.depth[k], halfSpacing);
+        const Real beta = Real(1) + wall.depth[k] / fluidDistance;
+        Vector relative = v[i] - (wall.velocity ? (*wall.velocity)[k] : Vector::Zero());
+        if (wall.slip) relative = relative.dot(normal) * normal;
+        gradient.noalias() +=
+            wall.volume[k] * (-beta * relative) * kernel.gradient(xik, r).transpose();
+        moment.add(wall.volume[k], kernel.derivativeOverDistance(r), xik);
+      }
+    }
     gradient = gradient * correctionMatrix(moment.sum, Dim, truncatedSupport);
     const Matrix strain = Real(0.5) * (gradient + gradient.transpose());
     shearRate[i] = std::sqrt(Real(2) * strain.cwiseAbs2().sum());
@@ -43,12 +79,21 @@ void shearRates(const ParticleCloud& fluid, const Neighbourhood& neighbourhood, 
 
 }  // namespace
 
+std::vector<ShearWall> shearWalls(const WeaklyCompressibleFlow& flow) {
+  std::vector<ShearWall> walls;
+  for (const ParticleCloud* wall : flow.walls()) {
+    walls.push_back({wall, flow.settings().walls.of(wall->name())});
+  }
+  return walls;
+}
+
 void computeShearRates(const ParticleCloud& fluid, const Neighbourhood& neighbourhood,
-                       int dimension, Real supportRadius, std::vector<Real>& shearRate) {
+                       const std::vector<ShearWall>& walls, int dimension, Real supportRadius,
+                       std::vector<Real>& shearRate) {
   if (dimension == 2) {
-    shearRates<2>(fluid, neighbourhood, supportRadius, shearRate);
+    shearRates<2>(fluid, neighbourhood, walls, supportRadius, shearRate);
   } else {
-    shearRates<3>(fluid, neighbourhood, supportRadius, shearRate);
+    shearRates<3>(fluid, neighbourhood, walls, supportRadius, shearRate);
   }
 }
 

@@ -47,6 +47,7 @@ ThixotropicSemiSolid::ThixotropicSemiSolid(const RheologyContext& context,
                                            ThixotropicSemiSolidSettings settings)
     : fluid_(context.fluid),
       neighbourhood_(context.neighbourhood),
+      walls_(context.walls),
       dimension_(context.dimension),
       supportRadius_(context.supportRadius),
       mu_(context.material.requireViscosity("rheology thixotropicSemiSolid")),
@@ -107,7 +108,7 @@ Real ThixotropicSemiSolid::viscosity(Real solidFraction, Real temperature, Real 
 }
 
 void ThixotropicSemiSolid::update(double dt) {
-  computeShearRates(fluid_, neighbourhood_, dimension_, supportRadius_,
+  computeShearRates(fluid_, neighbourhood_, walls_, dimension_, supportRadius_,
                     fluid_.scalarField(field::shearRate));
   const auto& temperature = fluid_.scalarField(field::T);
   const auto& solidFraction = fluid_.scalarField(field::solidFraction);

@@ -65,6 +65,7 @@ class ThixotropicSemiSolid : public RheologyModel {
  private:
   ParticleCloud& fluid_;
   const Neighbourhood& neighbourhood_;
+  std::vector<ShearWall> walls_;
   int dimension_;
   Real supportRadius_;
   TemperatureTable mu_;   // the material's mu(T)

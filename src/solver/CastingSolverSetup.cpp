@@ -461,7 +461,8 @@ void CastingSolver::setUpRheology() {
   models_.rheology = rheologyModels().build(
       name,
       RheologyContext{*models_.fluid, description_.fluidMaterial(), *models_.neighbourhood,
-                      description_.dimension(), flowSetup_.settings.supportRadius},
+                      shearWalls(*models_.flow), description_.dimension(),
+                      flowSetup_.settings.supportRadius},
       *rheology);
   info() << "Rheology: " << models_.rheology->description() << '\n';
   if (models_.solidification && models_.rheology->writesViscosity()) {

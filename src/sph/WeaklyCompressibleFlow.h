@@ -163,6 +163,7 @@ class WeaklyCompressibleFlow {
 
   std::size_t fluidPairCount() const { return fluidPairs().pairCount(); }
   const Neighbourhood& neighbourhood() const { return neighbourhood_; }
+  const std::vector<const ParticleCloud*>& walls() const { return walls_; }
 
   // Measures the load on `wall` (one of the flow's walls) at every evaluation of the rates and
   // wall clearance from now on; until the next rates, the load is zero.

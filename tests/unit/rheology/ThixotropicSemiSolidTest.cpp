@@ -71,7 +71,7 @@ struct ShearedMush {
 TEST(ThixotropicSemiSolid, StructureFollowsTheExactRelaxationAfterAStepOfShearRate) {
   const Material material = ac4ch();
   ShearedMush mush(Real(868), Real(0.3));
-  const RheologyContext context{mush.fluid, material, mush.neighbourhood, 2, 3 * mush.dx};
+  const RheologyContext context{mush.fluid, material, mush.neighbourhood, {}, 2, 3 * mush.dx};
   ThixotropicSemiSolid model(context, ThixotropicSemiSolidSettings{});
   const ThixotropicSemiSolidSettings& s = model.settings();
   const double dt = 0.01;
@@ -106,7 +106,7 @@ TEST(ThixotropicSemiSolid, StructureFollowsTheExactRelaxationAfterAStepOfShearRa
 TEST(ThixotropicSemiSolid, ViscosityLiesBetweenTheMushAtRestAndTheBrokenSuspension) {
   const Material material = ac4ch();
   ShearedMush mush(Real(868), Real(0.3));
-  const RheologyContext context{mush.fluid, material, mush.neighbourhood, 2, 3 * mush.dx};
+  const RheologyContext context{mush.fluid, material, mush.neighbourhood, {}, 2, 3 * mush.dx};
   const ThixotropicSemiSolid model(context, ThixotropicSemiSolidSettings{});
   const double atRest = (*material.viscosity)(868);
   const double liquid = (*material.viscosity)(material.freezingRange->liquidus);
@@ -130,7 +130,7 @@ TEST(ThixotropicSemiSolid, ItsCoefficientsAndRegisteredNameAreChecked) {
             (std::vector<std::string>{"newtonian", "thixotropicSemiSolid", "herschelBulkley"}));
   const Material material = ac4ch();
   ShearedMush mush(Real(868), Real(0.3));
-  const RheologyContext context{mush.fluid, material, mush.neighbourhood, 2, 3 * mush.dx};
+  const RheologyContext context{mush.fluid, material, mush.neighbourhood, {}, 2, 3 * mush.dx};
   auto errorOf = [&](const std::string& text) {
     try {
       const Dictionary rheology = Dictionary::parse(text, "physicsModels");
