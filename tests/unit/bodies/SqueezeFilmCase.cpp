@@ -20,9 +20,38 @@ const Real density = 1000;
 // floor, the pool's rows and the slug's columns; the plate is plateLayers thick at any refinement
 const int columns = 160, startGap = 8, poolRows = 11, slugColumns = 60, plateLayers = 3;
 
-int plateColumnsOf(Liquid liquid) { return liquid == Liquid::pool ? 120 : 140; }
+int plateColumnsOf(Liquid liquid) { return liquid == Liquid::slug ? 140 : 120; }
+
+// The tank, or for a filled gap a floor as wide as the plate (three layers under it).
+ParticleCloud wallsOf(Liquid liquid, int tankColumns, int tankRows, int plateColumns,
+                      int plateFirst, Real dx) {
+  if (liquid != Liquid::gapFilled) return tankWalls2D(tankColumns, tankRows, dx);
+  ParticleCloud floor =
+      boxBody(plateColumns, 3, 1, dx, Vector(plateFirst * dx, -3 * dx, 0), true, "wall");
+  // the floor's face is its top: the end columns' normals up too, as a floor's under a plate
+  // of the same width (boxBody points them out of the side)
+  auto& normal = floor.vectorField(field::normal);
+  auto& depth = floor.scalarField(field::wallDistance);
+  for (std::size_t i = 0; i < floor.size(); ++i) {
+    normal[i] = Vector::UnitY();
+    depth[i] = -floor.positions()[i].y();
+  }
+  return floor;
+}
 
 }  // namespace
+
+const char* nameOf(Liquid liquid) {
+  switch (liquid) {
+    case Liquid::pool:
+      return "pool";
+    case Liquid::slug:
+      return "slug";
+    case Liquid::gapFilled:
+      return "gapFilled";
+  }
+  return "";
+}
 
 RigidBodySettings plateSettings() {
   RigidBodySettings settings;
@@ -47,22 +76,32 @@ SqueezeFilmCase::SqueezeFilmCase(const RigidBodySettings& bodySettings, double r
       dx(baseDx / Real(refinement)),
       fluid(fluidBlock2D(spacings(columns), spacings(poolRows), dx, Vector::Zero(), density,
                          viscosity)),
-      tank(tankWalls2D(spacings(columns), spacings(poolRows + 8), dx)),
+      tank(wallsOf(liquid, spacings(columns), spacings(poolRows + 8), spacings(plateColumns),
+                   first(), dx)),
       plate(boxBody(spacings(plateColumns), plateLayers, 1, dx,
                     Vector(first() * dx, spacings(startGap) * dx, 0), true, "plate")) {
-  // the plate's cells hold no liquid, a slug only the gap's middle (the fields are uniform: the
-  // first particle's serve)
+  // the plate's cells hold no liquid, a slug only the gap's middle, a filled gap only the gap
+  // (the fields are uniform: the first particle's serve)
   const int slugFirst = (spacings(columns) - spacings(slugColumns)) / 2;
   std::size_t count = 0;
   for (std::size_t i = 0; i < fluid.size(); ++i) {
     const Vector x = fluid.positions()[i];
     const int column = static_cast<int>(std::floor(x.x() / dx));
     const int row = static_cast<int>(std::floor(x.y() / dx));
-    const bool kept = liquid == Liquid::pool
-                          ? !(column >= first() && column < first() + spacings(plateColumns) &&
-                              row >= spacings(startGap))
-                          : column >= slugFirst && column < slugFirst + spacings(slugColumns) &&
-                                row < spacings(startGap);
+    const bool underPlate = column >= first() && column < first() + spacings(plateColumns);
+    const bool inGap = row < spacings(startGap);
+    bool kept = false;
+    switch (liquid) {
+      case Liquid::pool:
+        kept = !underPlate || inGap;
+        break;
+      case Liquid::slug:
+        kept = inGap && column >= slugFirst && column < slugFirst + spacings(slugColumns);
+        break;
+      case Liquid::gapFilled:
+        kept = underPlate && inGap;
+        break;
+    }
     if (kept) fluid.positions()[count++] = x;
   }
   fluid.resize(count);
@@ -149,7 +188,7 @@ ClosingTimes closingTimes(Liquid liquid, double load, double refinement,
   const double a = plateColumnsOf(Liquid::pool) * baseDx / 2;
   const double area = static_cast<double>(squeeze.fluid.size()) * squeeze.dx * squeeze.dx;
   const std::function<double(double)> halfWidth = [&](double h) {
-    return liquid == Liquid::pool ? a : area / (2 * h);
+    return liquid == Liquid::slug ? area / (2 * h) : a;
   };
   // the times the gap passes 6, 5 and 4 mm (interpolated within the step)
   const std::vector<double> marks{6e-3, 5e-3, 4e-3};
@@ -180,8 +219,8 @@ ClosingTimes closingTimes(Liquid liquid, double load, double refinement,
   std::printf(
       "%s, n = %g, dx = %.3f mm (%zu liquid particles): 6 -> 5 mm in %.4f and 6 -> 4 mm in %.4f "
       "of lubrication's time (%.4f s to 4 mm), %.1f s\n",
-      liquid == Liquid::pool ? "pool" : "slug", exponent, 1e3 * squeeze.dx, squeeze.fluid.size(),
-      times.to5, times.to4, times.lubricationTo4, times.seconds);
+      nameOf(liquid), exponent, 1e3 * squeeze.dx, squeeze.fluid.size(), times.to5, times.to4,
+      times.lubricationTo4, times.seconds);
   return times;
 }
 

@@ -12,8 +12,8 @@
 //   F = 2 k C V^n R^(n+2) / ((n+2) (h/2)^(2n+1)),  C = ((2n+1)/(2n))^n,
 // per unit depth, and under a constant F the gap closes at
 //   V(h) = [F (n+2) (h/2)^(2n+1) / (2 k C R^(n+2))]^(1/n).
-// n = 1 is Reynolds' F = 8 mu V R^3 / h^3. R is the plate's half-width a over a pool, or
-// A / 2h for a slug of area A per unit depth spreading under a wider plate.
+// n = 1 is Reynolds' F = 8 mu V R^3 / h^3. R is the plate's half-width a over a pool and in a
+// filled gap, or A / 2h for a slug of area A per unit depth spreading under a wider plate.
 
 #include <functional>
 #include <memory>
@@ -27,8 +27,15 @@
 namespace sphcast::testing {
 
 // A pool filling the tank (160 mm) to the plate's top round a plate 120 mm wide (a = 60 mm
-// fixed), or a slug 60 x 8 mm filling the gap's middle under a plate 140 mm wide.
-enum class Liquid { pool, slug };
+// fixed); a slug 60 x 8 mm filling the gap's middle under a plate 140 mm wide; or the gap
+// filled (a constant-area squeeze, as a squeeze-flow rheometer runs it): liquid only between
+// the plate and a floor exactly as wide (120 mm, a = 60 mm fixed), squeezed out past both edges
+// into empty space, so that the pressure at the edges is the free surface's, lubrication's p(a)
+// = 0. Over the pool the liquid leaving the gap has to push the pool aside, which lubrication
+// leaves out.
+enum class Liquid { pool, slug, gapFilled };
+
+const char* nameOf(Liquid liquid);
 
 struct SqueezeFilmCase {
   // the plate's motion (a prescribed displacement or a dynamic body on the y axis), settings
