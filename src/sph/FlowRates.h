@@ -114,7 +114,9 @@ struct FluidPair {
     densityRate +=
         Real(2) * i.density * shared.volumeJ * (i.velocity - shared.star.velocity).dot(gradW);
     acceleration -= Real(2) * massJ * shared.star.pressure * shared.inverseDensities * gradW;
-    const Real harmonicViscosity = Real(2) * viscosityI * viscosityJ / (viscosityI + viscosityJ);
+    // (an inviscid pair, both zero, has none: 0 / 0 would be NaN)
+    const Real sum = viscosityI + viscosityJ;
+    const Real harmonicViscosity = sum > 0 ? Real(2) * viscosityI * viscosityJ / sum : Real(0);
     acceleration += Viscosity::template acceleration<Dim>(
         massJ, harmonicViscosity, shared.inverseDensities, shearVelocity, xij, r, gradW,
         constants.viscosityRegularisation);

@@ -101,7 +101,8 @@ ImplicitViscosityReport ImplicitViscosity::solve(ParticleCloud& fluid,
       const std::uint32_t j = neighbours[n];
       const Vector xij = periodic.separation(x[i], x[j]);
       const Real r2 = xij.squaredNorm();
-      const Real harmonic = Real(2) * (mu[i] * mu[j]) / (mu[i] + mu[j]);
+      const Real sum = mu[i] + mu[j];
+      const Real harmonic = sum > 0 ? Real(2) * (mu[i] * mu[j]) / sum : Real(0);
       const Real weight = dt * Real(-2) * (mass[i] * mass[j]) * harmonic / (rho[i] * rho[j]) *
                           kernel.derivativeOverDistance(std::sqrt(r2)) * r2 / (r2 + etaSquared);
       pairWeight_[n] = weight;
