@@ -1,6 +1,7 @@
 #include "rheology/RheologyModel.h"
 
 #include "core/dictionary/Dictionary.h"
+#include "rheology/ElastoViscoplastic.h"
 #include "rheology/HerschelBulkley.h"
 #include "rheology/ThixotropicSemiSolid.h"
 
@@ -16,6 +17,7 @@ RheologyModels& rheologyModels() {
     registry.add<NewtonianViscosity>("newtonian");  // the default
     registry.add<ThixotropicSemiSolid>("thixotropicSemiSolid");
     registry.add<HerschelBulkley>("herschelBulkley");
+    registry.add<ElastoViscoplastic>("elastoViscoplastic");
     return registry;
   }();
   return models;

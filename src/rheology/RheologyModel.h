@@ -13,6 +13,7 @@
 namespace sphcast {
 
 class Dictionary;
+class FluidForceModel;
 
 // What a rheology is built on: the flow's fluid (with T and solidFraction where the metal
 // solidifies), its material, the neighbourhood whose fluid and wall pairs give the velocity
@@ -46,6 +47,9 @@ class RheologyModel {
   // Whether update writes the viscosity (the solidification then leaves it alone); the
   // Newtonian mu(T) is the solidification's to write.
   virtual bool writesViscosity() const { return true; }
+  // A law with a stress of its own (ElastoViscoplastic.h) returns the force the flow adds at
+  // every evaluation of the rates; a viscosity law returns null.
+  virtual FluidForceModel* force() { return nullptr; }
 };
 
 // The models by the names physicsModels gives them (rheology { model NAME; <NAME>Coeffs {} }),

@@ -14,10 +14,10 @@ namespace {
 // moment's smallest eigenvalue near 1/2); blended out towards an isolated particle.
 constexpr CorrectionFallback truncatedSupport{Real(0.1), Real(0.3)};
 
-template <int Dim>
-void shearRates(const ParticleCloud& fluid, const Neighbourhood& neighbourhood,
-                const std::vector<ShearWall>& walls, Real supportRadius,
-                std::vector<Real>& shearRate) {
+template <int Dim, class PerParticle>
+void velocityGradients(const ParticleCloud& fluid, const Neighbourhood& neighbourhood,
+                       const std::vector<ShearWall>& walls, Real supportRadius,
+                       PerParticle&& take) {
   const WendlandC2Kernel<Dim> kernel(supportRadius);
   const PeriodicBox periodic = neighbourhood.periodicBox();
   const NeighbourList& pairs = neighbourhood.pairs(fluid, fluid);
@@ -71,10 +71,13 @@ void shearRates(const ParticleCloud& fluid, const Neighbourhood& neighbourhood,
         moment.add(wall.volume[k], kernel.derivativeOverDistance(r), xik);
       }
     }
-    gradient = gradient * correctionMatrix(moment.sum, Dim, truncatedSupport);
-    const Matrix strain = Real(0.5) * (gradient + gradient.transpose());
-    shearRate[i] = std::sqrt(Real(2) * strain.cwiseAbs2().sum());
+    take(i, Matrix(gradient * correctionMatrix(moment.sum, Dim, truncatedSupport)));
   }
+}
+
+Real shearRateOf(const Matrix& gradient) {
+  const Matrix strain = Real(0.5) * (gradient + gradient.transpose());
+  return std::sqrt(Real(2) * strain.cwiseAbs2().sum());
 }
 
 }  // namespace
@@ -90,10 +93,23 @@ std::vector<ShearWall> shearWalls(const WeaklyCompressibleFlow& flow) {
 void computeShearRates(const ParticleCloud& fluid, const Neighbourhood& neighbourhood,
                        const std::vector<ShearWall>& walls, int dimension, Real supportRadius,
                        std::vector<Real>& shearRate) {
+  auto take = [&](std::size_t i, const Matrix& gradient) { shearRate[i] = shearRateOf(gradient); };
   if (dimension == 2) {
-    shearRates<2>(fluid, neighbourhood, walls, supportRadius, shearRate);
+    velocityGradients<2>(fluid, neighbourhood, walls, supportRadius, take);
   } else {
-    shearRates<3>(fluid, neighbourhood, walls, supportRadius, shearRate);
+    velocityGradients<3>(fluid, neighbourhood, walls, supportRadius, take);
+  }
+}
+
+void computeVelocityGradients(const ParticleCloud& fluid, const Neighbourhood& neighbourhood,
+                              const std::vector<ShearWall>& walls, int dimension,
+                              Real supportRadius, std::vector<Matrix>& gradient) {
+  gradient.resize(fluid.size());
+  auto take = [&](std::size_t i, const Matrix& value) { gradient[i] = value; };
+  if (dimension == 2) {
+    velocityGradients<2>(fluid, neighbourhood, walls, supportRadius, take);
+  } else {
+    velocityGradients<3>(fluid, neighbourhood, walls, supportRadius, take);
   }
 }
 

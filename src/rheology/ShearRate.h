@@ -6,6 +6,7 @@
 #include "core/Real.h"
 #include "particles/Neighbourhood.h"
 #include "particles/ParticleCloud.h"
+#include "sph/KernelCorrection.h"
 
 namespace sphcast {
 
@@ -38,5 +39,11 @@ std::vector<ShearWall> shearWalls(const WeaklyCompressibleFlow& flow);
 void computeShearRates(const ParticleCloud& fluid, const Neighbourhood& neighbourhood,
                        const std::vector<ShearWall>& walls, int dimension, Real supportRadius,
                        std::vector<Real>& shearRate);
+
+// The velocity gradient grad v (row a, column b: d v_a / d x_b) of every owned fluid particle
+// that computeShearRates reduces to gammaDot: the same sum, walls and normalisation.
+void computeVelocityGradients(const ParticleCloud& fluid, const Neighbourhood& neighbourhood,
+                              const std::vector<ShearWall>& walls, int dimension,
+                              Real supportRadius, std::vector<Matrix>& gradient);
 
 }  // namespace sphcast

@@ -465,6 +465,7 @@ void CastingSolver::setUpRheology() {
                       flowSetup_.settings.supportRadius},
       *rheology);
   info() << "Rheology: " << models_.rheology->description() << '\n';
+  if (FluidForceModel* stress = models_.rheology->force()) models_.flow->addForceModel(*stress);
   if (models_.solidification && models_.rheology->writesViscosity()) {
     models_.solidification->leaveViscosityToRheology();
   }

@@ -127,7 +127,8 @@ TEST(ThixotropicSemiSolid, ViscosityLiesBetweenTheMushAtRestAndTheBrokenSuspensi
 
 TEST(ThixotropicSemiSolid, ItsCoefficientsAndRegisteredNameAreChecked) {
   EXPECT_EQ(rheologyModels().names(),
-            (std::vector<std::string>{"newtonian", "thixotropicSemiSolid", "herschelBulkley"}));
+            (std::vector<std::string>{"newtonian", "thixotropicSemiSolid", "herschelBulkley",
+                                      "elastoViscoplastic"}));
   const Material material = ac4ch();
   ShearedMush mush(Real(868), Real(0.3));
   const RheologyContext context{mush.fluid, material, mush.neighbourhood, {}, 2, 3 * mush.dx};
