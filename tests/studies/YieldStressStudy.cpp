@@ -1,20 +1,22 @@
-// yieldStressStudy: a yield-stress fluid's slump (doc/validation.md §1.3.2). A 2D column of a
-// Bingham plastic (rheology/HerschelBulkley.h), H high and as wide, let go on a slip floor under
-// gravity, comes to rest where the stress nowhere exceeds the yield stress. Pashias, Boger,
-// Summers & Glenister (1996, J. Rheol. 40:1179): with tau' = tau0 / (rho g H), the material
-// above 2 tau0 / (rho g) stays rigid and each layer below spreads until its weight per width is
-// 2 tau0, so that the final height is H [1 - s'], s' = 1 - 2 tau' (1 - ln(2 tau')); the
-// argument uses only the weight above a layer and the layer's volume, so it holds per unit depth
-// as for the cylinder. The study prints the column's height at its middle against time and
-// against Pashias', the largest speed, and exits 1 when the final height is outside 5 %.
+// yieldStressStudy: a yield-stress fluid's slump (doc/validation.md §1.3.2). A column of a
+// Bingham plastic, H high and as wide (2D, plane strain) or a cylinder as high as its diameter
+// (3D), let go on a floor under gravity, comes to rest where the stress nowhere exceeds the yield
+// stress. Pashias, Boger, Summers & Glenister (1996, J. Rheol. 40:1179): with tau' = tau0 /
+// (rho g H), the material above 2 tau0 / (rho g) stays rigid and each layer below spreads until
+// its weight per area is 2 tau0, so that the final height is H 2 tau' (1 - ln(2 tau')); with the
+// tensorial law's von Mises criterion a cylinder's uniaxial stress yields at sqrt(3) tau0, and
+// plane strain at 2 tau0 (pashiasHeight below). Their argument leaves out the horizontal balance,
+// so it is a model, not the law's exact final state: on a slip floor a plane layer at rest can be
+// at most 2 tau0 / (rho g) thick (a vertical section's sigma_xx must integrate to zero), 0.52 of
+// Pashias' height at tau' = 0.2.
+// The study prints the height on the axis against time and against Pashias', the largest speed,
+// the viscosity's range and (elastoViscoplastic) how many particles are on the yield surface, and
+// exits 1 when the final height is outside 5 % of Pashias'.
 //
 // Built with `cmake -DSPHCAST_BUILD_STUDIES=ON` (build/tests/studies/yieldStressStudy); run as
-//   yieldStressStudy slump --rows 10 --plasticViscosity 100 --seconds 2
-// and yieldStressStudy --help for the options and their defaults. Not reproduced yet (measured,
-// doc/validation.md §1.3.2): at k = 1 Pa s the collapse is inertial and overshoots; at k = 100
-// Pa s (quasi-static) the column passes Pashias' height at 0.85 s and is at 0.81 of it at 2 s,
-// still creeping at 4 mm/s, its largest viscosity 530 Pa s against mu0 = 1e5: no particle is
-// unyielded, whichever velocity the shear rate is read from.
+//   yieldStressStudy slump --law elastoViscoplastic --plasticViscosity 30 --etaS 50 --seconds 4
+// (add --dimension 3 for the cylinder, --floor slip for a frictionless floor, --rows 20) and
+// yieldStressStudy --help for the options and their defaults. Measured: doc/validation.md §1.3.2.
 
 #include <algorithm>
 #include <chrono>
