@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <limits>
 #include <span>
 
 #include "boundaries/WallCondition.h"
@@ -114,9 +115,11 @@ struct FluidPair {
     densityRate +=
         Real(2) * i.density * shared.volumeJ * (i.velocity - shared.star.velocity).dot(gradW);
     acceleration -= Real(2) * massJ * shared.star.pressure * shared.inverseDensities * gradW;
-    // (an inviscid pair, both zero, has none: 0 / 0 would be NaN)
-    const Real sum = viscosityI + viscosityJ;
-    const Real harmonicViscosity = sum > 0 ? Real(2) * viscosityI * viscosityJ / sum : Real(0);
+    // (an inviscid pair, both zero, has none: 0 / 0 would be NaN; the floor, not a branch, so
+    // the pair loop stays as fast)
+    const Real harmonicViscosity =
+        Real(2) * viscosityI * viscosityJ /
+        std::max(viscosityI + viscosityJ, std::numeric_limits<Real>::min());
     acceleration += Viscosity::template acceleration<Dim>(
         massJ, harmonicViscosity, shared.inverseDensities, shearVelocity, xij, r, gradW,
         constants.viscosityRegularisation);

@@ -1,6 +1,7 @@
 #include "sph/ImplicitViscosity.h"
 
 #include <algorithm>
+#include <limits>
 #include <array>
 #include <cmath>
 #include <sstream>
@@ -101,8 +102,9 @@ ImplicitViscosityReport ImplicitViscosity::solve(ParticleCloud& fluid,
       const std::uint32_t j = neighbours[n];
       const Vector xij = periodic.separation(x[i], x[j]);
       const Real r2 = xij.squaredNorm();
-      const Real sum = mu[i] + mu[j];
-      const Real harmonic = sum > 0 ? Real(2) * (mu[i] * mu[j]) / sum : Real(0);
+      // (two inviscid particles: no coupling, not 0 / 0)
+      const Real harmonic = Real(2) * (mu[i] * mu[j]) /
+                            std::max(mu[i] + mu[j], std::numeric_limits<Real>::min());
       const Real weight = dt * Real(-2) * (mass[i] * mass[j]) * harmonic / (rho[i] * rho[j]) *
                           kernel.derivativeOverDistance(std::sqrt(r2)) * r2 / (r2 + etaSquared);
       pairWeight_[n] = weight;
