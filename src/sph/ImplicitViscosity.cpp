@@ -1,9 +1,9 @@
 #include "sph/ImplicitViscosity.h"
 
 #include <algorithm>
-#include <limits>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 #include <Eigen/Geometry>
@@ -103,8 +103,8 @@ ImplicitViscosityReport ImplicitViscosity::solve(ParticleCloud& fluid,
       const Vector xij = periodic.separation(x[i], x[j]);
       const Real r2 = xij.squaredNorm();
       // (two inviscid particles: no coupling, not 0 / 0)
-      const Real harmonic = Real(2) * (mu[i] * mu[j]) /
-                            std::max(mu[i] + mu[j], std::numeric_limits<Real>::min());
+      const Real harmonic =
+          Real(2) * (mu[i] * mu[j]) / std::max(mu[i] + mu[j], std::numeric_limits<Real>::min());
       const Real weight = dt * Real(-2) * (mass[i] * mass[j]) * harmonic / (rho[i] * rho[j]) *
                           kernel.derivativeOverDistance(std::sqrt(r2)) * r2 / (r2 + etaSquared);
       pairWeight_[n] = weight;

@@ -212,7 +212,8 @@ class WeaklyCompressibleFlow {
   double explicitViscousLimit() const;
   bool solvesViscosityImplicitly(double deltaT) const;
   void solveViscosity(Real dt);
-  // Returns the count of frozen particles with no melt within two hops (the rate pass skips them).
+  // Returns the count of frozen particles with neither melt nor a moving body within two hops
+  // (the rate pass skips them).
   std::uint64_t markFrozenNearMelt();
   template <int Dim>
   void computeRatesInDimension(RatePart part);

@@ -417,8 +417,11 @@ void WeaklyCompressibleFlow::computeRates(RatePart part) {
   holdFrozenParticles();
 }
 
-// For each particle, whether a melt (not frozen) particle lies within two neighbour hops:
-// 1 for melt and the frozen particles it reaches that way (computeRatesFor skips the others).
+// For each particle, whether a melt (not frozen) particle, or a wall whose load is measured (a
+// moving body), lies within two neighbour hops: 1 for melt and the frozen particles it reaches
+// that way (computeRatesFor skips the others). A body resting on solidified metal is carried by
+// it: without its pairs the frozen metal gave the body no force, and a punch sank through the
+// casting to its end stop (tutorials/semiSolidPress).
 std::uint64_t WeaklyCompressibleFlow::markFrozenNearMelt() {
   const auto& frozen = fluid_.scalarField(field::frozen);
   const std::uint64_t* begins = fluidPairs().offsets().data();
@@ -427,9 +430,16 @@ std::uint64_t WeaklyCompressibleFlow::markFrozenNearMelt() {
   const std::size_t count = frozen.size();
   frozenTouchesMelt_.assign(count, 0);
   frozenNearMelt_.assign(count, 0);
+  std::vector<const NeighbourList*> bodyPairs;
+  for (std::size_t w = 0; w < walls_.size(); ++w) {
+    if (loadMeasured_[w]) bodyPairs.push_back(&wallPairs(w));
+  }
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < count; ++i) {
     bool touches = frozen[i] == 0;
+    for (const NeighbourList* pairs : bodyPairs) {
+      touches = touches || (i < pairs->particleCount() && !pairs->of(i).empty());
+    }
     for (std::uint64_t k = begins[i]; k < ends[i] && !touches; ++k) {
       touches = frozen[neighbours[k]] == 0;
     }

@@ -2,8 +2,9 @@
 # The crossDitchPress tutorial end to end, coarse (./setResolution 4: dx = 4 mm, about 4.5
 # minutes on one core): the ladle pours its mass; the punch is held to 0.2 s, let go, falls on
 # the metal and rests on it above its end stop (the metal carries its weight); the casting
-# solidifies through both molds, and as it shrinks the punch follows it down to its end stop
-# (hard: exactly there, and there to the end). castPostProcess reports the gap against the volume
+# solidifies through both molds, and the punch stays on it above its end stop, carried by the
+# solid metal to the end (before 2026-12-06 frozen metal gave a body no force, and the punch sank
+# through the casting to its end stop). castPostProcess reports the gap against the volume
 # balance and the last particle to freeze, which must lie in the ditch under the crossing (the
 # paper's Fig. 18). No health stop (no particle through a mold), the heat books closed.
 # At 4 mm, as at the tutorial's 3 mm, the ditch's sides lie half-way between lattice planes; at
@@ -38,16 +39,17 @@ sphCastFoam > log.solidify 2>&1 || fail "solidification: $(tail -5 log.solidify)
 grep -q "^Stopping: the casting is solid (endWhenSolid)" log.solidify ||
     fail "the casting did not solidify: $(grep -m1 Stopping log.solidify)"
 history=postProcessing/dynamicBodies/0.6/upperMold.dat  # the second run's, from 0.6 s
-awk '!/^#/ { z = $4; stop = $14; if (stop == 1 && !seen) seen = $1; if (seen && (stop != 1 || z != -0.01225)) left = 1 }
-     END { printf "travel %.15g m, at the stop from %s s\n", z, seen
-           exit !(stop == 1 && z == -0.01225 && !left) }' "$history" > stop.txt ||
-    fail "the punch is not at its end stop at the end: $(cat stop.txt)"
-pass "solidified; the punch followed the shrinking casting to its end stop: $(cat stop.txt)"
+awk '!/^#/ { z = $4; v = $7; fz = $10; if ($14 == 1) stopped = 1 }
+     END { printf "travel %.5f m, velocity %.2g m/s, metal force %.3f N\n", z, v, fz
+           exit !(!stopped && z > -0.01225 && z < -0.005 && v > -1e-3 && v < 1e-3 && fz > 7.0 && fz < 8.7) }' \
+    "$history" > stop.txt ||
+    fail "the punch is not carried by the solid casting above its end stop: $(cat stop.txt)"
+pass "solidified; the solid casting carries the punch above its end stop: $(cat stop.txt)"
 
 castPostProcess > log.castPostProcess 2>&1 || fail "castPostProcess: $(tail -5 log.castPostProcess)"
 report=postProcessing/castReport.md
-grep -q "^The gap at t = .*: the punch's face 8 mm above the floor" "$report" ||
-    fail "no gap line at the end stop: $(grep -m1 'The gap' "$report")"
+grep -q "^The gap at t = .*: the punch's face [0-9.]* mm above the floor" "$report" ||
+    fail "no gap line: $(grep -m1 'The gap' "$report")"
 last=$(sed -n 's/^- Last to solidify: (\([^)]*\)) m.*/\1/p' "$report")
 echo "$last" | awk '{ exit !($3 < 0 && $1 > -0.012 && $1 < 0.012 && $2 > -0.012 && $2 < 0.012) }' ||
     fail "the last particle to freeze ($last) is not in the ditch under the crossing"
