@@ -28,16 +28,16 @@ struct ElastoViscoplasticSettings {
 // tau the deviatoric extra stress, D' the deviatoric strain rate (tr D / d removed in d
 // dimensions: a 2D run is incompressible plane strain, tau_zz = 0; with tr D / 3 the weakly
 // compressible melt's divergence noise piled up in tau_zz, 45 Pa against a yield stress of 39 in
-// the slump's top layer after 0.2 s), Omega the spin. In steady simple shear at a rate gammaDot the stress is tau0 +
-// k gammaDot^n (Herschel-Bulkley) up to terms of order (gammaDot k / G)^2; below tau0 the strain
-// is elastic, tau / G. The regularised viscous law (HerschelBulkley.h) cannot hold a plug in a
-// weakly compressible melt: the column's acoustic ringing shears every particle at about g / c,
-// so everything yields and creeps (doc/validation.md §1.3.2); here the ringing only flexes the
-// solid elastically.
-// Each flow step, before the rates, the stress is integrated over dt at the step's starting
-// velocity gradient (rheology/ShearRate.h: kernel-normalised, with the walls): an explicit
-// elastic trial, then the plastic flow's return to the law, backward Euler along tau (exact for
-// the magnitude, unconditionally stable). The stress's divergence is a force on the fluid,
+// the slump's top layer after 0.2 s), Omega the spin. In steady simple shear at a rate gammaDot the
+// stress is tau0 + k gammaDot^n (Herschel-Bulkley) up to terms of order (gammaDot k / G)^2; below
+// tau0 the strain is elastic, tau / G. The regularised viscous law (HerschelBulkley.h) cannot hold
+// a plug in a weakly compressible melt: the column's acoustic ringing shears every particle at
+// about g / c, so everything yields and creeps (doc/validation.md §1.3.2); here the ringing only
+// flexes the solid elastically. Each flow step, before the rates, the stress is integrated over dt
+// at the step's starting velocity gradient (rheology/ShearRate.h: kernel-normalised, with the
+// walls): an explicit elastic trial, then the plastic flow's return to the law, backward Euler
+// along tau (exact for the magnitude, unconditionally stable). The stress's divergence is a force
+// on the fluid,
 //   dv_i/dt += 1/rho_i sum_j V_j (tau_i + tau_j) grad_i W_ij,
 // which conserves momentum pair by pair (the pressure's form with sigma = -p I + tau); a wall
 // particle k carries tau_i at a no-slip wall and its mirror image (R tau_i R, R = I - 2 n n) at

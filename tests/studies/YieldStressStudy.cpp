@@ -22,7 +22,6 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -53,6 +52,7 @@ struct SlumpSettings {
   double shearModulus = 0;      // G over tau0 (elastoViscoplastic)
   double solventViscosity = 0;  // etaS, Pa s (elastoViscoplastic)
   bool slipFloor = false;       // no-slip: the slump test's plate holds the base
+  bool printStress = false;     // the stress and pressure up the axis at the end
   int dimension = 2;  // 2: a square column (plane strain); 3: a cylinder, its height its diameter
 };
 
@@ -217,7 +217,7 @@ int runSlump(const SlumpSettings& s) {
       nextPrint += s.seconds / 20;
     }
   }
-  if (s.elastic && std::getenv("SLUMP_PROFILE")) {
+  if (s.elastic && s.printStress) {
     const auto& diagonal = fluid.vectorField("stressDiagonal");
     const auto& shear = fluid.vectorField("stressShear");
     const auto& p = fluid.scalarField(field::p);
@@ -251,6 +251,8 @@ Study slumpStudy() {
                 "2: a square column (plane strain), 3: a cylinder as high as it is wide");
             add("floor", po::value<std::string>()->default_value("noSlip"),
                 "noSlip (a plate that holds the base) or slip");
+            add("printStress", po::value<bool>()->default_value(false),
+                "print tau and p up the axis at the end (elastoViscoplastic)");
             add("law", po::value<std::string>()->default_value("herschelBulkley"),
                 "herschelBulkley (the regularised viscosity) or elastoViscoplastic (an elastic "
                 "solid below tau0)");
@@ -290,6 +292,7 @@ Study slumpStudy() {
               throw std::invalid_argument("--floor must be noSlip or slip, not '" + floor + "'");
             }
             s.slipFloor = floor == "slip";
+            s.printStress = values["printStress"].as<bool>();
             if (s.dimension != 2 && s.dimension != 3) {
               throw std::invalid_argument("--dimension must be 2 or 3");
             }
