@@ -28,22 +28,12 @@ ElastoViscoplasticSettings readSettings(const Dictionary& rheology) {
   }
   const Dictionary& coeffs = rheology.subDict("elastoViscoplasticCoeffs");
   coeffs.checkKeys({"tau0", "k", "n", "G", "etaS"});
-  auto read = [&](const char* key, bool zeroAllowed) {
-    const Real value = coeffs.get<Real>(key);
-    if (!(value > 0 || (zeroAllowed && value == 0)) || !std::isfinite(value)) {
-      throw DictionaryError(coeffs.location(key),
-                            std::string("'") + key + "' must be " +
-                                (zeroAllowed ? "zero or positive" : "positive") + " in " +
-                                coeffs.name());
-    }
-    return value;
-  };
   ElastoViscoplasticSettings settings;
-  settings.yieldStress = read("tau0", true);
-  settings.consistency = read("k", true);
-  settings.exponent = read("n", false);
-  settings.shearModulus = read("G", false);
-  settings.solventViscosity = read("etaS", true);
+  settings.yieldStress = lawCoefficient(coeffs, "tau0", true);
+  settings.consistency = lawCoefficient(coeffs, "k", true);
+  settings.exponent = lawCoefficient(coeffs, "n", false);
+  settings.shearModulus = lawCoefficient(coeffs, "G", false);
+  settings.solventViscosity = lawCoefficient(coeffs, "etaS", true);
   return settings;
 }
 

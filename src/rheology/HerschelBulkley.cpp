@@ -22,21 +22,11 @@ HerschelBulkleySettings readSettings(const Dictionary& rheology) {
   }
   const Dictionary& coeffs = rheology.subDict("herschelBulkleyCoeffs");
   coeffs.checkKeys({"tau0", "k", "n", "mu0"});
-  auto read = [&](const char* key, bool zeroAllowed) {
-    const Real value = coeffs.get<Real>(key);
-    if (!(value > 0 || (zeroAllowed && value == 0))) {
-      throw DictionaryError(coeffs.location(key),
-                            std::string("'") + key + "' must be " +
-                                (zeroAllowed ? "zero or positive" : "positive") + " in " +
-                                coeffs.name());
-    }
-    return value;
-  };
   HerschelBulkleySettings settings;
-  settings.yieldStress = read("tau0", true);
-  settings.consistency = read("k", true);
-  settings.exponent = read("n", false);
-  settings.restViscosity = read("mu0", false);
+  settings.yieldStress = lawCoefficient(coeffs, "tau0", true);
+  settings.consistency = lawCoefficient(coeffs, "k", true);
+  settings.exponent = lawCoefficient(coeffs, "n", false);
+  settings.restViscosity = lawCoefficient(coeffs, "mu0", false);
   if (settings.yieldStress == 0 && settings.consistency == 0) {
     throw DictionaryError(coeffs.location("k"),
                           "'tau0' and 'k' are both zero in " + coeffs.name() +

@@ -1,5 +1,9 @@
 #include "rheology/RheologyModel.h"
 
+#include <cmath>
+#include <string>
+
+#include "core/Error.h"
 #include "core/dictionary/Dictionary.h"
 #include "rheology/ElastoViscoplastic.h"
 #include "rheology/HerschelBulkley.h"
@@ -9,6 +13,17 @@ namespace sphcast {
 
 NewtonianViscosity::NewtonianViscosity(const RheologyContext&, const Dictionary& settings) {
   settings.checkKeys({"model"});
+}
+
+Real lawCoefficient(const Dictionary& coeffs, const char* key, bool zeroAllowed) {
+  const Real value = coeffs.get<Real>(key);
+  if (!(value > 0 || (zeroAllowed && value == 0)) || !std::isfinite(value)) {
+    throw DictionaryError(coeffs.location(key),
+                          std::string("'") + key + "' must be " +
+                              (zeroAllowed ? "zero or positive" : "positive") + " in " +
+                              coeffs.name());
+  }
+  return value;
 }
 
 RheologyModels& rheologyModels() {

@@ -52,6 +52,10 @@ class RheologyModel {
   virtual FluidForceModel* force() { return nullptr; }
 };
 
+// A law's coefficient `key` from its <model>Coeffs dictionary: positive, or zero where
+// zeroAllowed; anything else (negative, not finite) is an error naming the entry.
+Real lawCoefficient(const Dictionary& coeffs, const char* key, bool zeroAllowed);
+
 // The models by the names physicsModels gives them (rheology { model NAME; <NAME>Coeffs {} }),
 // each built from the context and the rheology dictionary; registered in RheologyModel.cpp, the
 // first the default.

@@ -7,20 +7,8 @@
 # line.
 . "$SPHCAST_TEST_TOOLS"
 
-makeCup() {  # DIR
-    makeChillCup "$1" 0.2 "model frozenSolid;"
-    cd "$1" || fail "cannot enter $1"
-    echo 'rheology { model elastoViscoplastic;
-    elastoViscoplasticCoeffs { tau0 50; k 1; n 1; G 5000; etaS 0.01; } }' \
-        >> constant/physicsModels
-    setEntry system/controlDict writeInterval 0.1
-    setEntry system/controlDict logInterval 50
-    particleizeMold > log.particleizeMold 2>&1 || fail "particleizeMold"
-    setCastFields > log.setCastFields 2>&1 || fail "setCastFields"
-    cd - > /dev/null || exit 1
-}
-
-makeCup "$scratch/cup"
+makeRheologyCup "$scratch/cup" 0.2 0.1 'rheology { model elastoViscoplastic;
+    elastoViscoplasticCoeffs { tau0 50; k 1; n 1; G 5000; etaS 0.01; } }'
 cp -r "$scratch/cup" "$scratch/stopped"
 cd "$scratch/cup" || exit 1
 sphCastFoam > log 2>&1 || { tail -20 log >&2; fail "the elasto-viscoplastic cup did not run"; }

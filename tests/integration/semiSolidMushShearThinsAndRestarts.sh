@@ -8,19 +8,8 @@
 # frozenSolidFraction written beside the rheology is an error naming file and line.
 . "$SPHCAST_TEST_TOOLS"
 
-makeCup() {  # DIR
-    makeChillCup "$1" 0.6 "model frozenSolid;"
-    cd "$1" || fail "cannot enter $1"
-    echo 'rheology { model thixotropicSemiSolid; thixotropicSemiSolidCoeffs { b 0.05; } }' \
-        >> constant/physicsModels
-    setEntry system/controlDict writeInterval 0.3
-    setEntry system/controlDict logInterval 50
-    particleizeMold > log.particleizeMold 2>&1 || fail "particleizeMold"
-    setCastFields > log.setCastFields 2>&1 || fail "setCastFields"
-    cd - > /dev/null || exit 1
-}
-
-makeCup "$scratch/cup"
+makeRheologyCup "$scratch/cup" 0.6 0.3 \
+    'rheology { model thixotropicSemiSolid; thixotropicSemiSolidCoeffs { b 0.05; } }'
 cp -r "$scratch/cup" "$scratch/stopped"
 cd "$scratch/cup" || exit 1
 sphCastFoam > log 2>&1 || { tail -20 log >&2; fail "the semi-solid cup did not run"; }

@@ -182,6 +182,19 @@ makeChillCup() {
         '(0 0 -0.5)' "$2" "$3"
 }
 
+# makeRheologyCup DIR ENDTIME WRITEINTERVAL RHEOLOGY: the chill cup (makeChillCup, frozenSolid)
+# with the physicsModels entry RHEOLOGY, logged every 50 steps, particleized and filled.
+makeRheologyCup() {
+    makeChillCup "$1" "$2" "model frozenSolid;"
+    cd "$1" || fail "cannot enter $1"
+    echo "$4" >> constant/physicsModels
+    setEntry system/controlDict writeInterval "$3"
+    setEntry system/controlDict logInterval 50
+    particleizeMold > log.particleizeMold 2>&1 || fail "particleizeMold"
+    setCastFields > log.setCastFields 2>&1 || fail "setCastFields"
+    cd - > /dev/null || exit 1
+}
+
 # findVtkPython: sets `python` to the first of $PYTHON, python3 and /usr/bin/python3 that imports
 # vtk (the tutorials' comparison scripts read .vtp clouds with it); without one the test is
 # skipped (exit status 77).
