@@ -25,38 +25,16 @@
 #include "particles/Neighbourhood.h"
 #include "rheology/ElastoViscoplastic.h"
 #include "rheology/RheologyModel.h"
+#include "rheology/ShearedBlock.h"
 #include "sph/FlowTestCases.h"
 #include "sph/WeaklyCompressibleFlow.h"
 
 namespace sphcast {
 namespace {
 
-// A 2D block (periodic in x), 24 rows, sheared simply about its middle.
-struct ShearedBlock {
-  static constexpr int columns = 12, rows = 24;
-  static constexpr Real dx = Real(1e-3);
-  ParticleCloud fluid;
-  Neighbourhood neighbourhood;
-
-  ShearedBlock()
-      : fluid(testing::fluidBlock2D(columns, rows, dx, Vector::Zero(), 1000, 0)),
-        neighbourhood(3 * dx, periodicX()) {
-    fluid.addVectorField(field::acceleration).assign(fluid.size(), Vector::Zero());
-    neighbourhood.addCloud(fluid, Neighbourhood::Motion::moving);
-    neighbourhood.requestPairs(fluid, fluid);
-    neighbourhood.update();
-  }
-  static PeriodicBox periodicX() {
-    PeriodicBox box;
-    box.setPeriodic(0, 0, columns * dx);
-    return box;
-  }
-  void shear(Real rate) {
-    for (std::size_t i = 0; i < fluid.size(); ++i) {
-      const Real y = fluid.positions()[i].y() - Real(rows / 2) * dx;
-      fluid.vectorField(field::U)[i] = Vector(rate * y, 0, 0);
-    }
-  }
+// The sheared block of the rheologies' tests (ShearedBlock.h), water-like, inviscid.
+struct ShearedBlock : testing::ShearedBlock {
+  ShearedBlock() : testing::ShearedBlock(1000, 0) {}
 };
 
 ElastoViscoplasticSettings bingham() {

@@ -13,6 +13,7 @@
 #include "particles/FieldNames.h"
 #include "particles/Neighbourhood.h"
 #include "rheology/RheologyModel.h"
+#include "rheology/ShearedBlock.h"
 #include "rheology/ThixotropicSemiSolid.h"
 #include "sph/FlowTestCases.h"
 #include "support/TemporaryCase.h"
@@ -29,38 +30,11 @@ Material ac4ch() {
       .get("AC4CH", {}, "metal");
 }
 
-// A 2D block of mush (periodic in x) at temperature T and solid fraction fs, sheared simply,
-// v_x = rate (y - its middle); rows enough that the middle rows have a full support.
-struct ShearedMush {
-  static constexpr int columns = 12, rows = 24;
-  static constexpr Real dx = Real(1e-3);
-  ParticleCloud fluid;
-  Neighbourhood neighbourhood;
-
-  ShearedMush(Real temperature, Real fs)
-      : fluid(testing::fluidBlock2D(columns, rows, dx, Vector::Zero(), 2500, 1)),
-        neighbourhood(3 * dx, periodicX()) {
+// A block of mush at temperature T and solid fraction fs (ShearedBlock.h).
+struct ShearedMush : testing::ShearedBlock {
+  ShearedMush(Real temperature, Real fs) : ShearedBlock(2500, 1) {
     fluid.addScalarField(field::T).assign(fluid.size(), temperature);
     fluid.addScalarField(field::solidFraction).assign(fluid.size(), fs);
-    neighbourhood.addCloud(fluid, Neighbourhood::Motion::moving);
-    neighbourhood.requestPairs(fluid, fluid);
-    neighbourhood.update();
-  }
-  static PeriodicBox periodicX() {
-    PeriodicBox box;
-    box.setPeriodic(0, 0, columns * dx);
-    return box;
-  }
-  void shear(Real rate) {
-    for (std::size_t i = 0; i < fluid.size(); ++i) {
-      const Real y = fluid.positions()[i].y() - Real(rows / 2) * dx;
-      fluid.vectorField(field::U)[i] = Vector(rate * y, 0, 0);
-    }
-  }
-  // the particles a full support away from the top and bottom
-  bool interior(std::size_t i) const {
-    const Real y = fluid.positions()[i].y();
-    return y > Real(3.5) * dx && y < (rows - Real(3.5)) * dx;
   }
 };
 
