@@ -125,7 +125,7 @@ void ElastoViscoplastic::update(double dt) {
   for (std::size_t i = 0; i < owned; ++i) {
     const Matrix& L = gradient_[i];
     const Matrix strain = Real(0.5) * (L + L.transpose());
-    shearRate[i] = std::sqrt(Real(2) * strain.cwiseAbs2().sum());
+    shearRate[i] = shearRateOf(L);
     mu[i] = settings_.solventViscosity;
     if (frozen && frozen[i] != 0) continue;  // held rigid by the solidification
     const Matrix spin = Real(0.5) * (L - L.transpose());

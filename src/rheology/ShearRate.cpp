@@ -75,12 +75,12 @@ void velocityGradients(const ParticleCloud& fluid, const Neighbourhood& neighbou
   }
 }
 
+}  // namespace
+
 Real shearRateOf(const Matrix& gradient) {
   const Matrix strain = Real(0.5) * (gradient + gradient.transpose());
   return std::sqrt(Real(2) * strain.cwiseAbs2().sum());
 }
-
-}  // namespace
 
 std::vector<ShearWall> shearWalls(const WeaklyCompressibleFlow& flow) {
   std::vector<ShearWall> walls;

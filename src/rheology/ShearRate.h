@@ -40,6 +40,9 @@ void computeShearRates(const ParticleCloud& fluid, const Neighbourhood& neighbou
                        const std::vector<ShearWall>& walls, int dimension, Real supportRadius,
                        std::vector<Real>& shearRate);
 
+// gammaDot = sqrt(2 D:D) of a velocity gradient, D its symmetric part.
+Real shearRateOf(const Matrix& gradient);
+
 // The velocity gradient grad v (row a, column b: d v_a / d x_b) of every owned fluid particle
 // that computeShearRates reduces to gammaDot: the same sum, walls and normalisation.
 void computeVelocityGradients(const ParticleCloud& fluid, const Neighbourhood& neighbourhood,
