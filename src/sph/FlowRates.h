@@ -39,6 +39,10 @@ struct FlowConstants {
   Real soundSpeed;
   Vector gravity;
   Real viscosityRegularisation;  // eta^2 of the viscous term, 0.01 dx^2
+  // The lowest pressure a wall pair carries (accumulateWallPair): 0, a wall only pushes, for a
+  // fluid whose tension has no floor; the floor (cavitationPressure) for a melt that holds
+  // suction, so that its wall pairs carry the tension its fluid pairs do.
+  Real wallTensionFloor = 0;
 };
 
 // The viscous acceleration of eq. (2)'s second term from one neighbour, with dynamic viscosity
@@ -217,6 +221,13 @@ inline void accumulateWallPair(const InterfaceSide& i, Real viscosityI, const Wa
   // A wall only pushes: with tension (p < 0) on either side the pair would pull a lone fluid
   // particle into the wall (measured: one of a 2D dam break's ended 0.11 dx inside the back
   // wall), so both sides enter with p >= 0 (riemann, standard).
+  // A melt with a cavitation floor is the exception: its tension is bounded, and a particle in
+  // tension beside a wall has its fluid pairs pull it off the wall with -p_i V / rho_i sum_walls
+  // grad W unless the wall pairs carry the same tension. With the floor at -5,000 Pa, at c = 50
+  // m/s crossDitchPress's pressed melt, there at the floor near the molds, stirred at up to
+  // 1 m/s within 0.01 s of rest (doc/physics.md §10.4). So there both sides may go down to the
+  // particle's own tension, never below: the wall pulls no harder than the melt holds.
+  const Real lowest = std::max(std::min(i.pressure, Real(0)), constants.wallTensionFloor);
   // deltaSPH keeps the fluid's own p_i: its momentum term -(p_i + p_k) V_k / rho_i grad W sums
   // p_i grad W over the whole support, fluid and wall, which cancels for a uniform p_i; with
   // p_i clamped in the wall pairs only, a fluid particle in tension is pushed off the wall by
@@ -225,10 +236,10 @@ inline void accumulateWallPair(const InterfaceSide& i, Real viscosityI, const Wa
   // means do not). Measured in the 2D dam break at a/dx = 20: density range [-98, +48] kg/m^3
   // about rho_0 with the clamp, [-2, +15] without, as the Riemann scheme's [-5, +10].
   const Real fluidPressure =
-      Interface::fluidTensionAtWalls ? i.pressure : std::max(i.pressure, Real(0));
+      Interface::fluidTensionAtWalls ? i.pressure : std::max(i.pressure, lowest);
   const InterfaceSide fluid{i.density, fluidPressure, i.velocity};
   const Vector relative = i.velocity - k.velocity;
-  const InterfaceSide mirror{k.density, std::max(k.pressure, Real(0)),
+  const InterfaceSide mirror{k.density, std::max(k.pressure, lowest),
                              Real(2) * k.velocity - i.velocity};
   const Real fluidDistance = std::max(xik.dot(k.normal) - k.depth, halfSpacing);
   const Real beta = Real(1) + k.depth / fluidDistance;

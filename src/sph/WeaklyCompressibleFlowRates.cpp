@@ -127,8 +127,11 @@ void WeaklyCompressibleFlow::computeRatesFor() {
   const LinearEquationOfState eos{settings_.soundSpeed};
   const WendlandC2Kernel<Dim> kernel(settings_.supportRadius);
   const Real spacing = static_cast<Real>(fluid_.attributes().at("spacing"));
+  // a melt with a cavitation floor: its wall pairs carry its tension down to the floor
+  const bool tensionFloored = settings_.cavitationPressure > std::numeric_limits<Real>::lowest();
   const FlowConstants constants{settings_.soundSpeed, settings_.gravity,
-                                Real(0.01) * spacing * spacing};
+                                Real(0.01) * spacing * spacing,
+                                tensionFloored ? settings_.cavitationPressure : Real(0)};
   const PeriodicBox periodic = settings_.periodic;
   const auto& x = fluid_.positions();
   const auto& v = fluid_.vectorField(field::U);

@@ -2,10 +2,10 @@
 # tutorials/conicalMold at dx = 4.5 mm (3,372 melt particles; about 45 s on one core): AC4CH at
 # 970 K in a cone held at 300 K, solidified to the end, against enthalpyReference.py's conduction
 # and level-drop feeding. compareWithReference --check: solid within 5 % of the reference and
-# f_s = 0.9 within 10 % (measured +0 % and +2 %; +29 % solid with the held surface on the mold's
+# f_s = 0.9 within 10 % (measured +0.3 % and +1.8 %; +29 % solid with the held surface on the mold's
 # first layer, half a spacing behind the wall), the melt's volume lost within 10 % of the share
-# the reference's feeding draws (4.7 % and 4.9 %), the sink's mean distance from the reference's
-# funnel, r = 0 to 40 mm, below 1 mm (0.71 mm; it does not fall with dx), the last particles to
+# the reference's feeding draws (4.8 % and 4.9 %), the sink's mean distance from the reference's
+# funnel, r = 0 to 40 mm, below 1 mm (0.64 mm; it does not fall with dx), the last particles to
 # freeze within a quarter of the top's radius of the axis and a tenth of the height of the top
 # there; the cooling mode's flow steps are of its own maxCo (0.625, not controlDict's 0.25).
 # With the cavitation floor at 0 instead of -5,000 Pa the melt feeds by gravity alone and
