@@ -14,7 +14,8 @@
 #   tutorial still runs without it (../../../etc).
 # - With it: freeFall's Allrun runs setCastFields, sphCastFoam and castPostProcess in the copy
 #   (the centroid on the parabola to 1e-12 m at the 26 written times, freeFall.pvd), and
-#   Allclean brings the copy back to what was copied; poiseuilleFlow, copied under another name,
+#   Allclean brings the copy back to what was copied, a dictionary edited after keepOriginal
+#   included; poiseuilleFlow, copied under another name,
 #   runs at 10 rows with its comparison script importing etc/functionObjectSeries.py through
 #   $SPHCAST_PROJECT (PYTHONPATH unset).
 # About 4 s on one thread.
@@ -105,6 +106,16 @@ onTheParabola "$csv" ||
 diff -r "$install/tutorials/validation/freeFall" . > /dev/null ||
     fail "Allclean left: $(diff -rq "$install/tutorials/validation/freeFall" .)"
 pass "the copied freeFall runs (centroid on the parabola) and cleans, outside the repository"
+
+# An Allrun that edits a dictionary between its stages (the presses' endTime) keeps the case's own
+# with keepOriginal; Allclean puts it back, also after a run stopped between the edit and its end.
+(. "$install/etc/RunFunctions" && keepOriginal system/controlDict &&
+    sed -i 's/^endTime .*/endTime 400;/' system/controlDict) || fail "keepOriginal and the edit"
+grep -q '^endTime 400;' system/controlDict || fail "the edit did not take"
+./Allclean > "$scratch/log.Allclean" 2>&1 || fail "the copied Allclean: $(cat "$scratch/log.Allclean")"
+diff -r "$install/tutorials/validation/freeFall" . > /dev/null ||
+    fail "Allclean did not put back the edited controlDict: $(diff -r "$install/tutorials/validation/freeFall" .)"
+pass "Allclean puts back a dictionary an Allrun edited (keepOriginal)"
 
 cp -r "$SPHCAST_TUTORIALS/validation/poiseuilleFlow" "$home/run/myChannel"
 cd "$home/run/myChannel" || fail "no copy of poiseuilleFlow"
