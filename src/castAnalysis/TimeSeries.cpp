@@ -203,7 +203,34 @@ void TimeSeries::add(const WrittenTime& time) {
     if (csv.empty()) csv = csvHeader();
     lastRow_[name] = csvRow(time.folder.value, *cloud);
     csv += lastRow_[name];
+    spill_[name] = spillLine(time.folder.value, *cloud);
+    if (spill_[name].empty()) spill_.erase(name);
   }
+}
+
+// The metal a flow spilled out of its domain by `time` (solver/MetalSpill.h), as a sentence;
+// empty for a cloud no flow moved (it carries no domain).
+std::string TimeSeries::spillLine(double time, const ParticleCloud& cloud) {
+  const auto& attributes = cloud.attributes();
+  if (!attributes.contains("domain.lower.x")) return "";
+  std::ostringstream line;
+  line.precision(4);
+  const auto spilled = attributes.find("spilledMass");
+  if (spilled == attributes.end() || !(spilled->second > 0)) {
+    line << "No metal of " << cloud.name() << " left the domain by " << time << " s.\n";
+    return line.str();
+  }
+  double held = 0;
+  for (std::size_t i = 0; i < cloud.size(); ++i) {
+    held += static_cast<double>(cloud.scalarField(field::mass)[i]);
+  }
+  const auto heat = attributes.find("heatLost.spilled");
+  line << "**Metal spilled**: by " << time << " s " << attributes.at("spilledParticles")
+       << " particles of " << cloud.name() << " left the domain, " << spilled->second << " kg ("
+       << 100 * spilled->second / (held + spilled->second) << " % of the metal)";
+  if (heat != attributes.end()) line << ", carrying " << heat->second << " J of heat";
+  line << "; the log names where (\"spilled\").\n";
+  return line.str();
 }
 
 ReportSection TimeSeries::finish() {
@@ -257,12 +284,13 @@ ReportSection TimeSeries::finish() {
          << cell("internalEnergyChange") << " |\n";
   }
   text << "\n(–: the cloud has no such quantity, e.g. a mold's solid fraction.)\n";
+  for (const auto& [cloud, line] : spill_) text << '\n' << line;
   if (!lastEnergyRow_.empty()) {
     const auto cells = cellsOf(lastEnergyRow_);
     text << "\nHeat books of every heat cloud at " << shortNumber(cells[0])
          << " s: internal energy changed by " << shortNumber(cells[1]) << " J, "
          << shortNumber(cells[2])
-         << " J left through the held surfaces, the air and radiation; imbalance "
+         << " J left through the held surfaces, the air, radiation and spilled metal; imbalance "
          << shortNumber(cells[3]) << " J (" << shortNumber(cells[4])
          << " of the start's heat content; energyBalance.csv).\n";
     Plot plot;

@@ -33,12 +33,15 @@ class TimeSeries : public CastAnalysis {
   static std::string csvRow(double time, const ParticleCloud& cloud);
   // The heat books of every cloud with u, mass and internalEnergyAtStart; empty when none has.
   static std::string energyBalanceRow(const WrittenTime& time);
+  static std::string spillLine(double time, const ParticleCloud& cloud);
 
  private:
   std::vector<std::string> clouds_;
   std::map<std::string, std::string> csv_;  // cloud -> rows
   std::map<std::string, std::string> lastRow_;
   std::string energy_, lastEnergyRow_;
+  // per cloud run by a flow (it carries the run's domain): the last time's spill line
+  std::map<std::string, std::string> spill_;
 };
 
 }  // namespace sphcast

@@ -72,6 +72,32 @@ void ParticleCloud::resize(std::size_t count) {
   for (auto& [fieldName, field] : ids_) field.resize(count, 0);
 }
 
+void ParticleCloud::remove(const std::vector<std::size_t>& indices) {
+  if (indices.empty()) return;
+  if (haloSize_ > 0) {
+    throw Error("cloud '" + name_ + "': particles removed while it holds a halo of " +
+                std::to_string(haloSize_));
+  }
+  std::vector<char> removed(size(), 0);
+  for (const std::size_t i : indices) {
+    if (i >= size() || removed[i]) {
+      throw Error("cloud '" + name_ + "': cannot remove particle " + std::to_string(i) + " of " +
+                  std::to_string(size()) + " (out of range or named twice)");
+    }
+    removed[i] = 1;
+  }
+  // the kept particles first, in their order, then the removed ones, cut off
+  std::vector<std::size_t> order;
+  order.reserve(size());
+  for (std::size_t i = 0; i < size(); ++i) {
+    if (!removed[i]) order.push_back(i);
+  }
+  const std::size_t kept = order.size();
+  for (const std::size_t i : indices) order.push_back(i);
+  reorder(order);
+  resize(kept);
+}
+
 void ParticleCloud::checkNameFree(const std::string& fieldName, const char* kind) const {
   const bool taken = fieldName == "position" ||
                      (scalars_.count(fieldName) && std::strcmp(kind, "scalar") != 0) ||

@@ -71,6 +71,10 @@ class ParticleCloud {
   // A cloud with a halo keeps it last: newOrder must map the halo's places onto themselves.
   void reorder(const std::vector<std::size_t>& newOrder);
 
+  // Removes the particles at `indices` (in any order, each once) from every field, the others
+  // keeping their order. Only a cloud without a halo: a decomposed run drops it first.
+  void remove(const std::vector<std::size_t>& indices);
+
   // Appends the particles of another cloud with the same fields (throws if they differ); the
   // halo is dropped from the count, as by resize().
   void append(const ParticleCloud& other);

@@ -8,7 +8,8 @@
 namespace sphcast {
 
 namespace {
-const char* const paths[] = {"atmosphere", "radiation", "fixedTemperature"};
+// heat that left: through the air, by radiation, into held patches, with spilled metal
+const char* const paths[] = {"atmosphere", "radiation", "fixedTemperature", "spilled"};
 }  // namespace
 
 EnergyBalance::EnergyBalance(const std::string& name, const Dictionary& dict,
@@ -48,7 +49,7 @@ EnergyBalance::EnergyBalance(const std::string& name, const Dictionary& dict,
 void EnergyBalance::sample(double time) {
   std::string row;
   double change = 0, content = 0;
-  double lost[3] = {0, 0, 0};
+  double lost[4] = {0, 0, 0, 0};
   for (const ParticleCloud* cloud : clouds_) {
     const auto& mass = cloud->scalarField(field::mass);
     const auto& u = cloud->scalarField(field::u);
@@ -62,7 +63,7 @@ void EnergyBalance::sample(double time) {
     change += delta;
     content += std::abs(cloud->attributes().at("internalEnergyAtStart")) + brought;
     row += formatSample(energy) + ' ';
-    for (int p = 0; p < 3; ++p) {
+    for (int p = 0; p < 4; ++p) {
       const auto found = cloud->attributes().find(std::string("heatLost.") + paths[p]);
       if (found != cloud->attributes().end()) lost[p] += found->second;
     }

@@ -10,11 +10,12 @@ namespace sphcast {
 // type energyBalance: the heat budget of the heat clouds over time (thermal/EnergyEquation.h
 // keeps the accounts), one file `energyBalance`:
 //
-//   time  E_<cloud>...  lost_atmosphere  lost_radiation  lost_fixedTemperature  imbalance
-//         relativeImbalance
+//   time  E_<cloud>...  lost_atmosphere  lost_radiation  lost_fixedTemperature  lost_spilled
+//         imbalance  relativeImbalance
 //
 // E_c = sum m_i u_i of cloud c (J); lost_<path> the heat that left all clouds through the path
-// since the run's first start (J); imbalance = sum_c (E_c - E_c(start)) + sum of lost (J),
+// since the run's first start (J; spilled: with the metal that left the domain,
+// solver/MetalSpill.h); imbalance = sum_c (E_c - E_c(start)) + sum of lost (J),
 // round-off when the paths conserve energy; relativeImbalance = imbalance / sum_c |E_c(start)|,
 // the scale of that round-off (about 1e-16 per step: u is measured from 0 K, so E_c is the
 // whole heat content, not what was exchanged).

@@ -9,9 +9,11 @@
 #include <new>
 #include <ostream>
 #include <sstream>
+#include <utility>
 
 #include "core/Error.h"
 #include "particles/FieldNames.h"
+#include "solver/MetalSpill.h"
 
 namespace sphcast {
 
@@ -80,7 +82,10 @@ void CastingSolver::evolve(double deltaT) {
       });
   if (models_.flow) flowFirstKickAndDrift(deltaT);
   if (heatThisStep)
-    addWallTime(monitor_.times().heat, [&] { models_.energy->halfKick(heatSchedule_.deltaT()); });
+    addWallTime(monitor_.times().heat, [&] { firstHeatKick(heatSchedule_.deltaT()); });
+  // before the search places it; after the heat's first kick, the spilled metal leaves with the
+  // heat that kick gave it, and the rates computed next are without it
+  if (models_.flow) spillMetalOutside(!heatThisStep);
   // the search at the new positions (nothing moves without a flow), the quantities models share
   if (models_.flow) searchAndKeepClear(deltaT, true);
   if (heatThisStep && models_.flow && models_.exposedArea) {
@@ -99,6 +104,40 @@ void CastingSolver::flowFirstKickAndDrift(double deltaT) {
   models_.flow->kickAndDrift(deltaT);
   models_.movingMolds.drift(deltaT, time_.value());
   models_.pouringInlets.pour(time_.value(), models_.decomposition.get());
+}
+
+// The heat step's first kick, with the rates of the last heat step. Those rates hold what the
+// metal spilled since then exchanged with the rest: the heat their kick would have given it
+// leaves with it, booked as spilled, so that the books close.
+void CastingSolver::firstHeatKick(double deltaT) {
+  models_.energy->halfKick(deltaT);
+  if (spilledHeatRate_ != 0) {
+    models_.fluid->attributes()["heatLost.spilled"] += 0.5 * deltaT * spilledHeatRate_;
+    spilledHeatRate_ = 0;
+  }
+}
+
+void CastingSolver::spillMetalOutside(bool heatKickPending) {
+  const Spill spill = spillOutside(*models_.fluid, domain_, models_.decomposition.get(), comm_);
+  if (spill.particles == 0) return;
+  if (heatKickPending) spilledHeatRate_ += spill.heatRate;
+  const double fraction = spilledFraction(*models_.fluid, comm_);
+  const double limit = monitor_.healthSettings().maxSpilledFraction;
+  std::ostringstream message;
+  message.precision(4);
+  message << spill.particles << " particle(s) of cloud '" << models_.fluid->name()
+          << "' left the domain and were spilled"
+          << (spill.first.empty() ? "" : " (the first, " + spill.first + ")") << "; spilled in all "
+          << models_.fluid->attributes().at("spilledParticles") << " particles, "
+          << models_.fluid->attributes().at("spilledMass") << " kg, " << 100 * fraction
+          << " % of the metal";
+  if (fraction > limit) {
+    message << ", above healthChecks maxSpilledFraction " << 100 * limit
+            << " %: the mold leaks, or the case spills more than it allows";
+    spillStop_ = message.str();
+  } else if (comm_.master() && monitor_.warnings().shouldPrint("metal spilled", fraction)) {
+    warning("time " + time_.timeName() + ": " + message.str());
+  }
 }
 
 // The second half, after the search: the rheology's viscosity, the rates at the new positions
@@ -126,7 +165,7 @@ void CastingSolver::finishHeatStep() {
 void CastingSolver::heatStepInPlace(double deltaT) {
   heatSchedule_.stepApart(deltaT);
   addWallTime(monitor_.times().heat, [&] {
-    models_.energy->halfKick(deltaT);
+    firstHeatKick(deltaT);
     if (models_.exposedArea) models_.exposedArea->compute();
     finishHeatStep();
   });
@@ -181,6 +220,7 @@ void CastingSolver::evolveCooling(double deltaT) {
       monitor_.counts().flowStepsWithoutCooling += deltaT / limits.smallest(without);
     }
     flowFirstKickAndDrift(flowDeltaT);
+    spillMetalOutside(true);  // the next heat step's first kick takes the rates with them
     searchAndKeepClear(flowDeltaT, k + 1 == solidificationSetup_.cooling->flowStepsPerHeatStep);
     flowRatesAndSecondKick(flowDeltaT);
     ++monitor_.counts().flowSubSteps;
@@ -306,6 +346,7 @@ void CastingSolver::run() {
       if (parallel_) throw;
       failure = std::string("the step failed: ") + error.what();
     }
+    if (failure.empty()) failure = std::exchange(spillStop_, std::string());
     if (failure.empty())
       failure = addWallTime(monitor_.times().checks,
                             [&] { return monitor_.checkHealth(clouds_, domain_); });

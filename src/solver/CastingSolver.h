@@ -87,6 +87,12 @@ class CastingSolver {
   double coolingMaxCo() const;  // the cooling mode's flow steps' Courant number
   void evolveCooling(double deltaT);
   void flowFirstKickAndDrift(double deltaT);
+  // The metal outside the domain spilled (MetalSpill.h): logged, and spillStop_ set when the
+  // spill passes healthChecks' maxSpilledFraction. heatKickPending: a heat step's first kick
+  // with rates that include the spilled metal is still to come (firstHeatKick books it).
+  void spillMetalOutside(bool heatKickPending);
+  void firstHeatKick(double deltaT);
+  Domain fixedDomain(ParticleCloud& fluid, const std::vector<const ParticleCloud*>& walls) const;
   void flowRatesAndSecondKick(double deltaT);
   void flushPendingHeat();
   void heatStepInPlace(double deltaT);
@@ -121,6 +127,8 @@ class CastingSolver {
   CastingModels models_;                     // built from the case, stepped by evolve()
   bool exposedAreaRestored_ = false;         // read with a restart's clouds
   Domain domain_;
+  std::string spillStop_;       // why the spill stops the run (empty: it does not)
+  double spilledHeatRate_ = 0;  // sum m du/dt of metal spilled since the last heat rates (W)
   // The clouds before the step being taken (those that change: the fluid, the heat clouds)
   std::vector<ParticleCloud> lastGood_;
   std::vector<ParticleCloud*> evolving_;

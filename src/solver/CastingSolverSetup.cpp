@@ -289,6 +289,34 @@ void CastingSolver::searchNeighbours(CloudOrder order, bool rebuild) {
   }
 }
 
+// The box the run's particles must stay in: the case's (healthChecks domain), else the one the
+// run started with (kept with the metal's cloud: a restart after a punch moved keeps it), else
+// the molds' box (the metal's without molds) grown by half its size, on every rank the same.
+Domain CastingSolver::fixedDomain(ParticleCloud& fluid,
+                                  const std::vector<const ParticleCloud*>& walls) const {
+  Domain domain;
+  if (monitor_.healthSettings().domain) {
+    domain = *monitor_.healthSettings().domain;
+  } else if (const std::optional<Domain> kept = storedDomain(fluid)) {
+    domain = *kept;
+  } else {
+    Domain box = walls.empty() ? boundingBox({&fluid}) : boundingBox(walls);
+    if (parallel_) {  // the box of every rank's particles
+      std::vector<double> lower(box.lower.data(), box.lower.data() + 3);
+      std::vector<double> upper(box.upper.data(), box.upper.data() + 3);
+      comm_.min(lower);
+      comm_.max(upper);
+      for (int a = 0; a < 3; ++a) {
+        box.lower[a] = static_cast<Real>(lower[static_cast<std::size_t>(a)]);
+        box.upper[a] = static_cast<Real>(upper[static_cast<std::size_t>(a)]);
+      }
+    }
+    domain = withMargin(box);
+  }
+  storeDomain(fluid, domain);
+  return domain;
+}
+
 void CastingSolver::setUpFlow() {
   ParticleCloud& fluid = cloudNamed(flowSetup_.fluidCloud);
   if (solidificationSetup_.enabled) {
@@ -302,18 +330,7 @@ void CastingSolver::setUpFlow() {
                                                           *models_.neighbourhood);
   models_.fluid = &fluid;
   if (!walls.empty()) models_.fillTime = std::make_unique<FillTime>(fluid, walls);
-  Domain box = walls.empty() ? boundingBox({&fluid}) : boundingBox(walls);
-  if (parallel_) {  // the box of every rank's particles
-    std::vector<double> lower(box.lower.data(), box.lower.data() + 3);
-    std::vector<double> upper(box.upper.data(), box.upper.data() + 3);
-    comm_.min(lower);
-    comm_.max(upper);
-    for (int a = 0; a < 3; ++a) {
-      box.lower[a] = static_cast<Real>(lower[static_cast<std::size_t>(a)]);
-      box.upper[a] = static_cast<Real>(upper[static_cast<std::size_t>(a)]);
-    }
-  }
-  domain_ = withMargin(box);
+  domain_ = fixedDomain(fluid, walls);
   auto countOf = [&](const ParticleCloud& cloud) {
     return comm_.sum(static_cast<std::int64_t>(cloud.ownedSize()));
   };
@@ -343,7 +360,10 @@ void CastingSolver::setUpFlow() {
   const Eigen::IOFormat plain(Eigen::StreamPrecision, Eigen::DontAlignCols, " ", " ");
   info() << "    domain (" << domain_.lower.transpose().format(plain) << ") ("
          << domain_.upper.transpose().format(plain)
-         << "): a particle outside it, or not finite, stops the run\n"
+         << "): metal outside it is spilled (removed, its mass and heat booked; the run stops "
+         << "when more than " << 100 * monitor_.healthSettings().maxSpilledFraction
+         << " % of the metal has spilled), any other particle outside it, or one not finite, "
+         << "stops the run\n"
          << "    health checks: density deviation warned above "
          << 100 * monitor_.healthSettings().warnDensityDeviation << " %, stops above "
          << 100 * monitor_.healthSettings().maxDensityDeviation << " %; a particle "

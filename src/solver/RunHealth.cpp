@@ -32,16 +32,31 @@ HealthSettings HealthSettings::read(const Dictionary& controlDict) {
   HealthSettings s;
   if (!controlDict.found("healthChecks")) return s;
   const Dictionary& dict = controlDict.subDict("healthChecks");
-  dict.checkKeys(
-      {"warnDensityDeviation", "maxDensityDeviation", "maxWallPenetration", "minDeltaTFraction"});
+  dict.checkKeys({"warnDensityDeviation", "maxDensityDeviation", "maxWallPenetration",
+                  "minDeltaTFraction", "maxSpilledFraction", "domain"});
   s.warnDensityDeviation =
       dict.getOrDefault<double>("warnDensityDeviation", s.warnDensityDeviation);
   s.maxDensityDeviation = dict.getOrDefault<double>("maxDensityDeviation", s.maxDensityDeviation);
   s.maxWallPenetration = dict.getOrDefault<double>("maxWallPenetration", s.maxWallPenetration);
   s.minDeltaTFraction = dict.getOrDefault<double>("minDeltaTFraction", s.minDeltaTFraction);
-  for (const char* key :
-       {"warnDensityDeviation", "maxDensityDeviation", "maxWallPenetration", "minDeltaTFraction"}) {
+  s.maxSpilledFraction = dict.getOrDefault<double>("maxSpilledFraction", s.maxSpilledFraction);
+  for (const char* key : {"warnDensityDeviation", "maxDensityDeviation", "maxWallPenetration",
+                          "minDeltaTFraction", "maxSpilledFraction"}) {
     if (dict.found(key)) requirePositive(dict, key, dict.get<double>(key));
+  }
+  if (dict.found("domain")) {
+    const Dictionary& box = dict.subDict("domain");
+    box.checkKeys({"lower", "upper"});
+    Domain domain;
+    domain.lower = box.get<Vector>("lower");
+    domain.upper = box.get<Vector>("upper");
+    if (!(domain.lower.array() < domain.upper.array()).all()) {
+      throw DictionaryError(box.location("upper"),
+                            "'upper' must lie above 'lower' in every "
+                            "direction in " +
+                                box.name());
+    }
+    s.domain = domain;
   }
   if (s.minDeltaTFraction >= 1) {
     throw DictionaryError(dict.location("minDeltaTFraction"),

@@ -3,6 +3,7 @@
 #include <cstddef>
 #include <limits>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -29,6 +30,12 @@ struct HealthSettings {
   // The models' stable step below this fraction of its running mean (over ~100 steps) means the
   // run is blowing up: it stops.
   double minDeltaTFraction = 1e-3;
+  // The metal spilled out of the domain (solver/MetalSpill.h), as a fraction of the metal's mass
+  // (spilled included), above which the run stops: a mold that leaks, not a splash.
+  double maxSpilledFraction = 0.05;
+  // The case's own domain, `domain { lower (x y z); upper (x y z); }` (a floor: lower's z);
+  // without it the molds' box grown by half its size, fixed at the run's first start.
+  std::optional<Domain> domain;
 
   static HealthSettings read(const Dictionary& controlDict);
 };

@@ -59,8 +59,8 @@ enum class ExposedAreaForm {
 // Clouds that keep their lattice (the solver's walls) are left ungated (the constructor's
 // `lattices`): a first version gated the molds too, and the few mold particles whose area it
 // changed were enough to change crossDitchPress's pour at 4 mm so that a splash went over the
-// lower mold's rim and fell out of the domain (an issue of its own: metal spilled from the
-// mold stops the run).
+// lower mold's rim and fell out of the domain (which then stopped the run; metal that leaves
+// the domain is now spilled and booked, solver/MetalSpill.h).
 //
 // Writes the field `exposedArea` (m^2 in 3D, m in 2D) of each exposed cloud, and `granularity`
 // (s_i), shared by every model that needs them (atmosphere, radiation; surface tension next).

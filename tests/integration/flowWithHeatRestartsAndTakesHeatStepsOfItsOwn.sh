@@ -7,36 +7,9 @@
 # for bit, and the energy books close in both.
 . "$SPHCAST_TEST_TOOLS"
 
-makeHeatedSphere() {  # DIR INTERVAL
-    makeSloshingSphereCase "$1" 0.1
-    cd "$1" || fail "cannot enter $1"
-    sed -i 's/fields { U (0.6 0 0); }/fields { U (0.6 0 0); T 900; }/' system/setCastFieldsDict
-    echo 'setFields { mold { fields { T 300; } } }' >> system/setCastFieldsDict
-    cat > constant/physicalProperties <<DICT
-FoamFile { version 2.0; format ascii; class dictionary; object physicalProperties; }
-AC4CH { #includeEtc "materials/AC4CH" }
-iron  { #includeEtc "materials/iron" }
-DICT
-    cat >> constant/physicsModels <<DICT
-materials { metal AC4CH; mold iron; }
-heatTransfer
-{
-    clouds      (metal mold);
-    conduction  on;
-    moldContact { coefficients ((AC4CH iron 3000)); }
-    atmosphere  { T 300; coefficients ((AC4CH 20)); }
-    interval    $2;
-}
-DICT
-    sed -i 's/^logInterval .*/logInterval 500;\nfunctions { balance { type energyBalance; clouds (metal mold); } }/' system/controlDict
-    particleizeMold > log.particleizeMold 2>&1 || fail "particleizeMold"
-    setCastFields > log.setCastFields 2>&1 || fail "setCastFields"
-    cd - > /dev/null || exit 1
-}
-
-makeHeatedSphere "$scratch/auto" auto
+makeHeatedSloshingSphere "$scratch/auto" auto
 cp -r "$scratch/auto" "$scratch/stopped"
-makeHeatedSphere "$scratch/everyStep" everyStep
+makeHeatedSloshingSphere "$scratch/everyStep" everyStep
 (cd "$scratch/auto" && sphCastFoam > log 2>&1) || fail "run with interval auto"
 (cd "$scratch/everyStep" && sphCastFoam > log 2>&1) || fail "run with heat every step"
 grep -q "^Heat: .* heat steps in .* steps (interval auto" "$scratch/auto/log" || fail "no heat line in the log"

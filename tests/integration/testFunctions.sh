@@ -150,6 +150,36 @@ Physical Surface("moldWall") = Surface{:};' \
             b { type box; min (-0.05 -0.05 -0.05); max (0.05 0.05 0); } } }' '(0.6 0 0)' 12 "$2"
 }
 
+# makeHeatedSloshingSphere DIR INTERVAL: the sloshing sphere (to 0.1 s) as AC4CH at 900 K in an
+# iron mold at 300 K (conduction, contact, air), heatTransfer's interval INTERVAL, the energyBalance
+# function object `balance`; particleized and filled. The working directory stays where it was.
+makeHeatedSloshingSphere() {
+    makeSloshingSphereCase "$1" 0.1
+    cd "$1" || fail "cannot enter $1"
+    sed -i 's/fields { U (0.6 0 0); }/fields { U (0.6 0 0); T 900; }/' system/setCastFieldsDict
+    echo 'setFields { mold { fields { T 300; } } }' >> system/setCastFieldsDict
+    cat > constant/physicalProperties <<DICT
+FoamFile { version 2.0; format ascii; class dictionary; object physicalProperties; }
+AC4CH { #includeEtc "materials/AC4CH" }
+iron  { #includeEtc "materials/iron" }
+DICT
+    cat >> constant/physicsModels <<DICT
+materials { metal AC4CH; mold iron; }
+heatTransfer
+{
+    clouds      (metal mold);
+    conduction  on;
+    moldContact { coefficients ((AC4CH iron 3000)); }
+    atmosphere  { T 300; coefficients ((AC4CH 20)); }
+    interval    $2;
+}
+DICT
+    sed -i 's/^logInterval .*/logInterval 500;\nfunctions { balance { type energyBalance; clouds (metal mold); } }/' system/controlDict
+    particleizeMold > log.particleizeMold 2>&1 || fail "particleizeMold"
+    setCastFields > log.setCastFields 2>&1 || fail "setCastFields"
+    cd - > /dev/null || exit 1
+}
+
 # makeChillMold DIR HEIGHT REGIONS U ENDTIME SOLIDIFICATION: makeMoldCase's open cylinder of
 # radius 20 mm and height HEIGHT (m), held at 300 K (a chill conducting like the melt), with
 # AC4CH at 970 K in REGIONS moving at U (c = 20 m/s); SOLIDIFICATION is the body of

@@ -33,6 +33,26 @@ TEST(ParticleCloud, ReorderMovesEveryFieldTogether) {
   EXPECT_THROW(cloud.reorder({0, 1}), Error);
 }
 
+TEST(ParticleCloud, RemoveTakesOutTheNamedParticlesAndKeepsTheOthersInOrder) {
+  ParticleCloud cloud = threeParticles();
+  cloud.resize(5);  // ids 10 11 12 0 0 ...
+  cloud.idField("id")[3] = 13;
+  cloud.idField("id")[4] = 14;
+  const std::uint64_t before = cloud.layoutVersion();
+  cloud.remove({3, 0});
+  ASSERT_EQ(cloud.size(), 3u);
+  EXPECT_EQ(cloud.idField("id")[0], 11);
+  EXPECT_EQ(cloud.idField("id")[1], 12);
+  EXPECT_EQ(cloud.idField("id")[2], 14);
+  EXPECT_EQ(cloud.scalarField(field::T)[1], 902);
+  EXPECT_EQ(cloud.positions()[0].x(), 1);
+  EXPECT_NE(cloud.layoutVersion(), before);  // a kept pair list would point at others
+  EXPECT_THROW(cloud.remove({1, 1}), Error);
+  EXPECT_THROW(cloud.remove({3}), Error);
+  cloud.setHaloSize(1);
+  EXPECT_THROW(cloud.remove({0}), Error);  // a halo is dropped first
+}
+
 TEST(ParticleCloud, ResizeGrowsEveryFieldWithZeros) {
   ParticleCloud cloud = threeParticles();
   cloud.resize(5);

@@ -1,5 +1,5 @@
 // The run's health checks (solver/RunHealth.h): what they find, that two threads find the same,
-// and how their thresholds are read.
+// and how their thresholds are read; the metal spilled out of the domain (solver/MetalSpill.h).
 #include "solver/RunHealth.h"
 
 #include <omp.h>
@@ -12,6 +12,7 @@
 #include "core/Error.h"
 #include "core/dictionary/Dictionary.h"
 #include "particles/FieldNames.h"
+#include "solver/MetalSpill.h"
 
 namespace sphcast {
 namespace {
@@ -95,6 +96,68 @@ TEST(RunHealth, ThresholdsAreReadFromControlDictAndChecked) {
   EXPECT_THROW(HealthSettings::read(Dictionary::parse(
                    "healthChecks { warnDensityDeviation 0.3; maxDensityDeviation 0.2; }")),
                Error);
+  EXPECT_EQ(defaults.maxSpilledFraction, 0.05);
+  EXPECT_FALSE(defaults.domain.has_value());
+  const HealthSettings floor = HealthSettings::read(Dictionary::parse(
+      "healthChecks { maxSpilledFraction 0.2; domain { lower (-1 -2 -0.5); upper (1 2 3); } }"));
+  EXPECT_EQ(floor.maxSpilledFraction, 0.2);
+  ASSERT_TRUE(floor.domain.has_value());
+  EXPECT_EQ(floor.domain->lower.z(), Real(-0.5));
+  EXPECT_EQ(floor.domain->upper.y(), Real(2));
+  // upside down, a key misspelt, a fraction not positive: each names its key
+  EXPECT_THROW(HealthSettings::read(Dictionary::parse(
+                   "healthChecks { domain { lower (0 0 1); upper (1 1 0.5); } }")),
+               Error);
+  EXPECT_THROW(HealthSettings::read(
+                   Dictionary::parse("healthChecks { domain { lower (0 0 0); uper (1 1 1); } }")),
+               Error);
+  EXPECT_THROW(HealthSettings::read(Dictionary::parse("healthChecks { maxSpilledFraction 0; }")),
+               Error);
+}
+
+// Metal outside the domain is removed and booked: mass, count and heat (sum m u) exactly those
+// of the removed particles, added to what spilled before; a second call with nothing outside
+// changes nothing; the domain kept with the cloud reads back bit for bit.
+TEST(MetalSpill, RemovesTheMetalOutsideAndBooksItsMassAndHeat) {
+  ParticleCloud metal("metal");
+  metal.resize(6);
+  auto& mass = metal.addScalarField(field::mass);
+  auto& u = metal.addScalarField(field::u);
+  metal.addIdField(field::id);
+  for (std::size_t i = 0; i < 6; ++i) {
+    metal.positions()[i] = Vector(0, 0, Real(0.3) * Real(i) - Real(0.2));  // z -0.2 .. 1.3
+    mass[i] = Real(0.001) * Real(i + 1);
+    u[i] = Real(1e5) * Real(i + 2);
+    metal.idField(field::id)[i] = static_cast<std::int64_t>(100 + i);
+  }
+  const Domain domain{Vector::Constant(-1), Vector(1, 1, Real(0.5))};  // z 0.7 .. 1.3 outside
+  const Communicator serial = Communicator::self();
+  const Spill first = spillOutside(metal, domain, nullptr, serial);
+  EXPECT_EQ(first.particles, 3);
+  const double massOut = 0.004 + 0.005 + 0.006;
+  EXPECT_NEAR(first.mass, massOut, 1e-15);
+  EXPECT_NEAR(first.energy, 0.004 * 5e5 + 0.005 * 6e5 + 0.006 * 7e5, 1e-9);
+  EXPECT_NE(first.first.find("particle id 103"), std::string::npos) << first.first;
+  ASSERT_EQ(metal.size(), 3u);
+  EXPECT_EQ(metal.idField(field::id)[2], 102);
+  EXPECT_EQ(metal.attributes().at("spilledParticles"), 3);
+  EXPECT_NEAR(metal.attributes().at("spilledMass"), massOut, 1e-15);
+  EXPECT_NEAR(metal.attributes().at("heatLost.spilled"), first.energy, 1e-12);
+  EXPECT_NEAR(spilledFraction(metal, serial), massOut / 0.021, 1e-12);
+  const Spill none = spillOutside(metal, domain, nullptr, serial);
+  EXPECT_EQ(none.particles, 0);
+  EXPECT_EQ(metal.size(), 3u);
+  metal.positions()[0].x() = Real(-2);  // a second spill adds to the first
+  EXPECT_EQ(spillOutside(metal, domain, nullptr, serial).particles, 1);
+  EXPECT_EQ(metal.attributes().at("spilledParticles"), 4);
+  EXPECT_NEAR(metal.attributes().at("spilledMass"), massOut + 0.001, 1e-15);
+
+  EXPECT_FALSE(storedDomain(metal).has_value());
+  storeDomain(metal, domain);
+  const std::optional<Domain> kept = storedDomain(metal);
+  ASSERT_TRUE(kept.has_value());
+  EXPECT_EQ(kept->lower, domain.lower);
+  EXPECT_EQ(kept->upper, domain.upper);
 }
 
 // A step that falls below a thousandth of its running mean is a collapse; one that only halves

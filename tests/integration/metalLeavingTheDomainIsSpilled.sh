@@ -1,0 +1,107 @@
+#!/bin/bash
+# Metal that leaves the domain is spilled, not fatal (solver/MetalSpill.h): the heated sloshing
+# sphere (AC4CH at 900 K thrown sideways at 0.6 m/s in an iron mold) with the case's domain cut
+# at z = 15 mm, a rim 15 mm above the melt's surface at rest, so the metal that climbs the far
+# wall spills over it.
+# - The run goes on to its end; the log names the spill; the books close in the written state:
+#   particles held + spilled = the start's count, mass held + spilled = the start's mass (to
+#   1e-12), and the energyBalance's relative imbalance below 1e-12 with lost_spilled the heat
+#   the spilled metal carried (> 0); castPostProcess reports the spill.
+# - The domain is kept at a restart: continued from 0.04 s with healthChecks' domain removed
+#   from controlDict (the run's own, written with the metal, takes its place), the run ends
+#   with the same bits as the uninterrupted one.
+# - On 2 ranks (-parallel, where built with MPI) the spill is booked alike: particles held +
+#   spilled = the start's count, the books closed to 1e-10 (the decomposed run's own round-off,
+#   1.3e-11 here with or without a spill).
+# - A spill above healthChecks maxSpilledFraction stops the run with the fraction in the
+#   message, exits non-zero and leaves the last good state, itself within the limit.
+. "$SPHCAST_TEST_TOOLS"
+findVtkPython || exit 77
+case=$scratch/spill
+makeHeatedSloshingSphere "$case" auto
+cd "$case" || fail "no case"
+domain='domain { lower (-1 -1 -1); upper (1 1 0.015); }'
+echo "healthChecks { maxSpilledFraction 0.5; $domain }" >> system/controlDict
+cp -r "$case" "$scratch/restarted"
+cp -r "$case" "$scratch/limited"
+cp -r "$case" "$scratch/np2"
+sphCastFoam > log.sphCastFoam 2>&1 || fail "the run with a spill stopped: $(tail -5 log.sphCastFoam)"
+grep -q "particle(s) of cloud .metal. left the domain and were spilled" log.sphCastFoam ||
+    fail "no spill in the log (the rim too high?)"
+"$python" - <<'PY' || fail "the books"
+import vtk
+def cloud(time):
+    reader = vtk.vtkXMLPolyDataReader(); reader.SetFileName(f"{time}/metal.vtp"); reader.Update()
+    out = reader.GetOutput(); mass = out.GetPointData().GetArray("mass")
+    attributes = {}
+    field = out.GetFieldData()
+    for k in range(field.GetNumberOfArrays()):
+        attributes[field.GetArrayName(k)] = field.GetArray(k).GetTuple1(0)
+    return out.GetNumberOfPoints(), sum(mass.GetTuple1(i) for i in range(out.GetNumberOfPoints())), attributes
+n0, m0, _ = cloud("0")
+n, m, a = cloud("0.1")
+spilled, spilledMass = a.get("spilledParticles", 0), a.get("spilledMass", 0)
+print(f"start {n0} particles {m0:.9g} kg; at 0.1 s {n} held + {spilled:.0f} spilled, "
+      f"{m:.9g} + {spilledMass:.9g} kg ({100 * spilledMass / m0:.2f} %), heat {a.get('heatLost.spilled', 0):.6g} J")
+assert spilled > 0 and n + spilled == n0, "particles held + spilled != the start's"
+assert abs(m + spilledMass - m0) < 1e-12 * m0, "mass held + spilled != the start's"
+rows = [l.split() for l in open("postProcessing/balance/0/energyBalance") if not l.startswith("#")]
+worst = max(abs(float(r[-1])) for r in rows)
+lostSpilled = float(rows[-1][-3])
+print(f"worst relative imbalance {worst:.2e}, lost_spilled {lostSpilled:.6g} J")
+assert worst < 1e-12, "the books do not close with the spill"
+assert abs(lostSpilled - a["heatLost.spilled"]) <= 1e-9 * lostSpilled, "lost_spilled is not the spill's heat"
+PY
+cat > system/castPostProcessDict <<DICT
+FoamFile { version 2.0; format ascii; class dictionary; object castPostProcessDict; }
+history { type timeSeries; }
+DICT
+castPostProcess -latestTime > log.castPostProcess 2>&1 || fail "castPostProcess: $(tail -3 log.castPostProcess)"
+grep -q '\*\*Metal spilled\*\*' postProcessing/castReport.md || fail "the report has no spill"
+pass "the spilled metal is removed and booked, the books closed, the run goes on to its end"
+
+cd "$scratch/restarted" || fail "no copy"
+setEntry system/controlDict endTime 0.04
+sphCastFoam > log.first 2>&1 || fail "the first part: $(tail -5 log.first)"
+sed -i "s/healthChecks .*/healthChecks { maxSpilledFraction 0.5; }/" system/controlDict
+setEntry system/controlDict endTime 0.1
+sphCastFoam > log.second 2>&1 || fail "the restart: $(tail -5 log.second)"
+grep -q "domain (-1 -1 -1) (1 1 0.015)" log.second || fail "the restart's domain: $(grep 'domain (' log.second)"
+sameTimeFolder "$case/0.1" 0.1 || fail "the restarted run differs from the uninterrupted one"
+pass "a restart keeps the run's domain and spills the same, bit for bit"
+
+cd "$scratch/limited" || fail "no copy"
+sed -i "s/maxSpilledFraction 0.5/maxSpilledFraction 0.002/" system/controlDict
+if sphCastFoam > log.sphCastFoam 2> err.log; then fail "a spill above the limit ran on"; fi
+grep -q "above healthChecks maxSpilledFraction 0.2 %: the mold leaks" err.log ||
+    fail "the message: $(cat err.log)"
+last=$(sed -n 's/.*The last good state, time \([^,]*\), is written.*/\1/p' err.log)
+[ -n "$last" ] && [ -f "$last/metal.vtp" ] || fail "no last good state: $(cat err.log)"
+pass "a spill above maxSpilledFraction stops the run: $(grep -o 'at time [0-9.e-]* (step [0-9]*)' err.log | head -1)"
+
+sphCastFoam -help 2>&1 | grep -q -- "-parallel" || exit 0
+cd "$scratch/np2" || fail "no copy"
+cat > system/decomposeParDict <<DICT
+FoamFile { version 2.0; format ascii; class dictionary; object decomposeParDict; }
+numberOfSubdomains 2;
+method recursiveBisection;
+DICT
+OMP_NUM_THREADS=1 OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 SPHCAST_CHECK_COLLECTIVES=1 \
+    timeout 300 mpirun --oversubscribe -np 2 sphCastFoam -parallel > log.sphCastFoam 2>&1 ||
+    fail "2 ranks: $(tail -5 log.sphCastFoam)"
+"$python" - <<'PY' || fail "the books on 2 ranks"
+import vtk
+reader = vtk.vtkXMLPPolyDataReader(); reader.SetFileName("0.1/metal.pvtp"); reader.Update()
+out = reader.GetOutput(); field = out.GetFieldData()
+spilled = field.GetArray("spilledParticles").GetTuple1(0)
+import os
+start = vtk.vtkXMLPPolyDataReader() if os.path.exists("0/metal.pvtp") else vtk.vtkXMLPolyDataReader()
+start.SetFileName("0/metal.pvtp" if os.path.exists("0/metal.pvtp") else "0/metal.vtp"); start.Update()
+n0, n = start.GetOutput().GetNumberOfPoints(), out.GetNumberOfPoints()
+rows = [l.split() for l in open("postProcessing/balance/0/energyBalance") if not l.startswith("#")]
+worst = max(abs(float(r[-1])) for r in rows)
+print(f"2 ranks: {n} held + {spilled:.0f} spilled of {n0}; worst relative imbalance {worst:.2e}")
+assert spilled > 0 and n + spilled == n0, "particles held + spilled != the start's"
+assert worst < 1e-10, "the books do not close on 2 ranks"
+PY
+pass "on 2 ranks the spill is booked and the books close"
