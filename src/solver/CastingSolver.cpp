@@ -118,7 +118,9 @@ void CastingSolver::firstHeatKick(double deltaT) {
 }
 
 void CastingSolver::spillMetalOutside(bool heatKickPending) {
-  const Spill spill = spillOutside(*models_.fluid, domain_, models_.decomposition.get(), comm_);
+  const Spill spill = addWallTime(monitor_.times().checks, [&] {  // a check's pass over the metal
+    return spillOutside(*models_.fluid, domain_, models_.decomposition.get(), comm_);
+  });
   if (spill.particles == 0) return;
   if (heatKickPending) spilledHeatRate_ += spill.heatRate;
   const double fraction = spilledFraction(*models_.fluid, comm_);
