@@ -1,4 +1,7 @@
 #include "particles/WallSurfaceDistance.h"
+
+#include <cmath>
+
 #include "particles/FieldNames.h"
 
 namespace sphcast {
@@ -76,6 +79,38 @@ ConvexPartner convexPartner(const Vector& x, std::size_t i, const Vector& footK,
   return partner;
 }
 
+// Whether x_i, read behind foot k's plane with no sharp convex partner, lies past an open edge of
+// k's face (a shell's rim, a face whose neighbour face has no particles), over which it is not in
+// the body: its projection on the plane lies more than dx/2 from k's foot, and no foot of the
+// same face (normal within 25 degrees, foot within dx/4 of k's plane and 1.5 dx of k's foot)
+// lies at least as far in that direction. On a lattice a face ends dx/2 past its last row, and
+// inside it the foot on the far side of a point that far from its nearest foot always does
+// (cell corners included: 0.707 dx along the diagonal to the next row's foot). Where two faces
+// meet (a tank's floor and side), particleizeMold fills the corner behind the junction with
+// particles whose feet lie on the edge (normals between the faces'): a particle pressed into it
+// is within dx/2 of their feet, and their planes keep it.
+bool pastAnOpenEdge(const Vector& x, std::size_t i, const FootPlane& plane, const Vector& normalK,
+                    const std::vector<WallSurfaceView>& walls, const PeriodicBox& periodic,
+                    Real spacing) {
+  const Real half = Real(0.5) * spacing;
+  if (plane.alongSquared <= half * half) return false;
+  const Real along = std::sqrt(plane.alongSquared);
+  const Vector direction = (plane.fromFoot - plane.distance * normalK) / along;
+  const Real sameFace = Real(0.9);  // cos 25 degrees
+  const Real reachSquared = Real(2.25) * spacing * spacing;
+  for (const WallSurfaceView& other : walls) {
+    for (const std::uint32_t m : other.neighboursOfFluid->of(i)) {
+      if (other.normal[m].dot(normalK) < sameFace) continue;
+      const FootPlane planeM = footPlane(x, other, m, periodic);
+      const Vector between = plane.fromFoot - planeM.fromFoot;  // s_m - s_k
+      if (std::abs(between.dot(normalK)) > Real(0.25) * spacing) continue;
+      if (between.squaredNorm() > reachSquared) continue;
+      if (between.dot(direction) >= along - Real(1e-3) * spacing) return false;
+    }
+  }
+  return true;
+}
+
 // The smallest plane distance over the wall neighbours whose patch lies under x_i, leaving out
 // the far face of a thin body and, with atConvexEdges, taking the planes x_i is read behind at a
 // sharp convex edge with their partners (convexPartner); anyBehind: whether a plane counted read
@@ -99,6 +134,10 @@ WallSurfaceDistance nearestPlane(const Vector& x, std::size_t i,
         const ConvexPartner partner =
             convexPartner(x, i, x - plane.fromFoot, reading.normal, walls, periodic, spacing);
         if (partner.found && partner.distance >= 0) continue;  // beyond the edge: outside
+        if (!partner.found &&
+            pastAnOpenEdge(x, i, plane, reading.normal, walls, periodic, spacing)) {
+          continue;  // over a rim, not in the body
+        }
         if (partner.found && partner.distance > reading.distance) {
           // inside a convex edge or corner: as deep as the nearest face, and out through it
           reading = {true, partner.distance, walls[partner.wall].normal[partner.particle],

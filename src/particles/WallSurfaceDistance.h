@@ -51,7 +51,9 @@ struct WallSurfaceView {
 // behind the other's plane), since the body is behind both; if i is behind all such planes, it
 // is inside the body's convex edge or corner (the intersection of the faces' half-spaces) and
 // the plane reads the largest of their distances: the depth behind the nearest face, exact
-// there. `found` is false when no
+// there. A plane with no such partner is set aside when i lies past an open edge of its face (a
+// shell's rim: i's projection more than dx/2 from the foot and no foot of the face as far in
+// that direction), since i is then over the wall, not in it. `found` is false when no
 // wall neighbour's patch lies under i (no wall near, or i beyond a convex edge whose particles
 // all face the other way): the clearance then leaves i alone.
 struct WallSurfaceDistance {

@@ -10,6 +10,8 @@
 # - The domain is kept at a restart: continued from 0.04 s with healthChecks' domain removed
 #   from controlDict (the run's own, written with the metal, takes its place), the run ends
 #   with the same bits as the uninterrupted one.
+# - A pour over a tank's rim (a shell, open at the top) spills over it and runs on, held +
+#   spilled = the start's + the poured mass.
 # - On 2 ranks (-parallel, where built with MPI) the spill is booked alike: particles held +
 #   spilled = the start's count, the books closed to 1e-10 (the decomposed run's own round-off,
 #   1.3e-11 here with or without a spill).
@@ -78,6 +80,49 @@ grep -q "above healthChecks maxSpilledFraction 0.2 %: the mold leaks" err.log ||
 last=$(sed -n 's/.*The last good state, time \([^,]*\), is written.*/\1/p' err.log)
 [ -n "$last" ] && [ -f "$last/metal.vtp" ] || fail "no last good state: $(cat err.log)"
 pass "a spill above maxSpilledFraction stops the run: $(grep -o 'at time [0-9.e-]* (step [0-9]*)' err.log | head -1)"
+
+# A pour over a rim: the coarse hydrostatic tank (dx 10 mm, open at the top, walls one shell)
+# filled to 90 mm and poured into from 140 mm for 0.3 s, overflowing its 100 mm rim; the
+# water runs over the rim and out of the domain, which the case ends at the shell's outside. Measured before the open-rim
+# rule (particles/WallSurfaceDistance.h): 44 particles spilled, then at 0.467 s a particle
+# 0.23 dx above the rim was read 0.93 dx behind the side and stopped the run.
+coarseWaterTank "$scratch/overflow"
+sed -i 's/max (0.1 0.1 0.05)/max (0.1 0.1 0.09)/' system/setCastFieldsDict
+setEntry system/controlDict endTime 0.6
+setEntry system/controlDict writeInterval 0.3
+# the domain ends at the shell's outside (three layers of 10 mm): a shell has no outer surface,
+# and water run down its outside was measured pressed to 20.2 % above rho_s at 0.588 s
+echo "healthChecks { maxSpilledFraction 0.6; domain { lower (-0.03 -0.03 -1); upper (0.13 0.13 1); } }" \
+    >> system/controlDict
+cat > constant/inlets <<'DICT'
+FoamFile { version 2.0; format ascii; class dictionary; object inlets; }
+tap { centre (0.05 0.05 0.14); direction (0 0 -1); radius 0.04; speed 0.5; endTime 0.3; }
+DICT
+particleizeMold > log.particleizeMold 2>&1 || fail "particleizeMold: $(tail -3 log.particleizeMold)"
+setCastFields > log.setCastFields 2>&1 || fail "setCastFields: $(tail -3 log.setCastFields)"
+sphCastFoam > log.sphCastFoam 2>&1 || fail "the overflowing tank stopped: $(tail -5 log.sphCastFoam)"
+"$python" - <<'PY' || fail "the overflow's books"
+import vtk, re
+def read(path):
+    reader = vtk.vtkXMLPolyDataReader(); reader.SetFileName(path); reader.Update()
+    out = reader.GetOutput(); field = out.GetFieldData()
+    mass = out.GetPointData().GetArray("mass")
+    get = lambda name: field.GetArray(name).GetTuple1(0) if field.GetArray(name) else 0.0
+    return out.GetNumberOfPoints(), sum(mass.GetTuple1(i) for i in range(out.GetNumberOfPoints())), get
+n0, m0, _ = read("0/water.vtp")
+n, m, get = read("0.6/water.vtp")
+log = open("log.sphCastFoam").read()
+perLayer = int(re.search(r"^Inlet tap: ([0-9]+) particles a layer", log, re.M).group(1))
+layers = int(re.findall(r"^Inlet tap: poured [0-9.e+-]+ kg in ([0-9]+) layers", log, re.M)[-1])
+pouredMass = float(re.findall(r"^Inlet tap: poured ([0-9.e+-]+) kg", log, re.M)[-1])  # 6 digits
+spilled, count = get("spilledMass"), get("spilledParticles")
+print(f"start {n0} particles {m0:.6g} kg, poured {layers} x {perLayer}; at 0.6 s {n} held, "
+      f"{count:.0f} spilled ({spilled:.6g} kg, {100 * spilled / (m + spilled):.1f} %)")
+assert count > 100, "the tank did not overflow"
+assert n + count == n0 + layers * perLayer, "held + spilled != the start's + the poured particles"
+assert abs(m + spilled - m0 - pouredMass) < 1e-6 * (m0 + pouredMass), "held + spilled != start + poured mass"
+PY
+pass "a pour over a shell's rim spills, books it and runs on"
 
 sphCastFoam -help 2>&1 | grep -q -- "-parallel" || exit 0
 cd "$scratch/np2" || fail "no copy"
