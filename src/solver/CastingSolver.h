@@ -92,7 +92,6 @@ class CastingSolver {
   // with rates that include the spilled metal is still to come (firstHeatKick books it).
   void spillMetalOutside(bool heatKickPending);
   void firstHeatKick(double deltaT);
-  Domain fixedDomain(ParticleCloud& fluid, const std::vector<const ParticleCloud*>& walls) const;
   void flowRatesAndSecondKick(double deltaT);
   void flushPendingHeat();
   void heatStepInPlace(double deltaT);

@@ -289,34 +289,6 @@ void CastingSolver::searchNeighbours(CloudOrder order, bool rebuild) {
   }
 }
 
-// The box the run's particles must stay in: the case's (healthChecks domain), else the one the
-// run started with (kept with the metal's cloud: a restart after a punch moved keeps it), else
-// the molds' box (the metal's without molds) grown by half its size, on every rank the same.
-Domain CastingSolver::fixedDomain(ParticleCloud& fluid,
-                                  const std::vector<const ParticleCloud*>& walls) const {
-  Domain domain;
-  if (monitor_.healthSettings().domain) {
-    domain = *monitor_.healthSettings().domain;
-  } else if (const std::optional<Domain> kept = storedDomain(fluid)) {
-    domain = *kept;
-  } else {
-    Domain box = walls.empty() ? boundingBox({&fluid}) : boundingBox(walls);
-    if (parallel_) {  // the box of every rank's particles
-      std::vector<double> lower(box.lower.data(), box.lower.data() + 3);
-      std::vector<double> upper(box.upper.data(), box.upper.data() + 3);
-      comm_.min(lower);
-      comm_.max(upper);
-      for (int a = 0; a < 3; ++a) {
-        box.lower[a] = static_cast<Real>(lower[static_cast<std::size_t>(a)]);
-        box.upper[a] = static_cast<Real>(upper[static_cast<std::size_t>(a)]);
-      }
-    }
-    domain = withMargin(box);
-  }
-  storeDomain(fluid, domain);
-  return domain;
-}
-
 void CastingSolver::setUpFlow() {
   ParticleCloud& fluid = cloudNamed(flowSetup_.fluidCloud);
   if (solidificationSetup_.enabled) {
@@ -330,7 +302,7 @@ void CastingSolver::setUpFlow() {
                                                           *models_.neighbourhood);
   models_.fluid = &fluid;
   if (!walls.empty()) models_.fillTime = std::make_unique<FillTime>(fluid, walls);
-  domain_ = fixedDomain(fluid, walls);
+  domain_ = runDomain(monitor_.healthSettings(), fluid, walls, comm_);
   auto countOf = [&](const ParticleCloud& cloud) {
     return comm_.sum(static_cast<std::int64_t>(cloud.ownedSize()));
   };

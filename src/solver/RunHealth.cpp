@@ -70,6 +70,29 @@ HealthSettings HealthSettings::read(const Dictionary& controlDict) {
   return s;
 }
 
+Domain runDomain(const HealthSettings& settings, ParticleCloud& fluid,
+                 const std::vector<const ParticleCloud*>& walls, const Communicator& comm) {
+  Domain domain;
+  if (settings.domain) {
+    domain = *settings.domain;
+  } else if (const std::optional<Domain> kept = storedDomain(fluid)) {
+    domain = *kept;
+  } else {
+    Domain box = walls.empty() ? boundingBox({&fluid}) : boundingBox(walls);
+    std::vector<double> lower(box.lower.data(), box.lower.data() + 3);
+    std::vector<double> upper(box.upper.data(), box.upper.data() + 3);
+    comm.min(lower);  // the box of every rank's particles
+    comm.max(upper);
+    for (int a = 0; a < 3; ++a) {
+      box.lower[a] = static_cast<Real>(lower[static_cast<std::size_t>(a)]);
+      box.upper[a] = static_cast<Real>(upper[static_cast<std::size_t>(a)]);
+    }
+    domain = withMargin(box);
+  }
+  storeDomain(fluid, domain);
+  return domain;
+}
+
 CloudHealth measureCloudHealth(const ParticleCloud& cloud, const Domain& domain,
                                bool expansionOpensCavities) {
   const auto& x = cloud.positions();

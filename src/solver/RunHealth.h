@@ -40,6 +40,13 @@ struct HealthSettings {
   static HealthSettings read(const Dictionary& controlDict);
 };
 
+// The box the run's particles must stay in: the case's (settings.domain), else the one the run
+// started with (kept with the fluid's cloud, storeDomain: a restart after a punch moved keeps
+// it), else the molds' box (the fluid's without molds) grown by half its size, over every rank
+// (collective). Stored with the fluid's cloud.
+Domain runDomain(const HealthSettings& settings, ParticleCloud& fluid,
+                 const std::vector<const ParticleCloud*>& walls, const Communicator& comm);
+
 // One moving cloud's state after a step, measured in one pass.
 struct CloudHealth {
   std::size_t nonFinite = 0;  // position, velocity or density not finite
