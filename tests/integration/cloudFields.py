@@ -18,3 +18,18 @@ def read_cloud(path, names):
     return {int(ids.GetTuple1(i)): dict(x=out.GetPoint(i), **{name: value(array, i)
                                                               for name, array in arrays.items()})
             for i in range(out.GetNumberOfPoints())}
+
+
+def cloud_totals(path):
+    """The particle count, the summed `mass` and the cloud's attributes (its field data, e.g.
+    spilledMass) of the .vtp (or .pvtp) at path: (count, mass, {name: value})."""
+    reader = vtk.vtkXMLPPolyDataReader() if str(path).endswith(".pvtp") else vtk.vtkXMLPolyDataReader()
+    reader.SetFileName(path)
+    reader.Update()
+    out = reader.GetOutput()
+    mass = out.GetPointData().GetArray("mass")
+    count = out.GetNumberOfPoints()
+    field = out.GetFieldData()
+    attributes = {field.GetArrayName(k): field.GetArray(k).GetTuple1(0)
+                  for k in range(field.GetNumberOfArrays())}
+    return count, sum(mass.GetTuple1(i) for i in range(count)), attributes

@@ -31,17 +31,9 @@ sphCastFoam > log.sphCastFoam 2>&1 || fail "the run with a spill stopped: $(tail
 grep -q "particle(s) of cloud .metal. left the domain and were spilled" log.sphCastFoam ||
     fail "no spill in the log (the rim too high?)"
 "$python" - <<'PY' || fail "the books"
-import vtk
-def cloud(time):
-    reader = vtk.vtkXMLPolyDataReader(); reader.SetFileName(f"{time}/metal.vtp"); reader.Update()
-    out = reader.GetOutput(); mass = out.GetPointData().GetArray("mass")
-    attributes = {}
-    field = out.GetFieldData()
-    for k in range(field.GetNumberOfArrays()):
-        attributes[field.GetArrayName(k)] = field.GetArray(k).GetTuple1(0)
-    return out.GetNumberOfPoints(), sum(mass.GetTuple1(i) for i in range(out.GetNumberOfPoints())), attributes
-n0, m0, _ = cloud("0")
-n, m, a = cloud("0.1")
+from cloudFields import cloud_totals
+n0, m0, _ = cloud_totals("0/metal.vtp")
+n, m, a = cloud_totals("0.1/metal.vtp")
 spilled, spilledMass = a.get("spilledParticles", 0), a.get("spilledMass", 0)
 print(f"start {n0} particles {m0:.9g} kg; at 0.1 s {n} held + {spilled:.0f} spilled, "
       f"{m:.9g} + {spilledMass:.9g} kg ({100 * spilledMass / m0:.2f} %), heat {a.get('heatLost.spilled', 0):.6g} J")
@@ -102,20 +94,15 @@ particleizeMold > log.particleizeMold 2>&1 || fail "particleizeMold: $(tail -3 l
 setCastFields > log.setCastFields 2>&1 || fail "setCastFields: $(tail -3 log.setCastFields)"
 sphCastFoam > log.sphCastFoam 2>&1 || fail "the overflowing tank stopped: $(tail -5 log.sphCastFoam)"
 "$python" - <<'PY' || fail "the overflow's books"
-import vtk, re
-def read(path):
-    reader = vtk.vtkXMLPolyDataReader(); reader.SetFileName(path); reader.Update()
-    out = reader.GetOutput(); field = out.GetFieldData()
-    mass = out.GetPointData().GetArray("mass")
-    get = lambda name: field.GetArray(name).GetTuple1(0) if field.GetArray(name) else 0.0
-    return out.GetNumberOfPoints(), sum(mass.GetTuple1(i) for i in range(out.GetNumberOfPoints())), get
-n0, m0, _ = read("0/water.vtp")
-n, m, get = read("0.6/water.vtp")
+import re
+from cloudFields import cloud_totals
+n0, m0, _ = cloud_totals("0/water.vtp")
+n, m, a = cloud_totals("0.6/water.vtp")
 log = open("log.sphCastFoam").read()
 perLayer = int(re.search(r"^Inlet tap: ([0-9]+) particles a layer", log, re.M).group(1))
 layers = int(re.findall(r"^Inlet tap: poured [0-9.e+-]+ kg in ([0-9]+) layers", log, re.M)[-1])
 pouredMass = float(re.findall(r"^Inlet tap: poured ([0-9.e+-]+) kg", log, re.M)[-1])  # 6 digits
-spilled, count = get("spilledMass"), get("spilledParticles")
+spilled, count = a.get("spilledMass", 0), a.get("spilledParticles", 0)
 print(f"start {n0} particles {m0:.6g} kg, poured {layers} x {perLayer}; at 0.6 s {n} held, "
       f"{count:.0f} spilled ({spilled:.6g} kg, {100 * spilled / (m + spilled):.1f} %)")
 assert count > 100, "the tank did not overflow"
@@ -135,14 +122,11 @@ OMP_NUM_THREADS=1 OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 SPHC
     timeout 300 mpirun --oversubscribe -np 2 sphCastFoam -parallel > log.sphCastFoam 2>&1 ||
     fail "2 ranks: $(tail -5 log.sphCastFoam)"
 "$python" - <<'PY' || fail "the books on 2 ranks"
-import vtk
-reader = vtk.vtkXMLPPolyDataReader(); reader.SetFileName("0.1/metal.pvtp"); reader.Update()
-out = reader.GetOutput(); field = out.GetFieldData()
-spilled = field.GetArray("spilledParticles").GetTuple1(0)
 import os
-start = vtk.vtkXMLPPolyDataReader() if os.path.exists("0/metal.pvtp") else vtk.vtkXMLPolyDataReader()
-start.SetFileName("0/metal.pvtp" if os.path.exists("0/metal.pvtp") else "0/metal.vtp"); start.Update()
-n0, n = start.GetOutput().GetNumberOfPoints(), out.GetNumberOfPoints()
+from cloudFields import cloud_totals
+n, _, a = cloud_totals("0.1/metal.pvtp")
+n0, _, _ = cloud_totals("0/metal.pvtp" if os.path.exists("0/metal.pvtp") else "0/metal.vtp")
+spilled = a["spilledParticles"]
 rows = [l.split() for l in open("postProcessing/balance/0/energyBalance") if not l.startswith("#")]
 worst = max(abs(float(r[-1])) for r in rows)
 print(f"2 ranks: {n} held + {spilled:.0f} spilled of {n0}; worst relative imbalance {worst:.2e}")

@@ -29,13 +29,11 @@ castPostProcess -latestTime > /dev/null 2>&1 || fail "the last good state does n
 awk -F, 'NR == 2 && $12 < -0.025 - 1e-9 { exit 1 }' postProcessing/cloudSummary/water.csv ||
     fail "the written state is already outside the domain"
 "$python" - "$last/water.vtp" <<'PY' || fail "the last good state's spill"
-import sys, vtk
-reader = vtk.vtkXMLPolyDataReader(); reader.SetFileName(sys.argv[1]); reader.Update()
-out = reader.GetOutput(); field = out.GetFieldData()
-spilled = field.GetArray("spilledMass").GetTuple1(0)
-mass = out.GetPointData().GetArray("mass")
-held = sum(mass.GetTuple1(i) for i in range(out.GetNumberOfPoints()))
+import sys
+from cloudFields import cloud_totals
+_, held, attributes = cloud_totals(sys.argv[1])
+spilled = attributes["spilledMass"]
 print(f"last good state: {100 * spilled / (held + spilled):.2f} % spilled")
 assert 0 < spilled <= 0.05 * (held + spilled), "the last good state is not within the limit"
 PY
-pass "stopped at $(grep -o 'at time [^ ]*' err.log | head -1), last good state $last written"
+pass "stopped $(grep -o 'at time [^ ]*' err.log | head -1), last good state $last written"
