@@ -52,9 +52,7 @@ HealthSettings HealthSettings::read(const Dictionary& controlDict) {
     domain.upper = box.get<Vector>("upper");
     if (!(domain.lower.array() < domain.upper.array()).all()) {
       throw DictionaryError(box.location("upper"),
-                            "'upper' must lie above 'lower' in every "
-                            "direction in " +
-                                box.name());
+                            "'upper' must lie above 'lower' in every direction in " + box.name());
     }
     s.domain = domain;
   }
