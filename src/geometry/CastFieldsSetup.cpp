@@ -231,10 +231,8 @@ void checkFillAgainstMold(const CloudPlan& plan, const std::vector<std::size_t>&
                "gap the clearance leaves between the walls)";
     throw DictionaryError(plan.regions[k].location, message.str());
   }
-  const auto outside =
-      static_cast<std::size_t>(std::count_if(centres.begin(), centres.end(), [&](const Vector& x) {
-        return (x.array() < domain.lower.array()).any() || (x.array() > domain.upper.array()).any();
-      }));
+  const auto outside = static_cast<std::size_t>(std::count_if(
+      centres.begin(), centres.end(), [&](const Vector& x) { return !inside(domain, x); }));
   if (outside == 0) return;
   std::ostringstream where;
   where << "the domain (the mold particles' box grown by half on each side: ("
@@ -247,7 +245,8 @@ void checkFillAgainstMold(const CloudPlan& plan, const std::vector<std::size_t>&
   }
   warning("cloud " + plan.name + ": " + std::to_string(outside) + " of " +
           std::to_string(centres.size()) + " particles lie outside " + where.str() +
-          "; a flow stops at its first step");
+          "; a flow spills them at its first step, and stops if they are more than "
+          "healthChecks' maxSpilledFraction (5 % by default) of the metal");
 }
 
 // `domain` is the mold clouds' (defaultDomain), for the check of the fill against it.
@@ -519,7 +518,8 @@ std::vector<ParticleCloud> buildCastClouds(const CaseDescription& description,
   const MoldObstacles mold(moldClouds, spacing, clearance);
   std::vector<const ParticleCloud*> moldCloudList;
   for (const ParticleCloud& cloud : moldClouds) moldCloudList.push_back(&cloud);
-  const Domain domain = defaultDomain(moldCloudList);  // as the flow's health check takes it
+  // as the flow takes it, unless controlDict's healthChecks names a domain of its own
+  const Domain domain = defaultDomain(moldCloudList);
   std::vector<ParticleCloud> clouds;
   for (const CloudPlan& plan : plans) {
     ParticleCloud cloud = fillCloud(plan, spacing, dimension, mold, domain, settings);

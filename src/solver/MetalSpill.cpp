@@ -11,15 +11,17 @@ Spill spillOutside(ParticleCloud& fluid, const Domain& domain, DomainDecompositi
                    const Communicator& comm) {
   const std::vector<std::size_t> outside = particlesOutside(fluid, domain);
   const auto& mass = fluid.scalarField(field::mass);
-  const bool heat = fluid.hasScalarField(field::u);
-  const bool rates = fluid.hasScalarField(field::energyRate);
+  // the heat fields, where the metal carries heat
+  const auto* u = fluid.hasScalarField(field::u) ? &fluid.scalarField(field::u) : nullptr;
+  const auto* rate =
+      fluid.hasScalarField(field::energyRate) ? &fluid.scalarField(field::energyRate) : nullptr;
   Spill spill;
   std::vector<double> books = {static_cast<double>(outside.size()), 0.0, 0.0, 0.0};
   for (const std::size_t i : outside) {
     const double m = static_cast<double>(mass[i]);
     books[1] += m;
-    if (heat) books[2] += m * static_cast<double>(fluid.scalarField(field::u)[i]);
-    if (rates) books[3] += m * static_cast<double>(fluid.scalarField(field::energyRate)[i]);
+    if (u) books[2] += m * static_cast<double>((*u)[i]);
+    if (rate) books[3] += m * static_cast<double>((*rate)[i]);
   }
   if (!outside.empty())
     spill.first = describeParticle(fluid, outside.front(), fluid.positions()[outside.front()]);

@@ -15,8 +15,7 @@ namespace sphcast {
 namespace {
 
 bool isBad(const Vector& x, const Vector& u, Real rho, const Domain& domain) {
-  return !x.allFinite() || !u.allFinite() || !std::isfinite(rho) ||
-         (x.array() < domain.lower.array()).any() || (x.array() > domain.upper.array()).any();
+  return !x.allFinite() || !u.allFinite() || !std::isfinite(rho) || !inside(domain, x);
 }
 
 void requirePositive(const Dictionary& dict, const std::string& key, double value) {
@@ -117,8 +116,7 @@ CloudHealth measureCloudHealth(const ParticleCloud& cloud, const Domain& domain,
     const Real density = health.hasDensity ? rho[i] : noDensity;
     if (!x[i].allFinite() || !u[i].allFinite() || !std::isfinite(density)) {
       ++nonFinite;
-    } else if ((x[i].array() < domain.lower.array()).any() ||
-               (x[i].array() > domain.upper.array()).any()) {
+    } else if (!inside(domain, x[i])) {
       ++outside;
     } else if (health.hasDensity) {
       deviation = std::max(deviation, deviationOf(i));
