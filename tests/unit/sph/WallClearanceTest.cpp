@@ -127,7 +127,7 @@ TEST(WallSurfaceDistance, CurvedWallErrsByLessThanTheCurvatureBound) {
 
 // The concave corner of a tank (floor z = 0, wall x = 0, three layers each, the fluid in x > 0,
 // z > 0): the distance is the one to the nearer wall, so the clearance keeps a particle off both;
-// a particle pressed into the corner, behind both, reads the deeper.
+// a particle pressed into the corner, behind both, reads its distance to the edge.
 TEST(WallSurfaceDistance, ConcaveCornerGivesTheNearerWall) {
   TestWall wall;
   for (int layer = 0; layer < 3; ++layer) {
