@@ -28,6 +28,11 @@ RigidBody::RigidBody(RigidBodySettings settings, ParticleCloud& cloud, const Vec
     cloud_.addVectorField(field::restPosition) = cloud_.positions();
     cloud_.addVectorField(field::restNormal) = normal;
   }
+  // the second feet of particleizeMold (geometry/WallSurfacePatches.h) turn with the body too
+  if (cloud_.hasVectorField(field::secondNormal) &&
+      !cloud_.hasVectorField(field::restSecondNormal)) {
+    cloud_.addVectorField(field::restSecondNormal) = cloud_.vectorField(field::secondNormal);
+  }
   cloud_.addVectorField(field::U);
   cloud_.addVectorField(field::acceleration);
   computeMassProperties();
@@ -156,6 +161,12 @@ void RigidBody::placeParticles() {
     if (turned) normal[k] = rotation * restNormal[k];
   }
   if (!turned) std::copy(restNormal.begin(), restNormal.end(), normal.begin());
+  if (cloud_.hasVectorField(field::restSecondNormal)) {
+    const auto& restSecond = cloud_.vectorField(field::restSecondNormal);
+    auto& second = cloud_.vectorField(field::secondNormal);
+    for (std::size_t k = 0; k < second.size(); ++k)
+      second[k] = turned ? Vector(rotation * restSecond[k]) : restSecond[k];
+  }
 }
 
 void RigidBody::updateParticleVelocities(bool heldNow) {

@@ -271,7 +271,7 @@ ParticleCloud fillCloud(const CloudPlan& plan, double spacing, int dimension,
     // wall normal to the flow's default wall clearance (the flow would do it at its first step);
     // it keeps its mass, which leaving it out would lose (5 % of a column 10 dx across).
     const Real minimumGap = static_cast<Real>(settings.flowWallClearance() * spacing);
-    const auto surfaces = mold.wallSurfaceDistances(centres, 1.5 * spacing);
+    const auto surfaces = mold.wallSurfaceDistances(centres, wallSurfaceReachInSpacings * spacing);
     std::size_t moved = 0;
     for (std::size_t i = 0; i < centres.size(); ++i) {
       if (!surfaces[i].found || surfaces[i].distance >= minimumGap) continue;
@@ -331,7 +331,8 @@ ParticleCloud fillCloud(const CloudPlan& plan, double spacing, int dimension,
       auto allowed = [&](const std::vector<Vector>& trial) {
         std::vector<bool> ok = mold.clear(trial);
         if (!beyond.empty()) nearBeyond.buildBetween(trial, beyond, beyondGrid);
-        const auto surfaces = mold.wallSurfaceDistances(trial, 1.5 * spacing);
+        const auto surfaces =
+            mold.wallSurfaceDistances(trial, wallSurfaceReachInSpacings * spacing);
         for (std::size_t i = 0; i < trial.size(); ++i) {
           ok[i] = ok[i] && (beyond.empty() || nearBeyond.of(i).empty()) &&
                   insideAnyRegion(plan, trial[i]) &&

@@ -26,6 +26,34 @@ MoldObstacles::MoldObstacles(const std::vector<ParticleCloud>& moldClouds, doubl
       const auto& distance = cloud.scalarField(field::wallDistance);
       normals_.insert(normals_.end(), normal.begin(), normal.end());
       wallDistances_.insert(wallDistances_.end(), distance.begin(), distance.end());
+      // a cloud without the patches particleizeMold works out has 0.75 dx each and no second
+      // feet (particles/WallSurfaceDistance.h)
+      if (cloud.hasScalarField(field::wallPatchRadius)) {
+        const auto& radius = cloud.scalarField(field::wallPatchRadius);
+        patchRadii_.insert(patchRadii_.end(), radius.begin(), radius.end());
+      } else {
+        patchRadii_.insert(patchRadii_.end(), cloud.size(), static_cast<Real>(0.75 * spacing));
+      }
+      if (cloud.hasScalarField(field::wallPatchAtRim)) {
+        const auto& atRim = cloud.scalarField(field::wallPatchAtRim);
+        patchesAtRim_.insert(patchesAtRim_.end(), atRim.begin(), atRim.end());
+      } else {
+        // a cloud without patch radii takes the rim rule everywhere (WallSurfaceDistance.h)
+        patchesAtRim_.insert(patchesAtRim_.end(), cloud.size(),
+                             cloud.hasScalarField(field::wallPatchRadius) ? Real(0) : Real(1));
+      }
+      if (cloud.hasScalarField(field::secondWallPatchRadius)) {
+        const auto& normal2 = cloud.vectorField(field::secondNormal);
+        const auto& depth2 = cloud.scalarField(field::secondWallDistance);
+        const auto& radius2 = cloud.scalarField(field::secondWallPatchRadius);
+        secondNormals_.insert(secondNormals_.end(), normal2.begin(), normal2.end());
+        secondDepths_.insert(secondDepths_.end(), depth2.begin(), depth2.end());
+        secondPatchRadii_.insert(secondPatchRadii_.end(), radius2.begin(), radius2.end());
+      } else {
+        secondNormals_.insert(secondNormals_.end(), cloud.size(), Vector::Zero());
+        secondDepths_.insert(secondDepths_.end(), cloud.size(), Real(0));
+        secondPatchRadii_.insert(secondPatchRadii_.end(), cloud.size(), Real(0));
+      }
     }
   }
   if (!empty()) clearanceGrid_.build(particles_.positions);
@@ -68,7 +96,16 @@ std::vector<WallSurfaceDistance> MoldObstacles::wallSurfaceDistances(
   grid.build(particles_.positions);
   NeighbourList list;
   list.buildBetween(points, particles_.positions, grid);
-  const std::vector<WallSurfaceView> walls{{particles_.positions, normals_, wallDistances_, &list}};
+  const std::vector<WallSurfaceView> walls{{particles_.positions,
+                                            normals_,
+                                            wallDistances_,
+                                            &list,
+                                            {},
+                                            patchRadii_,
+                                            secondNormals_,
+                                            secondDepths_,
+                                            secondPatchRadii_,
+                                            patchesAtRim_}};
   for (std::size_t i = 0; i < points.size(); ++i) {
     distances[i] =
         wallSurfaceDistance(points[i], i, walls, PeriodicBox{}, static_cast<Real>(spacing_));

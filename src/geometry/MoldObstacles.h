@@ -45,8 +45,13 @@ class MoldObstacles {
 
  private:
   FixedNeighbours particles_;
-  std::vector<Vector> normals_;      // empty when some cloud has none
-  std::vector<Real> wallDistances_;  // likewise
+  std::vector<Vector> normals_;        // empty when some cloud has none
+  std::vector<Real> wallDistances_;    // likewise
+  std::vector<Real> patchRadii_;       // likewise (0.75 dx where a cloud has no wallPatchRadius)
+  std::vector<Vector> secondNormals_;  // likewise (radius 0 where a particle has no second foot)
+  std::vector<Real> secondDepths_;
+  std::vector<Real> secondPatchRadii_;
+  std::vector<Real> patchesAtRim_;
   double spacing_;
   double clearance_;
   CellGrid clearanceGrid_;

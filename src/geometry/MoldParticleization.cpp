@@ -11,6 +11,7 @@
 #include "geometry/GmshGeometry.h"
 #include "geometry/LatticeSolid.h"
 #include "geometry/MoldPatchRequest.h"
+#include "geometry/WallSurfacePatches.h"
 #include "particles/FieldNames.h"
 
 namespace sphcast {
@@ -101,6 +102,18 @@ ParticleCloud makeCloud(const std::string& name, const WallParticles& particles,
   auto& normal = cloud.addVectorField(field::normal);
   auto& patch = cloud.addIdField(field::patch);
   auto& id = cloud.addIdField(field::id);
+  const bool withPatchRadii = particles.patchRadii.size() == particles.size();
+  std::vector<Real>* patchRadius =
+      withPatchRadii ? &cloud.addScalarField(field::wallPatchRadius) : nullptr;
+  const bool withRims = particles.patchesAtRim.size() == particles.size();
+  std::vector<Real>* atRim = withRims ? &cloud.addScalarField(field::wallPatchAtRim) : nullptr;
+  const bool withSecondFeet = particles.secondPatchRadii.size() == particles.size();
+  std::vector<Vector>* secondNormal =
+      withSecondFeet ? &cloud.addVectorField(field::secondNormal) : nullptr;
+  std::vector<Real>* secondDepth =
+      withSecondFeet ? &cloud.addScalarField(field::secondWallDistance) : nullptr;
+  std::vector<Real>* secondRadius =
+      withSecondFeet ? &cloud.addScalarField(field::secondWallPatchRadius) : nullptr;
   for (std::size_t m = 0; m < members.size(); ++m) {
     const std::size_t i = members[m];
     cloud.positions()[m] = particles.positions[i].cast<Real>();
@@ -109,6 +122,13 @@ ParticleCloud makeCloud(const std::string& name, const WallParticles& particles,
     normal[m] = particles.normals[i].cast<Real>();
     patch[m] = particles.owners[i];
     id[m] = static_cast<std::int64_t>(m);
+    if (patchRadius != nullptr) (*patchRadius)[m] = static_cast<Real>(particles.patchRadii[i]);
+    if (withRims) (*atRim)[m] = static_cast<Real>(particles.patchesAtRim[i]);
+    if (withSecondFeet) {
+      (*secondNormal)[m] = particles.secondNormals[i].cast<Real>();
+      (*secondDepth)[m] = static_cast<Real>(particles.secondWallDistances[i]);
+      (*secondRadius)[m] = static_cast<Real>(particles.secondPatchRadii[i]);
+    }
   }
   cloud.attributes()["spacing"] = spacing;
   return cloud;
@@ -116,6 +136,24 @@ ParticleCloud makeCloud(const std::string& name, const WallParticles& particles,
 
 const char* kindOfDimension(int dimension) {
   return dimension == 1 ? "curve" : dimension == 2 ? "surface" : "volume";
+}
+
+// How far the wall particles' feet had to reach to cover the surface (WallSurfacePatches.h).
+void logPatchRadii(const WallParticles& particles, double spacing) {
+  std::size_t wider = 0;
+  double widest = 0.0;
+  for (const double radius : particles.patchRadii) {
+    if (radius > 0.75 * spacing * (1.0 + 1e-9)) ++wider;
+    widest = std::max(widest, radius);
+  }
+  const auto seconds = static_cast<std::size_t>(
+      std::count_if(particles.secondPatchRadii.begin(), particles.secondPatchRadii.end(),
+                    [](double radius) { return radius > 0.0; }));
+  info() << "    wall surface patches: " << wider << " of " << particles.size()
+         << " particles stand for more than 0.75 dx of surface (off the lattice, beside edges), "
+            "the widest "
+         << std::setprecision(3) << widest / spacing << std::setprecision(6) << " dx; " << seconds
+         << " stand for a second face (thin parts, acute edges)\n";
 }
 
 // The particles of the 3D patches: shells behind surface groups, volumes filling volume groups.
@@ -176,8 +214,11 @@ WallParticles particleizeSolidMold(const std::vector<GeometryFilePatches>& files
                                       [](const PlanarFace& face) { return !face.globalLattice; });
     info() << "Shell walls: flat faces on their own lattice " << planarFaces.size()
            << " (tilted to the axes " << tilted << "); other faces follow their curvature\n";
-    all.append(
-        generateShellParticles(shell.wall, cavity, spacing, layers, patchCount, planarFaces));
+    WallParticles shellParticles =
+        generateShellParticles(shell.wall, cavity, spacing, layers, patchCount, planarFaces);
+    addWallSurfacePatches(shellParticles, shell.wall, spacing);
+    logPatchRadii(shellParticles, spacing);
+    all.append(shellParticles);
   }
   for (const auto& volume : volumes) {
     WallParticles filled = fillVolumeParticles(volume.boundary, spacing, volume.patch);
@@ -191,6 +232,8 @@ WallParticles particleizeSolidMold(const std::vector<GeometryFilePatches>& files
            << " m^3 of the geometry's " << volume.boundary.enclosedVolume()
            << " m^3; particle volume set to " << volumePerParticle << " m^3\n";
     std::fill(filled.volumes.begin(), filled.volumes.end(), volumePerParticle);
+    addWallSurfacePatches(filled, volume.boundary, spacing);
+    logPatchRadii(filled, spacing);
     all.append(filled);
   }
   return all;

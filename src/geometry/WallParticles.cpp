@@ -343,6 +343,19 @@ void WallParticles::append(const WallParticles& more) {
   wallDistances.insert(wallDistances.end(), more.wallDistances.begin(), more.wallDistances.end());
   volumes.insert(volumes.end(), more.volumes.begin(), more.volumes.end());
   owners.insert(owners.end(), more.owners.begin(), more.owners.end());
+  // The optional per-particle fields, padded where one side lacks them.
+  const std::size_t before = positions.size() - more.size();
+  const auto join = [&](auto& mine, const auto& theirs, const auto& absent) {
+    if (mine.empty() && theirs.empty()) return;
+    mine.resize(before, absent);
+    mine.insert(mine.end(), theirs.begin(), theirs.end());
+    mine.resize(positions.size(), absent);
+  };
+  join(patchRadii, more.patchRadii, 0.0);
+  join(secondNormals, more.secondNormals, Eigen::Vector3d::Zero().eval());
+  join(secondWallDistances, more.secondWallDistances, 0.0);
+  join(secondPatchRadii, more.secondPatchRadii, 0.0);
+  join(patchesAtRim, more.patchesAtRim, 0.0);
 }
 
 WallParticles fillVolumeParticles(const TriangleMesh& boundary, double spacing, int patch) {

@@ -19,6 +19,17 @@ struct WallParticles {
   std::vector<double> wallDistances;
   std::vector<double> volumes;
   std::vector<int> owners;
+  // The radius of wall surface each particle's foot stands for (WallSurfacePatches.h); empty
+  // where it was not worked out (the flow then takes 0.75 dx), 0 for a foot that stands for none.
+  std::vector<double> patchRadii;
+  // A second foot, on a face no first foot stands for near it (WallSurfacePatches.h): its unit
+  // normal, depth and radius; all empty when no particle has one, radius 0 for one without.
+  std::vector<Eigen::Vector3d> secondNormals;
+  std::vector<double> secondWallDistances;
+  std::vector<double> secondPatchRadii;
+  // 1 for a particle whose foot stands for a piece of an open rim (a shell's free edge), else 0;
+  // empty when there is none.
+  std::vector<double> patchesAtRim;
 
   std::size_t size() const { return positions.size(); }
   // Adds the particles of `more` after these.
@@ -51,10 +62,10 @@ struct WallParticles {
 // Flat faces (`planarFaces`, PlanarFaces.h) come first and exactly: every point of a face's own
 // lattice (its layers, and in-plane rows continued past its edges) for which that face (or its
 // border) is among the nearest walls is a candidate, before any projected one; a tie between
-// two faces is decided by distance, so that round-off cannot drop a point on a ridge's diagonal. Behind the face
-// they are the face's square lattice at the exact layer distances, tilted or not; past a convex
-// edge of the cavity they fill the corner (where two faces at a right angle meet, the two
-// lattices continue into the same points, as on an axis-aligned box). The projected lattice
+// two faces is decided by distance, so that round-off cannot drop a point on a ridge's diagonal.
+// Behind the face they are the face's square lattice at the exact layer distances, tilted or not;
+// past a convex edge of the cavity they fill the corner (where two faces at a right angle meet, the
+// two lattices continue into the same points, as on an axis-aligned box). The projected lattice
 // points then only fill what remains: curved walls and what lies between unlike lattices.
 WallParticles generateShellParticles(const TriangleMesh& wall, const LatticeSolid& cavity,
                                      double spacing, int layers, int patchCount,

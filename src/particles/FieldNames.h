@@ -24,10 +24,17 @@ inline constexpr const char* densityRate = "densityRate";    // drho/dt, kg/m^3/
 inline constexpr const char* normal = "normal";              // unit normal of the wall surface
 inline constexpr const char* wallDistance = "wallDistance";  // m, behind the wall surface
 inline constexpr const char* patch = "patch";                // the patch's number (patches file)
+inline constexpr const char* wallPatchRadius = "wallPatchRadius";  // m, surface the foot stands for
+// a second foot, on a face no first foot stands for near it (geometry/WallSurfacePatches.h)
+inline constexpr const char* secondNormal = "secondNormal";
+inline constexpr const char* secondWallDistance = "secondWallDistance";        // m
+inline constexpr const char* secondWallPatchRadius = "secondWallPatchRadius";  // m, 0: none
+inline constexpr const char* wallPatchAtRim = "wallPatchAtRim";  // 1: the patch reaches an open rim
 
 // Rigid bodies (bodies/RigidBody.h): a particle's place and normal in the body's frame
 inline constexpr const char* restPosition = "restPosition";  // m
 inline constexpr const char* restNormal = "restNormal";
+inline constexpr const char* restSecondNormal = "restSecondNormal";
 
 // Heat (thermal/EnergyEquation.h)
 inline constexpr const char* T = "T";                              // temperature, K

@@ -1,5 +1,7 @@
 #include "particles/WallSurfaceDistance.h"
 
+#include <Eigen/Geometry>
+#include <algorithm>
 #include <cmath>
 
 #include "particles/FieldNames.h"
@@ -15,26 +17,60 @@ std::vector<WallSurfaceView> wallSurfaceViews(const ParticleCloud& fluid,
                      wall->scalarField(field::wallDistance), &neighbourhood.pairs(fluid, *wall),
                      wall->hasVectorField(field::U)
                          ? std::span<const Vector>(wall->vectorField(field::U))
-                         : std::span<const Vector>()});
+                         : std::span<const Vector>(),
+                     wall->hasScalarField(field::wallPatchRadius)
+                         ? std::span<const Real>(wall->scalarField(field::wallPatchRadius))
+                         : std::span<const Real>()});
+    if (wall->hasScalarField(field::wallPatchAtRim)) {
+      views.back().patchAtRim = wall->scalarField(field::wallPatchAtRim);
+    }
+    if (wall->hasScalarField(field::secondWallPatchRadius)) {
+      views.back().secondNormal = wall->vectorField(field::secondNormal);
+      views.back().secondDepth = wall->scalarField(field::secondWallDistance);
+      views.back().secondPatchRadius = wall->scalarField(field::secondWallPatchRadius);
+    }
   }
   return views;
 }
 
 namespace {
 
-// x_i seen from wall particle k's foot on the surface, s_k = x_k + d_k n_k: its distance along
-// n_k, and the square of its distance along k's plane.
+// A foot of wall particle k: the normal and depth that put it on the surface, the radius of the
+// patch of surface it stands for, and whether that patch may reach past an open rim (the patch
+// is a disc: where it covers the face up to a rim, it reaches as far past it): a foot whose
+// patch was not worked out, or one particleizeMold marked.
+struct Foot {
+  Vector normal;
+  Real depth;
+  Real radius;
+  bool nearARim;
+};
+
+// Calls visit(foot) for each foot of wall particle k: its first, and its second where
+// particleizeMold gave it one (a thin part of the mold, an acute edge).
+template <class Visit>
+void forEachFoot(const WallSurfaceView& wall, std::uint32_t k, Real spacing, Visit&& visit) {
+  const Real latticePatch = Real(0.75) * spacing;
+  const bool worked = !wall.patchRadius.empty();
+  visit(Foot{wall.normal[k], wall.depth[k], worked ? wall.patchRadius[k] : latticePatch,
+             !worked || (!wall.patchAtRim.empty() && wall.patchAtRim[k] > 0)});
+  if (!wall.secondPatchRadius.empty() && wall.secondPatchRadius[k] > 0) {
+    visit(Foot{wall.secondNormal[k], wall.secondDepth[k], wall.secondPatchRadius[k], false});
+  }
+}
+
+// x_i seen from a foot of wall particle k on the surface, s = x_k + d n: its distance along n,
+// and the square of its distance along the foot's plane.
 struct FootPlane {
   Vector fromFoot;
   Real distance;
   Real alongSquared;
 };
 
-FootPlane footPlane(const Vector& x, const WallSurfaceView& wall, std::uint32_t k,
+FootPlane footPlane(const Vector& x, const WallSurfaceView& wall, std::uint32_t k, const Foot& foot,
                     const PeriodicBox& periodic) {
-  const Vector& n = wall.normal[k];
-  const Vector fromFoot = periodic.separation(x, wall.position[k]) - wall.depth[k] * n;
-  const Real distance = fromFoot.dot(n);
+  const Vector fromFoot = periodic.separation(x, wall.position[k]) - foot.depth * foot.normal;
+  const Real distance = fromFoot.dot(foot.normal);
   return {fromFoot, distance, fromFoot.squaredNorm() - distance * distance};
 }
 
@@ -48,6 +84,20 @@ bool sharpConvexEdge(const Vector& footK, const Vector& normalK, const Vector& f
   return normalK.dot(normalM) < sharp && (footK - footM).dot(normalM) < -tolerance;
 }
 
+// Where each foot's share of its face is known (the patch radius r_m): whether x_i lies over
+// foot m's patch but for up to 0.6 dx across the edge m's plane makes with plane K (x_i may lie
+// that far off m's face beside the edge, over K's), not beyond the patch along the edge: the
+// edge of a face ends where the face does, and past its end the other plane bounds nothing.
+bool nearTheEdge(const FootPlane& plane, const Vector& normalM, const Vector& normalK, Real radius,
+                 Real spacing) {
+  const Vector along = plane.fromFoot - plane.distance * normalM;
+  const Vector edge = normalK.cross(normalM).normalized();
+  const Real alongEdge = along.dot(edge);
+  const Real across = std::sqrt(std::max(Real(0), along.squaredNorm() - alongEdge * alongEdge));
+  const Real acrossTrimmed = std::max(Real(0), across - Real(0.6) * spacing);
+  return alongEdge * alongEdge + acrossTrimmed * acrossTrimmed <= radius * radius;
+}
+
 // The planes that make a sharp convex edge with the plane of foot footK, which reads x_i behind
 // it (their feet within 2 dx of x_i along them; not the far face of a thin body): the largest
 // distance in front of one of them, and that plane. The body near a convex edge or corner is the
@@ -56,6 +106,7 @@ bool sharpConvexEdge(const Vector& footK, const Vector& normalK, const Vector& f
 struct ConvexPartner {
   bool found = false;
   Real distance = 0;
+  Vector normal = Vector::Zero();
   std::size_t wall = 0;
   std::uint32_t particle = 0;
 };
@@ -63,17 +114,22 @@ struct ConvexPartner {
 ConvexPartner convexPartner(const Vector& x, std::size_t i, const Vector& footK,
                             const Vector& normalK, const std::vector<WallSurfaceView>& walls,
                             const PeriodicBox& periodic, Real spacing) {
-  const Real reachSquared = Real(4) * spacing * spacing;
   ConvexPartner partner;
   for (std::size_t w = 0; w < walls.size(); ++w) {
     const WallSurfaceView& other = walls[w];
     for (const std::uint32_t m : other.neighboursOfFluid->of(i)) {
-      const FootPlane plane = footPlane(x, other, m, periodic);
-      if (plane.distance < -spacing || plane.alongSquared > reachSquared) continue;
-      if (partner.found && plane.distance <= partner.distance) continue;
-      if (sharpConvexEdge(footK, normalK, x - plane.fromFoot, other.normal[m], spacing)) {
-        partner = {true, plane.distance, w, m};
-      }
+      forEachFoot(other, m, spacing, [&](const Foot& foot) {
+        const FootPlane plane = footPlane(x, other, m, foot, periodic);
+        if (plane.distance < -spacing) return;
+        if (other.patchRadius.empty() && plane.alongSquared > Real(4) * spacing * spacing) return;
+        if (partner.found && plane.distance <= partner.distance) return;
+        if (!sharpConvexEdge(footK, normalK, x - plane.fromFoot, foot.normal, spacing)) return;
+        if (!other.patchRadius.empty() &&
+            !nearTheEdge(plane, foot.normal, normalK, foot.radius, spacing)) {
+          return;
+        }
+        partner = {true, plane.distance, foot.normal, w, m};
+      });
     }
   }
   return partner;
@@ -101,7 +157,8 @@ bool pastAnOpenEdge(const Vector& x, std::size_t i, const FootPlane& plane, cons
   for (const WallSurfaceView& other : walls) {
     for (const std::uint32_t m : other.neighboursOfFluid->of(i)) {
       if (other.normal[m].dot(normalK) < sameFace) continue;
-      const FootPlane planeM = footPlane(x, other, m, periodic);
+      const FootPlane planeM =
+          footPlane(x, other, m, Foot{other.normal[m], other.depth[m], 0, false}, periodic);
       const Vector between = plane.fromFoot - planeM.fromFoot;  // s_m - s_k
       if (std::abs(between.dot(normalK)) > Real(0.25) * spacing) continue;
       if (between.squaredNorm() > reachSquared) continue;
@@ -111,41 +168,63 @@ bool pastAnOpenEdge(const Vector& x, std::size_t i, const FootPlane& plane, cons
   return true;
 }
 
-// The smallest plane distance over the wall neighbours whose patch lies under x_i, leaving out
-// the far face of a thin body and, with atConvexEdges, taking the planes x_i is read behind at a
-// sharp convex edge with their partners (convexPartner); anyBehind: whether a plane counted read
-// x_i behind it.
+// The distance of a point from the wedge behind two planes that make a sharp convex edge (the
+// point dK in front of plane K, dM in front of plane M; unit normals nK, nM), and the direction
+// out of the wedge: inside it (behind both), the nearest face (the larger distance); outside,
+// a plane it is in front of where its foot on that plane lies behind the other plane (the
+// nearer, if both do), else the edge itself. The foot on the edge is x - a nK - b nM with
+// a + b c = dK, a c + b = dM (c = nK . nM).
+struct WedgeDistance {
+  Real distance;
+  Vector normal;
+};
+
+WedgeDistance distanceToWedge(Real dK, const Vector& nK, Real dM, const Vector& nM) {
+  if (dK <= 0 && dM <= 0) return dK >= dM ? WedgeDistance{dK, nK} : WedgeDistance{dM, nM};
+  const Real c = nK.dot(nM);
+  const bool onK = dK > 0 && dM - c * dK <= 0;  // x's foot on plane K lies behind plane M
+  const bool onM = dM > 0 && dK - c * dM <= 0;
+  if (onK && (!onM || dK <= dM)) return {dK, nK};
+  if (onM) return {dM, nM};
+  const Real a = (dK - c * dM) / (1 - c * c), b = (dM - c * dK) / (1 - c * c);
+  const Vector fromEdge = a * nK + b * nM;
+  const Real distance = fromEdge.norm();
+  return {distance, fromEdge / distance};
+}
+
+// The smallest plane distance over the wall neighbours' feet whose patch lies under x_i,
+// leaving out the far face of a thin body and, with atConvexEdges, reading each plane within
+// half a spacing of x_i with its sharp convex partner (convexPartner) as the wedge behind both.
 WallSurfaceDistance nearestPlane(const Vector& x, std::size_t i,
                                  const std::vector<WallSurfaceView>& walls,
-                                 const PeriodicBox& periodic, Real spacing, bool atConvexEdges,
-                                 bool& anyBehind) {
-  const Real patchRadius = Real(0.75) * spacing;
-  const Real patchRadiusSquared = patchRadius * patchRadius;
+                                 const PeriodicBox& periodic, Real spacing, bool atConvexEdges) {
+  const Real near = Real(0.5) * spacing;
   WallSurfaceDistance surface;
-  anyBehind = false;
   for (std::size_t w = 0; w < walls.size(); ++w) {
     const WallSurfaceView& wall = walls[w];
     for (const std::uint32_t k : wall.neighboursOfFluid->of(i)) {
-      const FootPlane plane = footPlane(x, wall, k, periodic);
-      if (plane.alongSquared > patchRadiusSquared) continue;  // off k's patch
-      if (plane.distance < -spacing) continue;  // the far face of a thin body (see the header)
-      WallSurfaceDistance reading{true, plane.distance, wall.normal[k], w, k};
-      if (atConvexEdges && plane.distance < 0) {
-        const ConvexPartner partner =
-            convexPartner(x, i, x - plane.fromFoot, reading.normal, walls, periodic, spacing);
-        if (partner.found && partner.distance >= 0) continue;  // beyond the edge: outside
-        if (!partner.found &&
-            pastAnOpenEdge(x, i, plane, reading.normal, walls, periodic, spacing)) {
-          continue;  // over a rim, not in the body
+      forEachFoot(wall, k, spacing, [&](const Foot& foot) {
+        const FootPlane plane = footPlane(x, wall, k, foot, periodic);
+        if (plane.alongSquared > foot.radius * foot.radius) return;  // off the foot's patch
+        if (plane.distance < -spacing) return;  // the far face of a thin body (see the header)
+        WallSurfaceDistance reading{true, plane.distance, foot.normal, w, k};
+        if (atConvexEdges && plane.distance < near) {
+          const ConvexPartner partner =
+              convexPartner(x, i, x - plane.fromFoot, foot.normal, walls, periodic, spacing);
+          if (partner.found) {
+            // the body there is behind both planes: i's distance to that wedge
+            const auto [distance, normal] =
+                distanceToWedge(plane.distance, foot.normal, partner.distance, partner.normal);
+            const bool throughM = distance == partner.distance && normal == partner.normal;
+            reading = {true, distance, normal, throughM ? partner.wall : w,
+                       throughM ? partner.particle : k};
+          } else if (plane.distance < 0 && foot.nearARim &&
+                     pastAnOpenEdge(x, i, plane, foot.normal, walls, periodic, spacing)) {
+            return;  // over a rim, not in the body
+          }
         }
-        if (partner.found && partner.distance > reading.distance) {
-          // inside a convex edge or corner: as deep as the nearest face, and out through it
-          reading = {true, partner.distance, walls[partner.wall].normal[partner.particle],
-                     partner.wall, partner.particle};
-        }
-      }
-      anyBehind = anyBehind || reading.distance < 0;
-      if (!surface.found || reading.distance < surface.distance) surface = reading;
+        if (!surface.found || reading.distance < surface.distance) surface = reading;
+      });
     }
   }
   return surface;
@@ -156,20 +235,18 @@ WallSurfaceDistance nearestPlane(const Vector& x, std::size_t i,
 WallSurfaceDistance wallSurfaceDistance(const Vector& x, std::size_t i,
                                         const std::vector<WallSurfaceView>& walls,
                                         const PeriodicBox& periodic, Real spacing) {
-  bool anyBehind = false;
-  const WallSurfaceDistance surface =
-      nearestPlane(x, i, walls, periodic, spacing, false, anyBehind);
-  if (!anyBehind) return surface;
-  // i is read behind a plane: either that plane is the other face's at a sharp convex edge whose
-  // patch reaches past the edge (a patch is 1.5 dx across), or i is inside the body there. The
-  // plane is set aside when i is in front of a face it makes a sharp convex edge with, and
-  // otherwise reads the largest of those faces' distances (convexPartner); checked only here,
-  // so it costs nothing elsewhere. Measured on a cross-shaped ditch (tutorials/crossDitchPress):
-  // without the first, metal beside the crossing's vertical convex edges was put 0.8 dx "behind"
-  // the other arm's wall and the run stopped; without the second, metal 0.0001 dx past the side
-  // of a ditch's arm, at the corner where it meets the pocket floor, was read 0.6 dx behind the
-  // floor's plane and the run stopped (dx = 3 mm).
-  return nearestPlane(x, i, walls, periodic, spacing, true, anyBehind);
+  const WallSurfaceDistance surface = nearestPlane(x, i, walls, periodic, spacing, false);
+  if (surface.distance >= Real(0.5) * spacing) return surface;
+  // i is read behind a plane or near it: either that plane is the other face's at a sharp convex
+  // edge whose patch reaches past the edge, or i is inside the body there, or beside the edge
+  // in front of both faces, nearer the edge than either plane says. Each such plane is read
+  // with its partner as the distance to the wedge behind both (distanceToWedge); checked only
+  // near the wall (within half a spacing), so it costs nothing elsewhere. Measured on a
+  // cross-shaped ditch (tutorials/crossDitchPress): without the first, metal beside the crossing's
+  // vertical convex edges was put 0.8 dx "behind" the other arm's wall and the run stopped; without
+  // the second, metal 0.0001 dx past the side of a ditch's arm, at the corner where it meets the
+  // pocket floor, was read 0.6 dx behind the floor's plane and the run stopped (dx = 3 mm).
+  return nearestPlane(x, i, walls, periodic, spacing, true);
 }
 
 }  // namespace sphcast

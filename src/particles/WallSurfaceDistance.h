@@ -19,48 +19,75 @@ namespace sphcast {
 // presses it closer. A quarter spacing leaves the wall pressure to do the work wherever it can.
 constexpr double wallClearanceInSpacings = 0.25;
 
+// How far around a point the wall particles must be looked at to read the surface there: a foot
+// beside an edge off the lattice stands for up to about 2 dx of its face, from a particle up to a
+// spacing behind it (geometry/WallSurfacePatches.h). The flow looks within its support radius,
+// which is at least this in every case here.
+constexpr double wallSurfaceReachInSpacings = 2.5;
+
 // What a wall cloud offers the clearance pass: its particles' positions, unit normals (out of
 // the wall into the fluid), depths behind the wall surface, velocities (empty for a wall at
-// rest; a moving mold's, bodies/RigidBody.h), and each fluid particle's wall neighbours.
+// rest; a moving mold's, bodies/RigidBody.h), each fluid particle's wall neighbours, and the
+// radius of surface each particle's foot stands for (particleizeMold's wallPatchRadius,
+// geometry/WallSurfacePatches.h; empty: 0.75 dx each).
 struct WallSurfaceView {
   std::span<const Vector> position;
   std::span<const Vector> normal;
   std::span<const Real> depth;
   const NeighbourList* neighboursOfFluid;  // fluid particle i -> wall particles within h
   std::span<const Vector> velocity = {};
+  std::span<const Real> patchRadius = {};
+  // Second feet (particleizeMold's secondNormal, secondWallDistance, secondWallPatchRadius; a
+  // radius of 0 for a particle without): empty when the cloud has none.
+  std::span<const Vector> secondNormal = {};
+  std::span<const Real> secondDepth = {};
+  std::span<const Real> secondPatchRadius = {};
+  // 1 where a particle's first foot stands for a piece of an open rim (wallPatchAtRim); empty
+  // when the cloud has none.
+  std::span<const Real> patchAtRim = {};
 };
 
 // The wall surface seen from fluid particle i, estimated from its wall neighbours: each wall
 // particle k marks the surface point s_k = x_k + d_k n_k (its foot: depth d_k along the normal
-// n_k) and the tangent plane there, on a patch of the surface about one spacing across. The
-// feet whose patch i lies over (i's projection on the plane within 0.75 dx of the foot: the
-// farthest a point lies from its nearest foot on the lattice of a flat wall is dx/sqrt(2)) give
+// n_k) and the tangent plane there, on a patch of the surface about the foot. The feet whose
+// patch i lies over (i's projection on the plane within the patch's radius of the foot) give
 //   d_ik = (x_i - s_k) . n_k,
 // and the smallest is i's distance in front of the surface: at a concave corner, the nearer
-// wall. Two kinds of plane are left out, each of which i can lie behind without being in the
-// body: the other face's at a convex edge (its patches do not lie under i), and the far face's
-// of a thin body, which puts i more than a spacing behind it (no particle gets so deep: a step
-// moves it by at most maxCo dx, and the health checks stop a run at 0.5 dx). Without them, the
-// smallest plane distance of the wall particles within dx put a particle flowing past the
-// one-layer obstacle of SPHERIC Test 2 2.9 spacings "behind" a wall, and one above a convex
-// ledge a spacing behind it. On a curved wall of radius R the estimate errs by at most
-// (0.75 dx)^2 / (2 R); inside a concave wall it never underestimates. A patch reaches 0.75 dx past
-// a sharp convex edge (faces more than 30 degrees apart), where i can lie over the patch of one
-// face and in front of the other: when i is behind a plane, that plane is set aside if i lies in
-// front of a plane (foot within 2 dx along it) with which it makes a sharp convex edge (its foot
-// behind the other's plane), since the body is behind both; if i is behind all such planes, it
-// is inside the body's convex edge or corner (the intersection of the faces' half-spaces) and
-// the plane reads the largest of their distances: the depth behind the nearest face, exact
-// there. A plane with no such partner is set aside when i lies past an open edge of its face (a
-// shell's rim: i's projection more than dx/2 from the foot and no foot of the face as far in
-// that direction), since i is then over the wall, not in it. `found` is false when no
-// wall neighbour's patch lies under i (no wall near, or i beyond a convex edge whose particles
-// all face the other way): the clearance then leaves i alone.
+// wall. The patch's radius is the one particleizeMold worked out (geometry/WallSurfacePatches.h:
+// the farthest point of the foot's share of the surface, so that the patches cover every face to
+// its edges, off the lattice too; a particle with a second foot, on a face no first foot stands
+// for near it, offers both); for a cloud without it, 0.75 dx (the farthest a point lies from its
+// nearest foot on the lattice of a flat wall is dx/sqrt(2)). The far face of a thin body is left
+// out: it puts i more than a spacing behind it (no particle gets so deep: a step moves it by at
+// most maxCo dx, and the health checks stop a run at 0.5 dx); without that, a particle flowing
+// past the one-layer obstacle of SPHERIC Test 2 was read 2.9 spacings "behind" a wall. On a
+// curved wall of radius R the estimate errs by at most r^2 / (2 R) for a patch of radius r;
+// inside a concave wall it never underestimates.
+//
+// At a sharp convex edge (faces more than 30 degrees apart) a patch can reach past the edge, and
+// a plane read there bounds the body on one side only. So a plane that reads i within half a
+// spacing of it, or behind it, is read with its partner: the plane in front of which i lies
+// farthest among those it makes a sharp convex edge with (the partner's foot behind the other's
+// plane, and i over the partner's patch but for 0.6 dx across the edge, not beyond it along the
+// edge: past a face's end its plane bounds nothing). The body there is the wedge behind both
+// planes, and i's distance from it is exact for a straight edge: behind both, the depth behind
+// the nearer face; in front of one, the distance to that face where i's foot on it lies behind
+// the other plane, else to the edge itself, out along the edge's normal. Without it, metal
+// beside the crossing's vertical convex edges of tutorials/crossDitchPress was read 0.8 dx
+// behind the other arm's wall, metal inside the corner where an arm meets the pocket floor 0.6
+// dx too deep, and metal half a spacing off one face of an edge read at the other face's plane
+// (and moved by a quarter spacing). Where three faces meet, the wedge of two is an approximation
+// (tests/unit/geometry/MoldWallSurfaceTest.cpp measures it). For a cloud without patch radii
+// (2D walls, clouds of an older particleizeMold) a plane with no partner is also set aside when i
+// lies past an open edge of its face (a shell's rim: i's projection more than dx/2 from the foot
+// and no foot of the face as far in that direction), since i is then over the wall, not in it;
+// with patch radii a patch ends 0.09 dx past a rim. `found` is false when no wall neighbour's
+// patch lies under i (no wall near, or i beyond a convex edge): the clearance leaves i alone.
 struct WallSurfaceDistance {
   bool found = false;
   Real distance = 0;  // in front of the surface (negative: behind it)
   Vector normal = Vector::Zero();
-  std::size_t wall = 0;      // the view whose particle gave it
+  std::size_t wall = 0;        // the view whose particle gave it
   std::uint32_t particle = 0;  // that particle
 };
 
