@@ -138,22 +138,24 @@ const char* kindOfDimension(int dimension) {
   return dimension == 1 ? "curve" : dimension == 2 ? "surface" : "volume";
 }
 
-// How far the wall particles' feet had to reach to cover the surface (WallSurfacePatches.h).
+// How far the wall particles' feet had to reach to cover the surface (WallSurfacePatches.h): on
+// a face on the lattice a foot stands for 0.8 dx about it (the cell's corners, and the sampling
+// margin); beside an edge off the lattice, for more.
 void logPatchRadii(const WallParticles& particles, double spacing) {
-  std::size_t wider = 0;
+  std::size_t wide = 0;
   double widest = 0.0;
   for (const double radius : particles.patchRadii) {
-    if (radius > 0.75 * spacing * (1.0 + 1e-9)) ++wider;
+    if (radius > spacing) ++wide;
     widest = std::max(widest, radius);
   }
   const auto seconds = static_cast<std::size_t>(
       std::count_if(particles.secondPatchRadii.begin(), particles.secondPatchRadii.end(),
                     [](double radius) { return radius > 0.0; }));
-  info() << "    wall surface patches: " << wider << " of " << particles.size()
-         << " particles stand for more than 0.75 dx of surface (off the lattice, beside edges), "
-            "the widest "
+  info() << "    wall surface patches: " << wide << " of " << particles.size()
+         << " particles stand for more than a spacing of surface about them (beside edges off "
+            "the lattice), the widest "
          << std::setprecision(3) << widest / spacing << std::setprecision(6) << " dx; " << seconds
-         << " stand for a second face (thin parts, acute edges)\n";
+         << " stand for a second face too (thin parts, acute edges)\n";
 }
 
 // The particles of the 3D patches: shells behind surface groups, volumes filling volume groups.

@@ -3,6 +3,7 @@
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "particles/FieldNames.h"
 
@@ -44,6 +45,7 @@ struct Foot {
   Real depth;
   Real radius;
   bool nearARim;
+  bool sampled;  // its radius was worked out by particleizeMold (not the 0.75 dx default)
 };
 
 // Calls visit(foot) for each foot of wall particle k: its first, and its second where
@@ -53,9 +55,9 @@ void forEachFoot(const WallSurfaceView& wall, std::uint32_t k, Real spacing, Vis
   const Real latticePatch = Real(0.75) * spacing;
   const bool worked = !wall.patchRadius.empty();
   visit(Foot{wall.normal[k], wall.depth[k], worked ? wall.patchRadius[k] : latticePatch,
-             !worked || (!wall.patchAtRim.empty() && wall.patchAtRim[k] > 0)});
+             !worked || (!wall.patchAtRim.empty() && wall.patchAtRim[k] > 0), worked});
   if (!wall.secondPatchRadius.empty() && wall.secondPatchRadius[k] > 0) {
-    visit(Foot{wall.secondNormal[k], wall.secondDepth[k], wall.secondPatchRadius[k], false});
+    visit(Foot{wall.secondNormal[k], wall.secondDepth[k], wall.secondPatchRadius[k], false, true});
   }
 }
 
@@ -74,14 +76,40 @@ FootPlane footPlane(const Vector& x, const WallSurfaceView& wall, std::uint32_t 
   return {fromFoot, distance, fromFoot.squaredNorm() - distance * distance};
 }
 
-// Whether the edge where the planes of wall particles k and m meet is a sharp convex one: k's
-// foot lies behind m's plane (and the planes are more than 30 degrees apart): the body is then
-// behind both planes, and a point in front of m's plane is outside it, whatever k's says.
+// A foot of one of x_i's wall neighbours, as x_i sees it.
+struct SeenFoot {
+  Foot foot;
+  FootPlane plane;
+  std::size_t wall;
+  std::uint32_t particle;
+};
+
+// The feet of x_i's wall neighbours, into `feet` (cleared first).
+void gatherFeet(const Vector& x, std::size_t i, const std::vector<WallSurfaceView>& walls,
+                const PeriodicBox& periodic, Real spacing, std::vector<SeenFoot>& feet) {
+  feet.clear();
+  for (std::size_t w = 0; w < walls.size(); ++w) {
+    const WallSurfaceView& wall = walls[w];
+    for (const std::uint32_t k : wall.neighboursOfFluid->of(i)) {
+      forEachFoot(wall, k, spacing, [&](const Foot& foot) {
+        feet.push_back({foot, footPlane(x, wall, k, foot, periodic), w, k});
+      });
+    }
+  }
+}
+
+// Whether the edge where the planes of feet k and m meet is a sharp convex one (the planes more
+// than 30 degrees apart): the body is then behind both planes, and a point in front of m's plane
+// is outside it, whatever k's says. Each foot lies behind the other's plane, or on it: a foot on
+// the edge itself (a particle on a face, its second foot on the other) is on both planes, and
+// the other foot tells. At a concave edge each lies in front of the other's plane.
 bool sharpConvexEdge(const Vector& footK, const Vector& normalK, const Vector& footM,
                      const Vector& normalM, Real spacing) {
   constexpr Real sharp = Real(0.866);  // cos 30 degrees
   const Real tolerance = Real(1e-3) * spacing;
-  return normalK.dot(normalM) < sharp && (footK - footM).dot(normalM) < -tolerance;
+  if (normalK.dot(normalM) >= sharp) return false;
+  const Real kBehindM = (footK - footM).dot(normalM), mBehindK = (footM - footK).dot(normalK);
+  return kBehindM < tolerance && mBehindK < tolerance && std::min(kBehindM, mBehindK) < -tolerance;
 }
 
 // Where each foot's share of its face is known (the patch radius r_m): whether x_i lies over
@@ -111,26 +139,18 @@ struct ConvexPartner {
   std::uint32_t particle = 0;
 };
 
-ConvexPartner convexPartner(const Vector& x, std::size_t i, const Vector& footK,
-                            const Vector& normalK, const std::vector<WallSurfaceView>& walls,
-                            const PeriodicBox& periodic, Real spacing) {
+ConvexPartner convexPartner(const Vector& x, const Vector& footK, const Vector& normalK,
+                            const std::vector<SeenFoot>& feet, Real spacing) {
   ConvexPartner partner;
-  for (std::size_t w = 0; w < walls.size(); ++w) {
-    const WallSurfaceView& other = walls[w];
-    for (const std::uint32_t m : other.neighboursOfFluid->of(i)) {
-      forEachFoot(other, m, spacing, [&](const Foot& foot) {
-        const FootPlane plane = footPlane(x, other, m, foot, periodic);
-        if (plane.distance < -spacing) return;
-        if (other.patchRadius.empty() && plane.alongSquared > Real(4) * spacing * spacing) return;
-        if (partner.found && plane.distance <= partner.distance) return;
-        if (!sharpConvexEdge(footK, normalK, x - plane.fromFoot, foot.normal, spacing)) return;
-        if (!other.patchRadius.empty() &&
-            !nearTheEdge(plane, foot.normal, normalK, foot.radius, spacing)) {
-          return;
-        }
-        partner = {true, plane.distance, foot.normal, w, m};
-      });
-    }
+  for (const SeenFoot& seen : feet) {
+    const FootPlane& plane = seen.plane;
+    const Foot& foot = seen.foot;
+    if (plane.distance < -spacing) continue;
+    if (!foot.sampled && plane.alongSquared > Real(4) * spacing * spacing) continue;
+    if (partner.found && plane.distance <= partner.distance) continue;
+    if (!sharpConvexEdge(footK, normalK, x - plane.fromFoot, foot.normal, spacing)) continue;
+    if (foot.sampled && !nearTheEdge(plane, foot.normal, normalK, foot.radius, spacing)) continue;
+    partner = {true, plane.distance, foot.normal, seen.wall, seen.particle};
   }
   return partner;
 }
@@ -158,7 +178,7 @@ bool pastAnOpenEdge(const Vector& x, std::size_t i, const FootPlane& plane, cons
     for (const std::uint32_t m : other.neighboursOfFluid->of(i)) {
       if (other.normal[m].dot(normalK) < sameFace) continue;
       const FootPlane planeM =
-          footPlane(x, other, m, Foot{other.normal[m], other.depth[m], 0, false}, periodic);
+          footPlane(x, other, m, Foot{other.normal[m], other.depth[m], 0, false, false}, periodic);
       const Vector between = plane.fromFoot - planeM.fromFoot;  // s_m - s_k
       if (std::abs(between.dot(normalK)) > Real(0.25) * spacing) continue;
       if (between.squaredNorm() > reachSquared) continue;
@@ -193,39 +213,35 @@ WedgeDistance distanceToWedge(Real dK, const Vector& nK, Real dM, const Vector& 
 }
 
 // The smallest plane distance over the wall neighbours' feet whose patch lies under x_i,
-// leaving out the far face of a thin body and, with atConvexEdges, reading each plane within
-// half a spacing of x_i with its sharp convex partner (convexPartner) as the wedge behind both.
+// leaving out the far face of a thin body and reading each plane nearer x_i than `near` (none
+// when it is negative) with its sharp convex partner (convexPartner) as the wedge behind both.
 WallSurfaceDistance nearestPlane(const Vector& x, std::size_t i,
                                  const std::vector<WallSurfaceView>& walls,
-                                 const PeriodicBox& periodic, Real spacing, bool atConvexEdges) {
-  const Real near = Real(0.5) * spacing;
+                                 const std::vector<SeenFoot>& feet, const PeriodicBox& periodic,
+                                 Real spacing, Real near) {
   WallSurfaceDistance surface;
-  for (std::size_t w = 0; w < walls.size(); ++w) {
-    const WallSurfaceView& wall = walls[w];
-    for (const std::uint32_t k : wall.neighboursOfFluid->of(i)) {
-      forEachFoot(wall, k, spacing, [&](const Foot& foot) {
-        const FootPlane plane = footPlane(x, wall, k, foot, periodic);
-        if (plane.alongSquared > foot.radius * foot.radius) return;  // off the foot's patch
-        if (plane.distance < -spacing) return;  // the far face of a thin body (see the header)
-        WallSurfaceDistance reading{true, plane.distance, foot.normal, w, k};
-        if (atConvexEdges && plane.distance < near) {
-          const ConvexPartner partner =
-              convexPartner(x, i, x - plane.fromFoot, foot.normal, walls, periodic, spacing);
-          if (partner.found) {
-            // the body there is behind both planes: i's distance to that wedge
-            const auto [distance, normal] =
-                distanceToWedge(plane.distance, foot.normal, partner.distance, partner.normal);
-            const bool throughM = distance == partner.distance && normal == partner.normal;
-            reading = {true, distance, normal, throughM ? partner.wall : w,
-                       throughM ? partner.particle : k};
-          } else if (plane.distance < 0 && foot.nearARim &&
-                     pastAnOpenEdge(x, i, plane, foot.normal, walls, periodic, spacing)) {
-            return;  // over a rim, not in the body
-          }
-        }
-        if (!surface.found || reading.distance < surface.distance) surface = reading;
-      });
+  for (const SeenFoot& seen : feet) {
+    const FootPlane& plane = seen.plane;
+    const Foot& foot = seen.foot;
+    if (plane.alongSquared > foot.radius * foot.radius) continue;  // off the foot's patch
+    if (plane.distance < -spacing) continue;  // the far face of a thin body (see the header)
+    WallSurfaceDistance reading{true, plane.distance, foot.normal, seen.wall, seen.particle};
+    if (plane.distance < near) {
+      const ConvexPartner partner =
+          convexPartner(x, x - plane.fromFoot, foot.normal, feet, spacing);
+      if (partner.found) {
+        // the body there is behind both planes: i's distance to that wedge
+        const auto [distance, normal] =
+            distanceToWedge(plane.distance, foot.normal, partner.distance, partner.normal);
+        const bool throughM = distance == partner.distance && normal == partner.normal;
+        reading = {true, distance, normal, throughM ? partner.wall : seen.wall,
+                   throughM ? partner.particle : seen.particle};
+      } else if (plane.distance < 0 && foot.nearARim &&
+                 pastAnOpenEdge(x, i, plane, foot.normal, walls, periodic, spacing)) {
+        continue;  // over a rim, not in the body
+      }
     }
+    if (!surface.found || reading.distance < surface.distance) surface = reading;
   }
   return surface;
 }
@@ -234,19 +250,26 @@ WallSurfaceDistance nearestPlane(const Vector& x, std::size_t i,
 
 WallSurfaceDistance wallSurfaceDistance(const Vector& x, std::size_t i,
                                         const std::vector<WallSurfaceView>& walls,
-                                        const PeriodicBox& periodic, Real spacing) {
-  const WallSurfaceDistance surface = nearestPlane(x, i, walls, periodic, spacing, false);
-  if (surface.distance >= Real(0.5) * spacing) return surface;
+                                        const PeriodicBox& periodic, Real spacing, Real near) {
+  const Real within = std::max(near, Real(0)) * spacing;
+  constexpr Real nowhere = -std::numeric_limits<Real>::infinity();
+  thread_local std::vector<SeenFoot> feet;  // the clearance pass asks for every particle
+  gatherFeet(x, i, walls, periodic, spacing, feet);
+  const WallSurfaceDistance surface = nearestPlane(x, i, walls, feet, periodic, spacing, nowhere);
+  if (!surface.found || surface.distance >= within) return surface;
   // i is read behind a plane or near it: either that plane is the other face's at a sharp convex
   // edge whose patch reaches past the edge, or i is inside the body there, or beside the edge
   // in front of both faces, nearer the edge than either plane says. Each such plane is read
   // with its partner as the distance to the wedge behind both (distanceToWedge); checked only
-  // near the wall (within half a spacing), so it costs nothing elsewhere. Measured on a
+  // where the nearest plane reads i nearer than `near` (the clearance pass's clearance), so it
+  // costs nothing elsewhere. Measured on a
   // cross-shaped ditch (tutorials/crossDitchPress): without the first, metal beside the crossing's
   // vertical convex edges was put 0.8 dx "behind" the other arm's wall and the run stopped; without
   // the second, metal 0.0001 dx past the side of a ditch's arm, at the corner where it meets the
   // pocket floor, was read 0.6 dx behind the floor's plane and the run stopped (dx = 3 mm).
-  return nearestPlane(x, i, walls, periodic, spacing, true);
+  // A plane read at `within` or more is left as it is: the wedge never lowers a reading, so the
+  // result is below `within` exactly when the refined one is.
+  return nearestPlane(x, i, walls, feet, periodic, spacing, within);
 }
 
 }  // namespace sphcast

@@ -98,8 +98,12 @@ std::vector<WallSurfaceView> wallSurfaceViews(const ParticleCloud& fluid,
                                               const std::vector<const ParticleCloud*>& walls,
                                               const Neighbourhood& neighbourhood);
 
+// `near` (in spacings): how near the surface a reading is refined at sharp convex edges (the
+// wedge, above). The wedge never lowers a reading, so a caller that acts only on readings below
+// some distance (the clearance) may pass that distance and skip the refinement beyond it.
 WallSurfaceDistance wallSurfaceDistance(const Vector& x, std::size_t i,
                                         const std::vector<WallSurfaceView>& walls,
-                                        const PeriodicBox& periodic, Real spacing);
+                                        const PeriodicBox& periodic, Real spacing,
+                                        Real near = Real(0.5));
 
 }  // namespace sphcast

@@ -24,7 +24,7 @@ WallClearanceReport enforceWallClearance(std::span<Vector> positions, std::span<
   for (std::size_t i = 0; i < count; ++i) {
     if (!held.empty() && held[i] != 0) continue;
     const WallSurfaceDistance surface =
-        wallSurfaceDistance(positions[i], i, walls, periodic, spacing);
+        wallSurfaceDistance(positions[i], i, walls, periodic, spacing, clearance / spacing);
     if (!surface.found || surface.distance >= clearance) continue;
     ++corrected;
     if (surface.distance < 0) {

@@ -192,9 +192,13 @@ TEST(WallSurfaceDistance, ConvexEdgesAndThinFilledBodiesGiveTheDistanceToTheNear
       {3.3 * dx, 4.1 * dx, 7.8 * dx},    // beside the +x face, 0.2 dx below the top edge
       {1.5 * dx, 4.0 * dx, 8.3 * dx},    // above the middle of the plate's top
       {0.2 * dx, 4.0 * dx, 8.25 * dx},   // above the top, next to the -x edge
-      {-0.4 * dx, 2.0 * dx, 3.0 * dx}};  // in front of the -x face
+      {-0.4 * dx, 2.0 * dx, 3.0 * dx},   // in front of the -x face
+      // off the +x-top and -x-top edges, nearest the edge itself (0.25 and 0.28 dx away; the
+      // planes read 0.2 and 0.15, 0.2 and 0.2): read as the wedge behind both faces
+      {3.2 * dx, 4.5 * dx, 8.15 * dx},
+      {-0.2 * dx, 6.5 * dx, 8.2 * dx}};
   const auto views = wall.views(fluid);
-  const std::vector<bool> mustFind{true, true, false, true};
+  const std::vector<bool> mustFind{true, true, false, true, true, true};
   for (std::size_t i = 0; i < fluid.size(); ++i) {
     const WallSurfaceDistance d = wallSurfaceDistance(fluid[i], i, views, PeriodicBox{}, dx);
     if (mustFind[i]) {
