@@ -9,10 +9,8 @@
 # ditch or the plate above it (the paper's Fig. 18; with the punch inside the casting it lay at
 # the ditch's bottom, and with the punch on it, in the plate: 6 mm up at 4 mm, 4.2 mm up at 3 mm).
 # No health stop (no particle through a mold), the heat books closed.
-# At 4 mm, as at the tutorial's 3 mm, the ditch's sides lie half-way between lattice planes; at
-# 4.5 mm they do not, the wall-surface estimate has a gap beside the ditch's vertical convex
-# edges (the lattice's first layer 0.83 dx behind the side), and a particle slips through one at
-# 0.08 s (tutorials/crossDitchPress/README.md).
+# At 4 mm, as at the tutorial's 3 mm, the ditch's sides lie half-way between lattice planes;
+# pressAtASpacingThatDividesNothingHoldsTheMetal runs the press at 4.5 mm, where they do not.
 . "$SPHCAST_TEST_TOOLS"
 tutorial="$(dirname "$SPHCAST_TEST_TOOLS")/../../tutorials/crossDitchPress"
 mkdir -p "$scratch/press"

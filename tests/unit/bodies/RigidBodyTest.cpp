@@ -168,6 +168,8 @@ TEST(RigidBody, PrescribedDisplacementIsFollowedAndItsSlopeIsTheVelocity) {
 TEST(RigidBody, TorqueFreeSpinConservesAngularMomentumAndTurnsTheParticles) {
   auto cloud = testing::boxBody(6, 6, 6, dx, Vector::Zero(), false);  // a cube: I isotropic
   const Vector corner = cloud.positions()[0];
+  // a second foot (particleizeMold's, on a thin part) turns with the body as the first does
+  cloud.addVectorField(field::secondNormal).assign(cloud.size(), Vector::UnitX());
   RigidBody body(densityBody(), cloud, Vector::Zero());
   const Vector centre = body.centre();
   const double omega = 20;  // rad/s about z
@@ -193,6 +195,10 @@ TEST(RigidBody, TorqueFreeSpinConservesAngularMomentumAndTurnsTheParticles) {
                       std::sin(angle) * arm.x() + std::cos(angle) * arm.y(), arm.z());
   EXPECT_LT((cloud.positions()[0] - (centre + turned)).norm(), 1e-12);
   EXPECT_NEAR(cloud.vectorField(field::normal)[0].norm(), 1, 1e-14);
+  EXPECT_LT((cloud.vectorField(field::secondNormal)[0] -
+             Vector(std::cos(angle), std::sin(angle), 0))
+                .norm(),
+            1e-6);
   // U of a particle: w x r
   EXPECT_LT((cloud.vectorField(field::U)[0] - Vector(0, 0, omega).cross(turned)).norm(), 1e-9);
 }
