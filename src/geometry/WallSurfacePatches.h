@@ -17,22 +17,28 @@ namespace sphcast {
 // behind the face, the last row of feet up to a spacing short of a convex edge, and a strip of
 // face beside the edge had no disc over it: metal there was not seen behind the face (measured
 // at crossDitchPress's ditch at dx = 4.5 mm, and on every mold of tests/unit/geometry/
-// MoldWallSurfaceTest.cpp: 0.6 to 12.9 % of the points inside the material not read behind).
+// MoldWallSurfaceTest.cpp: 1.0 to 6.2 % of the points inside the material left in it).
 //
 // So each foot's disc is sized to cover its share of the surface: the surface is sampled every
 // dx/8, each sample is given to its nearest foot of the same face (normal within 25 degrees,
-// foot within dx/4 of the sample's tangent plane, of a particle at most 1.5 dx deep), and a
-// foot's radius is the farthest of its samples along its plane, plus 0.09 dx (a point of the
-// surface lies within 0.088 dx of a sample, and its nearest foot no farther than that sample's).
-// A foot no sample chose gets radius 0: its plane is read nowhere.
+// foot within dx/4 of the sample's tangent plane and 2 dx of the sample, of a particle at most
+// 1.5 dx deep; a foot whose normal is within 10 degrees is taken instead if it lies at most dx/2
+// farther, so that the fanned normals along an edge do not stand for a face), and a foot's
+// radius is the farthest of its samples along its plane, plus 0.09 dx (a point of the surface
+// lies within 0.088 dx of a sample, and its nearest foot no farther than that sample's). A foot
+// no sample chose gets radius 0: its plane is read nowhere. A foot that stands for a piece of an
+// open rim (an edge of one triangle only) is marked: its disc reaches as far past the rim as it
+// covers inside, and the flow sets its plane aside over the rim (WallSurfaceDistance.h).
 //
-// A sample whose nearest foot of its face, or that foot's particle, lies more than 1.5 dx away
-// has no first foot that metal there would see: a part of the mold thinner than about two
-// spacings (its lattice points all nearer the other face), the sliver of an acute edge, a face
-// the first layer misses. The nearest particle within 1.5 dx whose second foot is free, or on
-// the same face, takes a second foot on the sample's tangent plane (x_k's projection on it) and
-// stands for those samples as above. The results go to `particles` (patchRadii, and the second
-// feet when any particle has one).
+// A sample whose foot's particle lies more than 2 dx away (so that metal half a spacing in
+// front of the sample, with a support radius of 2.5 dx, would not see it) has no first foot
+// that counts: a part of the mold thinner than about two spacings (its lattice points all nearer
+// the other face), the sliver of an acute edge. The nearest particle within 2 dx behind that
+// face (on the material's side, as the face's first feet within 3 dx say) whose second foot is
+// free, or on the same face, and whose projection on the face's plane lies on the surface, takes
+// a second foot at its nearest point of the face and stands for those samples as above. The
+// results go to `particles` (patchRadii, patchesAtRim where a rim is, and the second feet when
+// any particle has one).
 void addWallSurfacePatches(WallParticles& particles, const TriangleMesh& surface, double spacing);
 
 }  // namespace sphcast

@@ -126,11 +126,11 @@ bool nearTheEdge(const FootPlane& plane, const Vector& normalM, const Vector& no
   return alongEdge * alongEdge + acrossTrimmed * acrossTrimmed <= radius * radius;
 }
 
-// The planes that make a sharp convex edge with the plane of foot footK, which reads x_i behind
-// it (their feet within 2 dx of x_i along them; not the far face of a thin body): the largest
-// distance in front of one of them, and that plane. The body near a convex edge or corner is the
-// intersection of the faces' half-spaces, so x_i is outside it when it is in front of any one of
-// them, and otherwise as deep as the largest of their distances says (the nearest face).
+// The feet whose planes make a sharp convex edge with the plane of foot footK, which reads x_i
+// behind it or near it (not the far face of a thin body; their patches under x_i by
+// nearTheEdge, or, where patches were not worked out, their feet within 2 dx along): the largest
+// distance in front of one of them, and that plane. The body near a convex edge is the wedge
+// behind both planes (distanceToWedge).
 struct ConvexPartner {
   bool found = false;
   Real distance = 0;

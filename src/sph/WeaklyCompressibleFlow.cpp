@@ -4,6 +4,7 @@
 #include <cmath>
 #include <iterator>
 #include <limits>
+#include <sstream>
 #include <utility>
 
 #include <Eigen/Geometry>
@@ -96,6 +97,21 @@ void WeaklyCompressibleFlow::checkInput() {
     wall->scalarField(field::volume);
     wall->vectorField(field::normal);
     wall->scalarField(field::wallDistance);
+  }
+  // particleizeMold's wall-surface patches reach up to 2 dx of a face from a particle up to a
+  // spacing behind it (particles/WallSurfaceDistance.h): a smaller kernel misses some of them
+  const Real dx = static_cast<Real>(spacing->second);
+  const bool patched = std::any_of(walls_.begin(), walls_.end(), [](const ParticleCloud* wall) {
+    return wall->hasScalarField(field::wallPatchRadius);
+  });
+  if (patched && settings_.supportRadius < Real(wallSurfaceReachInSpacings) * dx * Real(0.999)) {
+    std::ostringstream message;
+    message << "supportRadius " << settings_.supportRadius << " m is "
+            << settings_.supportRadius / dx
+            << " dx: the wall-surface estimate needs the wall particles within "
+            << wallSurfaceReachInSpacings
+            << " dx; beside the molds' edges off the lattice a particle may pass a wall unseen";
+    warning(message.str());
   }
   if (settings_.dimension == 2) requirePlane();
   for (const ParticleCloud* wall : walls_) wallPressure_.emplace_back(wall->size(), Real(0));
