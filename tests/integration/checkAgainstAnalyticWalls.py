@@ -10,6 +10,10 @@ shapes (mm-free, SI units):
   horizontalCylinder R L         axis along y, from -L/2 to L/2, fluid inside
   box XMIN YMIN ZMIN XMAX YMAX ZMAX   fluid inside
   cone R0 R1 H                   axis z, radius R0 at z = 0 growing to R1 at z = H, open top
+  boxAroundRotatedCore XMIN YMIN ZMIN XMAX YMAX ZMAX CX CY CZ HX HY HZ AX AY AZ ANGLE
+                                 fluid inside the box and outside a core: a box of half-sizes
+                                 HX HY HZ about (CX, CY, CZ), turned by ANGLE (radians) about
+                                 the axis (AX, AY, AZ) through its centre, as gmsh's Rotate
 Reads the .vtp files with VTK's Python XML reader. Prints one line per time; exits 1 on failure.
 """
 import math
@@ -33,7 +37,25 @@ def signed_gap(shape, p, x):
         slope = (r1 - r0) / height  # dr/dz of the side
         side = (r0 + slope * x[2] - math.hypot(x[0], x[1])) / math.sqrt(1 + slope * slope)
         return min(side, x[2])  # the floor at z = 0; the top is open
+    if shape == "boxAroundRotatedCore":
+        tank = min(x[0] - p[0], x[1] - p[1], x[2] - p[2], p[3] - x[0], p[4] - x[1], p[5] - x[2])
+        return min(tank, outside_turned_box(p[6:9], p[9:12], p[12:15], p[15], x))
     raise SystemExit("unknown shape " + shape)
+
+
+def outside_turned_box(centre, half, axis, angle, x):
+    """Signed distance of x outside a box turned by angle about axis through its centre."""
+    norm = math.sqrt(sum(a * a for a in axis))
+    k = [a / norm for a in axis]
+    v = [x[i] - centre[i] for i in range(3)]
+    # into the box's own frame: Rodrigues' rotation by -angle
+    c, s = math.cos(-angle), math.sin(-angle)
+    kv = sum(k[i] * v[i] for i in range(3))
+    cross = [k[1] * v[2] - k[2] * v[1], k[2] * v[0] - k[0] * v[2], k[0] * v[1] - k[1] * v[0]]
+    local = [v[i] * c + cross[i] * s + k[i] * kv * (1 - c) for i in range(3)]
+    q = [abs(local[i]) - half[i] for i in range(3)]
+    outside = math.sqrt(sum(max(a, 0.0) ** 2 for a in q))
+    return outside + min(max(q), 0.0)
 
 
 def main():
