@@ -65,11 +65,12 @@ struct WallSurfaceView {
 // inside a concave wall it never underestimates.
 //
 // At a sharp convex edge (faces more than 30 degrees apart) a patch can reach past the edge, and
-// a plane read there bounds the body on one side only. So a plane that reads i within half a
-// spacing of it, or behind it, is read with its partner: the plane in front of which i lies
-// farthest among those it makes a sharp convex edge with (the partner's foot behind the other's
-// plane, and i over the partner's patch but for 0.6 dx across the edge, not beyond it along the
-// edge: past a face's end its plane bounds nothing). The body there is the wedge behind both
+// a plane read there bounds the body on one side only. So a plane that reads i nearer than
+// `near` (below; half a spacing unless the caller asks less), or behind it, is read with its
+// partner: the plane in front of which i lies farthest among those it makes a sharp convex edge
+// with (each foot behind the other's plane or on it, one strictly behind; and i over the
+// partner's patch but for 0.6 dx across the edge, not beyond it along the edge: past a face's
+// end its plane bounds nothing). The body there is the wedge behind both
 // planes, and i's distance from it is exact for a straight edge: behind both, the depth behind
 // the nearer face; in front of one, the distance to that face where i's foot on it lies behind
 // the other plane, else to the edge itself, out along the edge's normal. Without it, metal
@@ -77,12 +78,14 @@ struct WallSurfaceView {
 // behind the other arm's wall, metal inside the corner where an arm meets the pocket floor 0.6
 // dx too deep, and metal half a spacing off one face of an edge read at the other face's plane
 // (and moved by a quarter spacing). Where three faces meet, the wedge of two is an approximation
-// (tests/unit/geometry/MoldWallSurfaceTest.cpp measures it). For a cloud without patch radii
-// (2D walls, clouds of an older particleizeMold) a plane with no partner is also set aside when i
-// lies past an open edge of its face (a shell's rim: i's projection more than dx/2 from the foot
-// and no foot of the face as far in that direction), since i is then over the wall, not in it;
-// with patch radii a patch ends 0.09 dx past a rim. `found` is false when no wall neighbour's
-// patch lies under i (no wall near, or i beyond a convex edge): the clearance leaves i alone.
+// (tests/unit/geometry/MoldWallSurfaceTest.cpp measures it). A plane that reads i behind it
+// with no partner is set aside when i lies past an open edge of its face (a shell's rim: i's
+// projection more than dx/2 from the foot and no foot of the face as far in that direction),
+// since i is then over the wall, not in it: for the feet whose patch reaches a rim (particleize-
+// Mold marks them: a disc that covers the face up to the rim reaches as far past it), and for
+// every foot of a cloud without patch radii (2D walls, molds of an older particleizeMold).
+// `found` is false when no wall neighbour's patch lies under i (no wall near, or i beyond a
+// convex edge): the clearance leaves i alone.
 struct WallSurfaceDistance {
   bool found = false;
   Real distance = 0;  // in front of the surface (negative: behind it)
