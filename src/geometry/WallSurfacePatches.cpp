@@ -32,6 +32,24 @@ std::int64_t cellKey(const Eigen::Vector3i& c) {
   return bits(c.x()) | bits(c.y()) << 21 | bits(c.z()) << 42;
 }
 
+using Cells = std::unordered_map<std::int64_t, std::vector<int>>;
+
+// Calls visit(k) for the particles binned in the cells within `reach` cells of p's.
+template <class Visit>
+void forEachNear(const Cells& cells, const Eigen::Vector3d& p, double spacing, int reach,
+                 Visit&& visit) {
+  const Eigen::Vector3i centre = cellOf(p, spacing);
+  for (int i = -reach; i <= reach; ++i) {
+    for (int j = -reach; j <= reach; ++j) {
+      for (int l = -reach; l <= reach; ++l) {
+        const auto cell = cells.find(cellKey(centre + Eigen::Vector3i(i, j, l)));
+        if (cell == cells.end()) continue;
+        for (const int k : cell->second) visit(k);
+      }
+    }
+  }
+}
+
 // The feet of the particles at most footDepth deep, binned in cells of one spacing.
 class FootGrid {
  public:
@@ -64,26 +82,12 @@ class FootGrid {
 
   int nearestOfFace(const Eigen::Vector3d& s, const Eigen::Vector3d& n,
                     const WallParticles& particles, double alike, double within) const {
-    const Eigen::Vector3i centre = cellOf(s, spacing_);
-    const int reach = static_cast<int>(std::ceil(within));
     double best = within * within * spacing_ * spacing_;
     int nearest = -1;
-    for (int i = -reach; i <= reach; ++i) {
-      for (int j = -reach; j <= reach; ++j) {
-        for (int l = -reach; l <= reach; ++l) {
-          const auto cell = cells_.find(cellKey(centre + Eigen::Vector3i(i, j, l)));
-          if (cell == cells_.end()) continue;
-          for (const int k : cell->second) {
-            const Eigen::Vector3d& normal = particles.normals[static_cast<std::size_t>(k)];
-            if (std::abs(normal.dot(n)) < alike) continue;
-            const Eigen::Vector3d fromFoot = s - feet_[static_cast<std::size_t>(k)];
-            if (std::abs(fromFoot.dot(n)) > 0.25 * spacing_) continue;
-            const double squared = fromFoot.squaredNorm();
-            if (squared < best) best = squared, nearest = k;
-          }
-        }
-      }
-    }
+    forEachOfFace(s, n, particles, alike, static_cast<int>(std::ceil(within)),
+                  [&](int k, double squared) {
+                    if (squared < best) best = squared, nearest = k;
+                  });
     return nearest;
   }
 
@@ -94,33 +98,33 @@ class FootGrid {
   // when none is that near (a thin part whose lattice points all face the other way).
   Eigen::Vector3d outward(const Eigen::Vector3d& s, const Eigen::Vector3d& n,
                           const WallParticles& particles) const {
-    const Eigen::Vector3i centre = cellOf(s, spacing_);
     double best = 9.0 * spacing_ * spacing_;
-    Eigen::Vector3d side = Eigen::Vector3d::Zero();
-    for (int i = -3; i <= 3; ++i) {
-      for (int j = -3; j <= 3; ++j) {
-        for (int l = -3; l <= 3; ++l) {
-          const auto cell = cells_.find(cellKey(centre + Eigen::Vector3i(i, j, l)));
-          if (cell == cells_.end()) continue;
-          for (const int k : cell->second) {
-            const Eigen::Vector3d& normal = particles.normals[static_cast<std::size_t>(k)];
-            if (std::abs(normal.dot(n)) < sameFace) continue;
-            const Eigen::Vector3d fromFoot = s - feet_[static_cast<std::size_t>(k)];
-            if (std::abs(fromFoot.dot(n)) > 0.25 * spacing_) continue;
-            const double squared = fromFoot.squaredNorm();
-            if (squared < best)
-              best = squared, side = normal.dot(n) > 0.0 ? n : Eigen::Vector3d(-n);
-          }
-        }
-      }
-    }
-    return side;
+    int nearest = -1;
+    forEachOfFace(s, n, particles, sameFace, 3, [&](int k, double squared) {
+      if (squared < best) best = squared, nearest = k;
+    });
+    if (nearest < 0) return Eigen::Vector3d::Zero();
+    return particles.normals[static_cast<std::size_t>(nearest)].dot(n) > 0.0 ? n
+                                                                             : Eigen::Vector3d(-n);
   }
 
  private:
+  // Calls visit(k, |s - foot_k|^2) for the feet within `reach` cells of s on the face of normal
+  // n: normal within acos(alike) of n (either way round), foot within dx/4 of s's plane.
+  template <class Visit>
+  void forEachOfFace(const Eigen::Vector3d& s, const Eigen::Vector3d& n,
+                     const WallParticles& particles, double alike, int reach, Visit&& visit) const {
+    forEachNear(cells_, s, spacing_, reach, [&](int k) {
+      if (std::abs(particles.normals[static_cast<std::size_t>(k)].dot(n)) < alike) return;
+      const Eigen::Vector3d fromFoot = s - feet_[static_cast<std::size_t>(k)];
+      if (std::abs(fromFoot.dot(n)) > 0.25 * spacing_) return;
+      visit(k, fromFoot.squaredNorm());
+    });
+  }
+
   double spacing_;
   std::vector<Eigen::Vector3d> feet_;
-  std::unordered_map<std::int64_t, std::vector<int>> cells_;
+  Cells cells_;
 };
 
 // All particles, binned in cells of one spacing, for the second feet.
@@ -139,40 +143,30 @@ class ParticleGrid {
                   const Eigen::Vector3d& outward, const TriangleDistanceTree& surface,
                   double spacing, const std::vector<Eigen::Vector3d>& secondNormal,
                   const std::vector<double>& secondDepth, const WallParticles& particles) const {
-    const Eigen::Vector3i centre = cellOf(s, spacing_);
     double best = servedReach * servedReach * spacing * spacing;
     int nearest = -1;
-    for (int i = -2; i <= 2; ++i) {
-      for (int j = -2; j <= 2; ++j) {
-        for (int l = -2; l <= 2; ++l) {
-          const auto cell = cells_.find(cellKey(centre + Eigen::Vector3i(i, j, l)));
-          if (cell == cells_.end()) continue;
-          for (const int k : cell->second) {
-            const auto kk = static_cast<std::size_t>(k);
-            const double squared = (s - particles.positions[kk]).squaredNorm();
-            if (squared >= best) continue;
-            const Eigen::Vector3d toSample = s - particles.positions[kk];
-            if (!outward.isZero() && toSample.dot(outward) <= 0.0) continue;
-            if (!secondNormal[kk].isZero()) {
-              if (std::abs(secondNormal[kk].dot(n)) < sameFace) continue;
-              const Eigen::Vector3d foot =
-                  particles.positions[kk] + secondDepth[kk] * secondNormal[kk];
-              if (std::abs((s - foot).dot(secondNormal[kk])) > 0.25 * spacing) continue;
-            } else {
-              const Eigen::Vector3d foot = particles.positions[kk] + toSample.dot(n) * n;
-              if (surface.closest(foot, 0.1 * spacing).triangle < 0) continue;
-            }
-            best = squared, nearest = k;
-          }
-        }
+    forEachNear(cells_, s, spacing_, static_cast<int>(std::ceil(servedReach)), [&](int k) {
+      const auto kk = static_cast<std::size_t>(k);
+      const Eigen::Vector3d toSample = s - particles.positions[kk];
+      const double squared = toSample.squaredNorm();
+      if (squared >= best) return;
+      if (!outward.isZero() && toSample.dot(outward) <= 0.0) return;
+      if (!secondNormal[kk].isZero()) {
+        if (std::abs(secondNormal[kk].dot(n)) < sameFace) return;
+        const Eigen::Vector3d foot = particles.positions[kk] + secondDepth[kk] * secondNormal[kk];
+        if (std::abs((s - foot).dot(secondNormal[kk])) > 0.25 * spacing) return;
+      } else {
+        const Eigen::Vector3d foot = particles.positions[kk] + toSample.dot(n) * n;
+        if (surface.closest(foot, 0.1 * spacing).triangle < 0) return;
       }
-    }
+      best = squared, nearest = k;
+    });
     return nearest;
   }
 
  private:
   double spacing_;
-  std::unordered_map<std::int64_t, std::vector<int>> cells_;
+  Cells cells_;
 };
 
 // Per triangle, its edges that no other triangle shares (the rim of an open shell), as their end
