@@ -11,13 +11,7 @@
 here=$(cd "$(dirname "$0")" && pwd)
 python=python3
 python3 -c 'import vtk' 2>/dev/null || python=/usr/bin/python3
-tutorial="$here/../../tutorials/crossDitchPress"
-mkdir -p "$scratch/press"
-cp -r "$tutorial/system" "$tutorial/constant" "$tutorial/setResolution" "$scratch/press/"
-cd "$scratch/press"
-./setResolution 4.5 > /dev/null || fail "setResolution 4.5"
-particleizeMold > log.particleizeMold 2>&1 || fail "particleizeMold: $(tail -5 log.particleizeMold)"
-setCastFields > log.setCastFields 2>&1 || fail "setCastFields: $(tail -5 log.setCastFields)"
+preprocessTutorialCase crossDitchPress "$scratch/press" 4.5
 setEntry system/controlDict endTime 0.3
 sphCastFoam > log.sphCastFoam 2>&1 || fail "pour and press: $(tail -5 log.sphCastFoam)"
 grep "^Time spent" log.sphCastFoam | tail -1
