@@ -153,19 +153,17 @@ void RigidBody::placeParticles() {
   const auto& restNormal = cloud_.vectorField(field::restNormal);
   auto& x = cloud_.positions();
   auto& normal = cloud_.vectorField(field::normal);
+  // the second feet of particleizeMold (geometry/WallSurfacePatches.h), where it gave any
+  const bool seconds = cloud_.hasVectorField(field::restSecondNormal);
+  const Vector* restSecond = seconds ? cloud_.vectorField(field::restSecondNormal).data() : nullptr;
+  Vector* second = seconds ? cloud_.vectorField(field::secondNormal).data() : nullptr;
   const bool turned = !turn.isZero(0);
 #pragma omp parallel for schedule(static)
   for (std::size_t k = 0; k < x.size(); ++k) {
     x[k] = turned ? Vector(rest[k] + travel + turn * (rest[k] - startCentre_))
                   : Vector(rest[k] + travel);
-    if (turned) normal[k] = rotation * restNormal[k];
-  }
-  if (!turned) std::copy(restNormal.begin(), restNormal.end(), normal.begin());
-  if (cloud_.hasVectorField(field::restSecondNormal)) {
-    const auto& restSecond = cloud_.vectorField(field::restSecondNormal);
-    auto& second = cloud_.vectorField(field::secondNormal);
-    for (std::size_t k = 0; k < second.size(); ++k)
-      second[k] = turned ? Vector(rotation * restSecond[k]) : restSecond[k];
+    normal[k] = turned ? Vector(rotation * restNormal[k]) : restNormal[k];
+    if (seconds) second[k] = turned ? Vector(rotation * restSecond[k]) : restSecond[k];
   }
 }
 

@@ -165,25 +165,20 @@ ConvexPartner convexPartner(const Vector& x, const Vector& footK, const Vector& 
 // meet (a tank's floor and side), particleizeMold fills the corner behind the junction with
 // particles whose feet lie on the edge (normals between the faces'): a particle pressed into it
 // is within dx/2 of their feet, and their planes keep it.
-bool pastAnOpenEdge(const Vector& x, std::size_t i, const FootPlane& plane, const Vector& normalK,
-                    const std::vector<WallSurfaceView>& walls, const PeriodicBox& periodic,
-                    Real spacing) {
+bool pastAnOpenEdge(const FootPlane& plane, const Vector& normalK,
+                    const std::vector<SeenFoot>& feet, Real spacing) {
   const Real half = Real(0.5) * spacing;
   if (plane.alongSquared <= half * half) return false;
   const Real along = std::sqrt(plane.alongSquared);
   const Vector direction = (plane.fromFoot - plane.distance * normalK) / along;
   const Real sameFace = Real(0.9);  // cos 25 degrees
   const Real reachSquared = Real(2.25) * spacing * spacing;
-  for (const WallSurfaceView& other : walls) {
-    for (const std::uint32_t m : other.neighboursOfFluid->of(i)) {
-      if (other.normal[m].dot(normalK) < sameFace) continue;
-      const FootPlane planeM =
-          footPlane(x, other, m, Foot{other.normal[m], other.depth[m], 0, false, false}, periodic);
-      const Vector between = plane.fromFoot - planeM.fromFoot;  // s_m - s_k
-      if (std::abs(between.dot(normalK)) > Real(0.25) * spacing) continue;
-      if (between.squaredNorm() > reachSquared) continue;
-      if (between.dot(direction) >= along - Real(1e-3) * spacing) return false;
-    }
+  for (const SeenFoot& seen : feet) {
+    if (seen.foot.normal.dot(normalK) < sameFace) continue;
+    const Vector between = plane.fromFoot - seen.plane.fromFoot;  // s_m - s_k
+    if (std::abs(between.dot(normalK)) > Real(0.25) * spacing) continue;
+    if (between.squaredNorm() > reachSquared) continue;
+    if (between.dot(direction) >= along - Real(1e-3) * spacing) return false;
   }
   return true;
 }
@@ -215,10 +210,8 @@ WedgeDistance distanceToWedge(Real dK, const Vector& nK, Real dM, const Vector& 
 // The smallest plane distance over the wall neighbours' feet whose patch lies under x_i,
 // leaving out the far face of a thin body and reading each plane nearer x_i than `near` (none
 // when it is negative) with its sharp convex partner (convexPartner) as the wedge behind both.
-WallSurfaceDistance nearestPlane(const Vector& x, std::size_t i,
-                                 const std::vector<WallSurfaceView>& walls,
-                                 const std::vector<SeenFoot>& feet, const PeriodicBox& periodic,
-                                 Real spacing, Real near) {
+WallSurfaceDistance nearestPlane(const Vector& x, const std::vector<SeenFoot>& feet, Real spacing,
+                                 Real near) {
   WallSurfaceDistance surface;
   for (const SeenFoot& seen : feet) {
     const FootPlane& plane = seen.plane;
@@ -237,7 +230,7 @@ WallSurfaceDistance nearestPlane(const Vector& x, std::size_t i,
         reading = {true, distance, normal, throughM ? partner.wall : seen.wall,
                    throughM ? partner.particle : seen.particle};
       } else if (plane.distance < 0 && foot.nearARim &&
-                 pastAnOpenEdge(x, i, plane, foot.normal, walls, periodic, spacing)) {
+                 pastAnOpenEdge(plane, foot.normal, feet, spacing)) {
         continue;  // over a rim, not in the body
       }
     }
@@ -255,7 +248,7 @@ WallSurfaceDistance wallSurfaceDistance(const Vector& x, std::size_t i,
   constexpr Real nowhere = -std::numeric_limits<Real>::infinity();
   thread_local std::vector<SeenFoot> feet;  // the clearance pass asks for every particle
   gatherFeet(x, i, walls, periodic, spacing, feet);
-  const WallSurfaceDistance surface = nearestPlane(x, i, walls, feet, periodic, spacing, nowhere);
+  const WallSurfaceDistance surface = nearestPlane(x, feet, spacing, nowhere);
   if (!surface.found || surface.distance >= within) return surface;
   // i is read behind a plane or near it: either that plane is the other face's at a sharp convex
   // edge whose patch reaches past the edge, or i is inside the body there, or beside the edge
@@ -269,7 +262,7 @@ WallSurfaceDistance wallSurfaceDistance(const Vector& x, std::size_t i,
   // pocket floor, was read 0.6 dx behind the floor's plane and the run stopped (dx = 3 mm).
   // A plane read at `within` or more is left as it is: the wedge never lowers a reading, so the
   // result is below `within` exactly when the refined one is.
-  return nearestPlane(x, i, walls, feet, periodic, spacing, within);
+  return nearestPlane(x, feet, spacing, within);
 }
 
 }  // namespace sphcast
