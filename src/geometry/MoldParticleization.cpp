@@ -30,13 +30,44 @@ struct ShellJob {
 struct VolumeJob {
   TriangleMesh boundary;
   int patch;
+  VolumeGrading grading;
 };
 
-std::vector<PatchRequest> readPatches(const Dictionary& patches) {
+// A volume patch's `grading { maxSpacing ...; fineLayers ...; }` (MoldParticleization.h).
+VolumeGrading readGrading(const Dictionary& grading, const std::string& mode, int dimension,
+                          double spacing, int wallLayers) {
+  grading.checkKeys({"maxSpacing", "fineLayers"});
+  if (mode != "volume" || dimension != 3) {
+    throw DictionaryError(grading.location(),
+                          "'grading' is for the volume patches of a 3D mold (mode volume), in " +
+                              grading.name());
+  }
+  VolumeGrading result;
+  result.maxSpacing = grading.get<double>("maxSpacing", length);
+  if (!(result.maxSpacing >= 2.0 * spacing * (1.0 - 1e-9))) {
+    throw DictionaryError(grading.location("maxSpacing"),
+                          "'maxSpacing' must be at least twice the spacing (" +
+                              std::to_string(2.0 * spacing) + " m) in " + grading.name());
+  }
+  const int fineLayers = grading.getOrDefault<int>("fineLayers", 2 * wallLayers);
+  if (fineLayers < wallLayers) {
+    throw DictionaryError(grading.location("fineLayers"),
+                          "'fineLayers' must be at least wallLayers (" +
+                              std::to_string(wallLayers) +
+                              "): the flow's walls need that many layers at dx, in " +
+                              grading.name());
+  }
+  result.fineDepth = fineLayers * spacing;
+  result.layersPerLevel = wallLayers;
+  return result;
+}
+
+std::vector<PatchRequest> readPatches(const Dictionary& patches, int dimension, double spacing,
+                                      int wallLayers) {
   std::vector<PatchRequest> requests;
   for (const std::string& name : patches.keys()) {
     const Dictionary& entry = patches.subDict(name);
-    entry.checkKeys({"cloud", "type", "mode"});
+    entry.checkKeys({"cloud", "type", "mode", "grading"});
     PatchRequest request;
     request.where = patches.location(name);
     request.patch.name = name;
@@ -44,6 +75,10 @@ std::vector<PatchRequest> readPatches(const Dictionary& patches) {
     request.patch.cloud = entry.get<std::string>("cloud");
     request.patch.type = entry.getChoice("type", {"fixedWall", "rigidBody", "fixedTemperature"});
     request.patch.mode = entry.getChoiceOrDefault("mode", {"shell", "volume"}, "shell");
+    if (entry.found("grading")) {
+      request.patch.grading = readGrading(entry.subDict("grading"), request.patch.mode, dimension,
+                                          spacing, wallLayers);
+    }
     requests.push_back(std::move(request));
   }
   if (requests.empty()) {
@@ -105,6 +140,10 @@ ParticleCloud makeCloud(const std::string& name, const WallParticles& particles,
   const bool withPatchRadii = particles.patchRadii.size() == particles.size();
   std::vector<Real>* patchRadius =
       withPatchRadii ? &cloud.addScalarField(field::wallPatchRadius) : nullptr;
+  const bool graded = particles.spacings.size() == particles.size() &&
+                      std::any_of(members.begin(), members.end(),
+                                  [&](std::size_t i) { return particles.spacings[i] > spacing; });
+  std::vector<Real>* localSpacing = graded ? &cloud.addScalarField(field::localSpacing) : nullptr;
   const bool withRims = particles.patchesAtRim.size() == particles.size();
   std::vector<Real>* atRim = withRims ? &cloud.addScalarField(field::wallPatchAtRim) : nullptr;
   const bool withSecondFeet = particles.secondPatchRadii.size() == particles.size();
@@ -124,6 +163,7 @@ ParticleCloud makeCloud(const std::string& name, const WallParticles& particles,
     id[m] = static_cast<std::int64_t>(m);
     if (patchRadius != nullptr) (*patchRadius)[m] = static_cast<Real>(particles.patchRadii[i]);
     if (withRims) (*atRim)[m] = static_cast<Real>(particles.patchesAtRim[i]);
+    if (graded) (*localSpacing)[m] = static_cast<Real>(std::max(particles.spacings[i], spacing));
     if (withSecondFeet) {
       (*secondNormal)[m] = particles.secondNormals[i].cast<Real>();
       (*secondDepth)[m] = static_cast<Real>(particles.secondWallDistances[i]);
@@ -186,7 +226,8 @@ WallParticles particleizeSolidMold(const std::vector<GeometryFilePatches>& files
           throw DictionaryError(requests[p].where, error.what());
         }
       } else {
-        VolumeJob job{geometry.boundaryOfVolumes(geometry.volumesOf(*group)), patch.id};
+        VolumeJob job{geometry.boundaryOfVolumes(geometry.volumesOf(*group)), patch.id,
+                      patch.grading};
         const std::size_t freeEdges = job.boundary.freeEdgeCount();
         if (job.boundary.size() == 0 || freeEdges > 0) {
           throw DictionaryError(requests[p].where,
@@ -234,6 +275,17 @@ WallParticles particleizeSolidMold(const std::vector<GeometryFilePatches>& files
            << " m^3 of the geometry's " << volume.boundary.enclosedVolume()
            << " m^3; particle volume set to " << volumePerParticle << " m^3\n";
     std::fill(filled.volumes.begin(), filled.volumes.end(), volumePerParticle);
+    if (gradingLevels(volume.grading, spacing) > 0) {
+      const std::size_t uniform = filled.size();
+      filled = gradeVolumeParticles(filled, filled.wallDistances, volume.boundary, spacing,
+                                    volumePerParticle, volume.grading);
+      info() << "    graded: " << filled.size() << " particles for the " << uniform
+             << " at dx (" << std::setprecision(3)
+             << static_cast<double>(uniform) / static_cast<double>(filled.size())
+             << " times fewer), dx within " << volume.grading.fineDepth
+             << std::setprecision(6) << " m of the surface, coarser inward up to "
+             << volume.grading.maxSpacing << " m\n";
+    }
     addWallSurfacePatches(filled, volume.boundary, spacing);
     logPatchRadii(filled, spacing);
     all.append(filled);
@@ -275,7 +327,8 @@ ParticleizedMold particleizeMold(const CaseFolder& caseFolder) {
   const double spacing = mold.spacing;
   mold.wallLayers = readWallLayers(dict, spacing);
   const double maxParticles = dict.getOrDefault<double>("maxParticles", defaultMaxParticles);
-  std::vector<PatchRequest> requests = readPatches(dict.subDict("patches"));
+  std::vector<PatchRequest> requests =
+      readPatches(dict.subDict("patches"), dimension, spacing, mold.wallLayers);
   std::vector<GeometryFilePatches> files;
   for (const std::string& file : dict.get<std::vector<std::string>>("geometry")) {
     const auto path = caseFolder.constant() / "geometry" / file;
@@ -383,7 +436,12 @@ std::string patchesDictionaryText(const ParticleizedMold& mold) {
   for (const auto& patch : mold.patches) {
     text << patch.name << "\n{\n    id          " << patch.id << ";\n    cloud       "
          << patch.cloud << ";\n    type        " << patch.type << ";\n    mode        "
-         << patch.mode << ";\n    particles   " << patch.particleCount << ";\n}\n\n";
+         << patch.mode << ";\n    particles   " << patch.particleCount << ";\n";
+    if (patch.grading.maxSpacing > 0.0) {
+      text << "    // graded: dx within " << patch.grading.fineDepth
+           << " m of the surface, coarser inward up to " << patch.grading.maxSpacing << " m\n";
+    }
+    text << "}\n\n";
   }
   return text.str();
 }

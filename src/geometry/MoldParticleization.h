@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "core/CaseFolder.h"
+#include "geometry/GradedVolume.h"
 #include "geometry/WallParticles.h"
 #include "particles/ParticleCloud.h"
 
@@ -22,6 +23,8 @@ namespace sphcast {
 //   {
 //       moldWall   { cloud mold; type fixedTemperature; mode shell; }  // a surface group
 //       upperMold  { cloud upperMold; type rigidBody; mode volume; }    // a volume group
+//       die        { cloud die; type fixedWall; mode volume;
+//                    grading { maxSpacing 0.012; fineLayers 6; } }           // optional, below
 //   }
 //
 // type: fixedWall | rigidBody | fixedTemperature (how the solver treats the particles);
@@ -32,6 +35,12 @@ namespace sphcast {
 // the Physical Surface named by `cavity name;`; a volume patch is a Physical Surface filled on
 // the square lattice. A .geo's curves are followed by their parametrisation, a .msh's along
 // their line elements (mesh curved ones finely, dx/8 or less); particle volumes are areas (m^2).
+// grading (3D volume patches; GradedVolume.h): the particles within fineLayers dx of the
+// volume's surface keep the spacing dx (default fineLayers 2 wallLayers, at least wallLayers:
+// the flow's walls, the contact and the air see those only), and deeper in the material the
+// spacing doubles every wallLayers of its own spacings, up to maxSpacing (at least 2 dx). The
+// particles carry their spacing (field localSpacing), by which the solver's conduction sizes
+// each pair's kernel (thermal/GradedConduction.h).
 // wallLayers = ceil(h / dx): the first layer sits dx/2 behind the wall and layer k at
 // (k + 1/2) dx, so the layers reach wallLayers dx >= h behind it, and a fluid particle touching
 // the wall has a complete kernel.
@@ -41,6 +50,7 @@ struct MoldPatch {
   std::string cloud;
   std::string type;
   std::string mode;
+  VolumeGrading grading;  // maxSpacing 0: every particle at dx
   std::size_t particleCount = 0;
   SpacingStatistics spacing;  // nearest neighbour among all mold particles
 };

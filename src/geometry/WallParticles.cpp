@@ -356,6 +356,7 @@ void WallParticles::append(const WallParticles& more) {
   join(secondWallDistances, more.secondWallDistances, 0.0);
   join(secondPatchRadii, more.secondPatchRadii, 0.0);
   join(patchesAtRim, more.patchesAtRim, 0.0);
+  join(spacings, more.spacings, 0.0);
 }
 
 WallParticles fillVolumeParticles(const TriangleMesh& boundary, double spacing, int patch) {

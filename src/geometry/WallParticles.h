@@ -30,6 +30,9 @@ struct WallParticles {
   // 1 for a particle whose foot stands for a piece of an open rim (a shell's free edge), else 0;
   // empty when there is none.
   std::vector<double> patchesAtRim;
+  // Each particle's own spacing in a graded volume (GradedVolume.h), 0 for the mold's spacing dx;
+  // empty when every particle has dx.
+  std::vector<double> spacings;
 
   std::size_t size() const { return positions.size(); }
   // Adds the particles of `more` after these.

@@ -24,6 +24,8 @@ inline constexpr const char* densityRate = "densityRate";    // drho/dt, kg/m^3/
 inline constexpr const char* normal = "normal";              // unit normal of the wall surface
 inline constexpr const char* wallDistance = "wallDistance";  // m, behind the wall surface
 inline constexpr const char* patch = "patch";                // the patch's number (patches file)
+// m, a graded mold's particle's own spacing (geometry/GradedVolume.h); absent: the case's dx
+inline constexpr const char* localSpacing = "localSpacing";
 inline constexpr const char* wallPatchRadius = "wallPatchRadius";  // m, surface the foot stands for
 // a second foot, on a face no first foot stands for near it (geometry/WallSurfacePatches.h)
 inline constexpr const char* secondNormal = "secondNormal";

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "boundaries/ThermalWall.h"
+#include "core/Error.h"
 #include "particles/FieldNames.h"
 #include "particles/WendlandKernel.h"
 
@@ -41,7 +42,7 @@ HeatConduction::HeatConduction(const HeatTransferContext& context,
   for (std::size_t a = 0; a < count; ++a) {
     alpha = std::max(alpha, largestDiffusivity(*context_.clouds[a].material));
     for (std::size_t b = 0; b < count; ++b) {
-      if (conducts(a, b)) {
+      if (conducts(a, b) && !(a == b && graded(a))) {
         context_.neighbourhood->requestPairs(*context_.clouds[a].cloud, *context_.clouds[b].cloud);
       }
     }
@@ -59,6 +60,11 @@ bool HeatConduction::conducts(std::size_t a, std::size_t b) const {
   return !contactPairs_.contains({A.material->name, B.material->name});
 }
 
+// A mold particleized at graded spacing: its pairs with itself are GradedConduction's.
+bool HeatConduction::graded(std::size_t a) const {
+  return context_.clouds[a].cloud->hasScalarField(field::localSpacing);
+}
+
 std::string HeatConduction::description() const {
   std::ostringstream line;
   line << "conduction (eq. 13, Cleary & Monaghan form; within a material through phi = int "
@@ -68,8 +74,32 @@ std::string HeatConduction::description() const {
   return line.str();
 }
 
+// The graded molds' pairs (GradedConduction), made once; their lines for the log.
+std::string HeatConduction::buildGradedPairs() {
+  std::ostringstream line;
+  graded_.clear();
+  graded_.resize(context_.clouds.size());
+  for (std::size_t a = 0; a < context_.clouds.size(); ++a) {
+    if (!graded(a) || !conducts(a, a)) continue;
+    const ParticleCloud& cloud = *context_.clouds[a].cloud;
+    if (context_.comm.size() > 1) {
+      throw Error("cloud '" + cloud.name() +
+                  "' is a mold particleized at graded spacing (field localSpacing): a decomposed "
+                  "run (-parallel) does not conduct through one yet; run it serial (OpenMP "
+                  "threads), or particleize the mold without grading");
+    }
+    graded_[a] = std::make_unique<GradedConduction>(cloud, context_.dimension,
+                                                    context_.supportRadius, context_.spacing,
+                                                    context_.neighbourhood->periodicBox());
+    if (!line.str().empty()) line << "; ";
+    line << graded_[a]->description();
+  }
+  return line.str();
+}
+
 std::string HeatConduction::start() {
   std::ostringstream line;
+  line << buildGradedPairs();
   for (std::size_t a = 0; a < context_.clouds.size(); ++a) {
     const HeatCloud& heat = context_.clouds[a];
     const ParticleCloud& cloud = *heat.cloud;
@@ -156,6 +186,7 @@ std::size_t HeatConduction::placeHeldSurface(std::size_t a) {
 }
 
 void HeatConduction::addEnergyRates() {
+  if (graded_.size() != context_.clouds.size()) buildGradedPairs();
   if (context_.dimension == 2) {
     addRatesIn<2>();
   } else {
@@ -224,7 +255,7 @@ void HeatConduction::addRatesIn() {
       };
       std::vector<List> lists;
       for (std::size_t b = 0; b < context_.clouds.size(); ++b) {
-        if (!conducts(a, b)) continue;
+        if (!conducts(a, b) || (a == b && graded_[a])) continue;
         lists.push_back({&context_.neighbourhood->pairs(target, *context_.clouds[b].cloud),
                          &sources[b], b != a && (sources[a].normal || sources[b].normal),
                          context_.clouds[a].material == context_.clouds[b].material});
@@ -298,6 +329,12 @@ void HeatConduction::addRatesIn() {
     }
   };
   withSeparation(periodic, passWith);
+  for (std::size_t a = 0; a < context_.clouds.size(); ++a) {
+    if (!graded_[a]) continue;
+    ParticleCloud& cloud = *context_.clouds[a].cloud;
+    graded_[a]->addEnergyRates(kirchhoff_[a].data(), cloud.scalarField(field::mass).data(),
+                               cloud.scalarField(field::energyRate).data());
+  }
 }
 
 }  // namespace sphcast

@@ -1,10 +1,12 @@
 #pragma once
 
+#include <memory>
 #include <set>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "thermal/GradedConduction.h"
 #include "thermal/HeatTransferModel.h"
 
 namespace sphcast {
@@ -52,6 +54,10 @@ namespace sphcast {
 // the harmonic mean would put the jump of kappa midway between the particles (the same where
 // d_f = d_k). Measured, aluminium on iron: the contact temperature 0.26 % off against 0.99 %.
 //
+// Within a mold particleized at graded spacing (the field localSpacing), the pairs and their
+// kernels are GradedConduction's: each pair's own support, corrected so that a linear profile
+// is exact across a change of spacing.
+//
 // Between two clouds whose materials have a contact coefficient (moldContact), this model
 // leaves the exchange to MoldContactTransfer: the coefficient is the interface's conductance.
 //
@@ -82,11 +88,14 @@ class HeatConduction : public HeatTransferModel {
   template <int Dim>
   std::size_t placeHeldSurface(std::size_t cloud);
   bool conducts(std::size_t a, std::size_t b) const;
+  bool graded(std::size_t a) const;
+  std::string buildGradedPairs();
 
   const HeatTransferContext& context_;
   std::set<std::pair<std::string, std::string>> contactPairs_;
   std::vector<std::vector<Real>> volumes_;  // m / rho of each cloud, refreshed every pass
   std::vector<std::vector<Real>> kirchhoff_;  // phi(T) of each cloud, refreshed every pass
+  std::vector<std::unique_ptr<GradedConduction>> graded_;  // per cloud: null unless graded
   double stableDeltaT_;
 };
 
