@@ -49,7 +49,7 @@ WallParticles gradeVolumeParticles(const WallParticles& fine, const std::vector<
         shallowest = std::min(shallowest, depth[order[last]]);
         ++last;
       }
-      if (last - first == complete && shallowest >= start) {
+      if (2 * (last - first) >= complete && shallowest >= start) {
         for (std::size_t q = first; q < last; ++q) level[order[q]] = l;
       }
       first = last;

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <string>
 #include <vector>
 
 #include "geometry/TriangleMesh.h"
@@ -17,6 +18,8 @@ struct VolumeGrading {
   double maxSpacing = 0.0;  // m; the coarsest spacing (2^L dx, L levels); below 2 dx: no grading
   double fineDepth = 0.0;   // m; particles nearer a fine surface than this keep dx
   int layersPerLevel = 3;
+  // The Physical Surfaces kept fine (where the metal meets the mold); empty: every surface.
+  std::vector<std::string> fineSurfaces;
 };
 
 // The particles of a graded volume made from `fine`, every lattice point of the volume at dx

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <iomanip>
+#include <limits>
 #include <sstream>
 
 #include "core/Error.h"
@@ -31,12 +32,13 @@ struct VolumeJob {
   TriangleMesh boundary;
   int patch;
   VolumeGrading grading;
+  TriangleMesh fineSurfaces;  // the grading's fineSurfaces; empty: the boundary
 };
 
 // A volume patch's `grading { maxSpacing ...; fineLayers ...; }` (MoldParticleization.h).
 VolumeGrading readGrading(const Dictionary& grading, const std::string& mode, int dimension,
                           double spacing, int wallLayers) {
-  grading.checkKeys({"maxSpacing", "fineLayers"});
+  grading.checkKeys({"maxSpacing", "fineLayers", "layersPerLevel", "fineSurfaces"});
   if (mode != "volume" || dimension != 3) {
     throw DictionaryError(grading.location(),
                           "'grading' is for the volume patches of a 3D mold (mode volume), in " +
@@ -58,7 +60,19 @@ VolumeGrading readGrading(const Dictionary& grading, const std::string& mode, in
                               grading.name());
   }
   result.fineDepth = fineLayers * spacing;
-  result.layersPerLevel = wallLayers;
+  result.layersPerLevel = grading.getOrDefault<int>("layersPerLevel", wallLayers);
+  if (result.layersPerLevel < 2) {
+    throw DictionaryError(grading.location("layersPerLevel"),
+                          "'layersPerLevel' must be at least 2 in " + grading.name());
+  }
+  if (grading.found("fineSurfaces")) {
+    result.fineSurfaces = grading.get<std::vector<std::string>>("fineSurfaces");
+    if (result.fineSurfaces.empty()) {
+      throw DictionaryError(grading.location("fineSurfaces"),
+                            "'fineSurfaces' names no surface in " + grading.name() +
+                                " (leave it out to keep every surface fine)");
+    }
+  }
   return result;
 }
 
@@ -236,6 +250,17 @@ WallParticles particleizeSolidMold(const std::vector<GeometryFilePatches>& files
                                     "' is not a closed volume: " + std::to_string(freeEdges) +
                                     " edges of its boundary mesh belong to one triangle only");
         }
+        for (const std::string& name : patch.grading.fineSurfaces) {
+          const PhysicalGroup* surface = geometry.findGroup(name);
+          if (surface == nullptr || surface->dimension != 2) {
+            throw DictionaryError(
+                requests[p].where,
+                "patch '" + patch.name + "': grading's fineSurfaces names '" + name +
+                    "', which is not a Physical Surface of '" + path.string() +
+                    "'; the groups present are (" + groupNames(geometry.groups()) + " )");
+          }
+          job.fineSurfaces.append(geometry.surfacesOf({{surface, patch.id}}));
+        }
         volumes.push_back(std::move(job));
       }
     }
@@ -277,13 +302,23 @@ WallParticles particleizeSolidMold(const std::vector<GeometryFilePatches>& files
     std::fill(filled.volumes.begin(), filled.volumes.end(), volumePerParticle);
     if (gradingLevels(volume.grading, spacing) > 0) {
       const std::size_t uniform = filled.size();
-      filled = gradeVolumeParticles(filled, filled.wallDistances, volume.boundary, spacing,
-                                    volumePerParticle, volume.grading);
+      std::vector<double> depth = filled.wallDistances;
+      if (volume.fineSurfaces.size() > 0) {  // the distance to the surfaces kept fine
+        const TriangleDistanceTree fine(volume.fineSurfaces);
+#pragma omp parallel for schedule(dynamic, 4096)
+        for (std::ptrdiff_t i = 0; i < static_cast<std::ptrdiff_t>(depth.size()); ++i) {
+          const auto p = static_cast<std::size_t>(i);
+          depth[p] = fine.closest(filled.positions[p], std::numeric_limits<double>::max()).distance;
+        }
+      }
+      filled = gradeVolumeParticles(filled, depth, volume.boundary, spacing, volumePerParticle,
+                                    volume.grading);
       info() << "    graded: " << filled.size() << " particles for the " << uniform
              << " at dx (" << std::setprecision(3)
              << static_cast<double>(uniform) / static_cast<double>(filled.size())
-             << " times fewer), dx within " << volume.grading.fineDepth
-             << std::setprecision(6) << " m of the surface, coarser inward up to "
+             << " times fewer), dx within " << volume.grading.fineDepth << std::setprecision(6)
+             << " m of " << (volume.fineSurfaces.size() > 0 ? "its fineSurfaces" : "its surface")
+             << ", coarser inward up to "
              << volume.grading.maxSpacing << " m\n";
     }
     addWallSurfacePatches(filled, volume.boundary, spacing);
@@ -428,6 +463,14 @@ ParticleizedMold particleizeMold(const CaseFolder& caseFolder) {
   return mold;
 }
 
+namespace {
+std::string groupNamesOf(const std::vector<std::string>& names) {
+  std::string joined;
+  for (const auto& name : names) joined += ' ' + name;
+  return joined;
+}
+}  // namespace
+
 std::string patchesDictionaryText(const ParticleizedMold& mold) {
   std::ostringstream text;
   text << foamFileHeader("constant/particles", "patches")
@@ -438,8 +481,12 @@ std::string patchesDictionaryText(const ParticleizedMold& mold) {
          << patch.cloud << ";\n    type        " << patch.type << ";\n    mode        "
          << patch.mode << ";\n    particles   " << patch.particleCount << ";\n";
     if (patch.grading.maxSpacing > 0.0) {
-      text << "    // graded: dx within " << patch.grading.fineDepth
-           << " m of the surface, coarser inward up to " << patch.grading.maxSpacing << " m\n";
+      text << "    // graded: dx within " << patch.grading.fineDepth << " m of "
+           << (patch.grading.fineSurfaces.empty() ? std::string("the surface")
+                                                  : "the fineSurfaces (" +
+                                                        groupNamesOf(patch.grading.fineSurfaces) +
+                                                        " )")
+           << ", coarser inward up to " << patch.grading.maxSpacing << " m\n";
     }
     text << "}\n\n";
   }

@@ -23,8 +23,8 @@ namespace sphcast {
 //   {
 //       moldWall   { cloud mold; type fixedTemperature; mode shell; }  // a surface group
 //       upperMold  { cloud upperMold; type rigidBody; mode volume; }    // a volume group
-//       die        { cloud die; type fixedWall; mode volume;
-//                    grading { maxSpacing 0.012; fineLayers 6; } }           // optional, below
+//       die        { cloud die; type fixedWall; mode volume;                 // optional, below:
+//                    grading { maxSpacing 0.012; fineLayers 6; fineSurfaces (dieCavity); } }
 //   }
 //
 // type: fixedWall | rigidBody | fixedTemperature (how the solver treats the particles);
@@ -37,10 +37,13 @@ namespace sphcast {
 // their line elements (mesh curved ones finely, dx/8 or less); particle volumes are areas (m^2).
 // grading (3D volume patches; GradedVolume.h): the particles within fineLayers dx of the
 // volume's surface keep the spacing dx (default fineLayers 2 wallLayers, at least wallLayers:
-// the flow's walls, the contact and the air see those only), and deeper in the material the
-// spacing doubles every wallLayers of its own spacings, up to maxSpacing (at least 2 dx). The
-// particles carry their spacing (field localSpacing), by which the solver's conduction sizes
-// each pair's kernel (thermal/GradedConduction.h).
+// the flow's walls and the contact see those only, and with 2 wallLayers a face's exposed area
+// is the uniform mold's), and deeper in the material the spacing doubles every wallLayers of its
+// own spacings, up to maxSpacing (at least 2 dx). fineSurfaces (optional: Physical Surfaces of
+// the same file) keeps dx near those surfaces only, the ones the metal meets; the others, faces
+// to the air, may then be coarse (their area: sph/ExposedArea.h). The particles carry their
+// spacing (field localSpacing), by which the solver's conduction sizes each pair's kernel
+// (thermal/GradedConduction.h).
 // wallLayers = ceil(h / dx): the first layer sits dx/2 behind the wall and layer k at
 // (k + 1/2) dx, so the layers reach wallLayers dx >= h behind it, and a fluid particle touching
 // the wall has a complete kernel.

@@ -133,6 +133,7 @@ ExposedArea::ExposedArea(ExposedAreaForm form, int dimension, Real supportRadius
       exposed_(std::move(exposed)),
       covering_(std::move(covering)),
       lattices_(std::move(lattices)),
+      spacing_(spacing),
       neighbourhood_(neighbourhood) {
   if (form_ == ExposedAreaForm::gradient) {
     // the gate's ramp, from the flat lattice's deepest layer with area: 0.920 .. 0.970 at
@@ -147,6 +148,33 @@ ExposedArea::ExposedArea(ExposedAreaForm form, int dimension, Real supportRadius
     cloud->addScalarField(field::exposedArea);
     cloud->addScalarField(field::granularity);
     for (const ParticleCloud* other : covering_) neighbourhood.requestPairs(*cloud, *other);
+  }
+}
+
+// The pairs of each graded exposed cloud's coarser particles within it, found once.
+void ExposedArea::findCoarsePairs() {
+  if (coarsePairs_.size() == exposed_.size()) return;
+  coarsePairs_.resize(exposed_.size());
+  for (std::size_t e = 0; e < exposed_.size(); ++e) {
+    const ParticleCloud& cloud = *exposed_[e];
+    if (!cloud.hasScalarField(field::localSpacing)) continue;
+    if (std::find(covering_.begin(), covering_.end(), &cloud) == covering_.end()) continue;
+    const auto& localSpacing = cloud.scalarField(field::localSpacing);
+    std::vector<std::uint8_t> coarse(cloud.size(), 0);
+    for (std::size_t i = 0; i < cloud.size(); ++i) {
+      coarse[i] = localSpacing[i] > Real(1.001) * spacing_ ? 1 : 0;
+    }
+    const auto& placed = cloud.hasVectorField(field::restPosition)
+                             ? cloud.vectorField(field::restPosition)
+                             : cloud.positions();
+    const Real hOverDx = supportRadius_ / spacing_;
+    const PeriodicBox periodic = neighbourhood_.periodicBox();
+    // and the particles at dx within reach of a coarser one (a pair is in both rows)
+    const GradedPairs ofCoarse = findGradedPairs(placed, localSpacing, hOverDx, periodic, &coarse);
+    std::vector<std::uint8_t> rows = coarse;
+    for (const std::uint32_t j : ofCoarse.neighbours) rows[j] = 1;
+    coarsePairs_[e] = std::make_unique<GradedPairs>(
+        findGradedPairs(placed, localSpacing, hOverDx, periodic, &rows));
   }
 }
 
@@ -178,6 +206,7 @@ void ExposedArea::computeIn() {
     std::vector<const NeighbourList*> lists;
   };
   std::vector<Exposed> exposed(exposed_.size());
+  findCoarsePairs();
   for (std::size_t e = 0; e < exposed_.size(); ++e) {
     const auto self = std::find(covering_.begin(), covering_.end(), exposed_[e]);
     if (self == covering_.end()) {
@@ -217,12 +246,35 @@ void ExposedArea::computeIn() {
         gradientArea[e].resize(x.size());
         fullness_[e].resize(x.size());
       }
+      const GradedPairs* coarse = coarsePairs_[e].get();
+      const Real* localSpacing =
+          coarse ? cloud->scalarField(field::localSpacing).data() : nullptr;
+      const Real* depth = coarse && cloud->hasScalarField(field::wallDistance)
+                              ? cloud->scalarField(field::wallDistance).data()
+                              : nullptr;
+
 #pragma omp parallel for schedule(static)
       for (std::size_t i = 0; i < x.size(); ++i) {
         Real s = volume[i] * selfKernel;
         Real moment = 0;
         Vector gradient = Vector::Zero();
+        const bool coarseRow = coarse && coarse->rowStart[i + 1] > coarse->rowStart[i];
+        if (coarseRow) {  // within its own cloud, each pair with its own kernel
+          const Real hi = supportRadius_ / spacing_ * localSpacing[i];
+          s = volume[i] * WendlandC2Kernel<Dim>(hi).value(0);
+          for (std::size_t slot = coarse->rowStart[i]; slot < coarse->rowStart[i + 1]; ++slot) {
+            const std::uint32_t j = coarse->neighbours[slot];
+            const WendlandC2Kernel<Dim> pairKernel(coarse->supportRadii[slot]);
+            const Vector xij = separation(x[i], x[j]);
+            const Real r = xij.norm();
+            const Real derivativeOverDistance = pairKernel.derivativeOverDistance(r);
+            s += volume[j] * pairKernel.value(r);
+            gradient += (volume[j] * derivativeOverDistance) * xij;
+            moment += volume[j] * derivativeOverDistance * r * r;
+          }
+        }
         for (std::size_t c = 0; c < covering_.size(); ++c) {
+          if (coarseRow && covering_[c] == cloud) continue;
           const Vector* otherX = covering_[c]->positions().data();
           const Real* otherVolume = coveringVolume_[c].data();
           for (const std::uint32_t j : lists[c]->of(i)) {
@@ -237,6 +289,11 @@ void ExposedArea::computeIn() {
         granularity[i] = s;
         if (gradientForm) {
           gradientArea[e][i] = areaFactor * volume[i] * gradient.norm();
+          // deeper than its support in the mold: no surface (where spacings change, the kernel
+          // sums of unlike particles leave a gradient inside, 0.73 of a face's area in a block)
+          if (coarseRow && depth && depth[i] >= supportRadius_ / spacing_ * localSpacing[i]) {
+            gradientArea[e][i] = 0;
+          }
           fullness_[e][i] = momentScale * moment;
         } else {
           const Real q = Real(1) - volume[i] * selfKernel;
