@@ -1,0 +1,132 @@
+// particleizeMold's graded volumes (geometry/GradedVolume.h): a die with a pocket, graded with
+// its pocket's faces kept fine, against the same die at the uniform spacing; and the errors a
+// user meets in `grading`.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "core/Error.h"
+#include "geometry/MoldParticleization.h"
+#include "particles/FieldNames.h"
+#include "support/TemporaryCase.h"
+
+namespace sphcast {
+namespace {
+
+using testing::TemporaryCase;
+
+// A die 100 x 100 x 60 mm with a pocket 60 x 60 x 20 mm in its top, its pocket's five faces the
+// Physical Surface "pocket"; the die's lower corner off the coarser lattices (-0.0487 m).
+const std::string dieGeo = R"(SetFactory("OpenCASCADE");
+Box(1) = {-0.0487, -0.0487, -0.0487, 0.1, 0.1, 0.06};
+Box(2) = {-0.0287, -0.0287, -0.0087, 0.06, 0.06, 0.02};
+BooleanDifference(3) = { Volume{1}; Delete; }{ Volume{2}; Delete; };
+Physical Volume("die") = {3};
+e = 1e-6;
+Physical Surface("pocket") = Surface In BoundingBox{-0.0287 - e, -0.0287 - e, -0.0087 - e, 0.0313 + e, 0.0313 + e, 0.0113 + e};
+)";
+
+std::string dieDict(const std::string& grading) {
+  return "FoamFile { version 2.0; format ascii; class dictionary; object particleizeMoldDict; }\n"
+         "geometry (\"die.geo\");\nspacing 0.002;\nsupportRadius 0.006;\npatches\n{\n"
+         "    die { cloud die; type fixedWall; mode volume; " +
+         grading + " }\n}\n";
+}
+
+ParticleizedMold particleize(const std::string& dict) {
+  TemporaryCase die;
+  die.write("constant/geometry/die.geo", dieGeo);
+  die.write("system/particleizeMoldDict", dict);
+  return particleizeMold(CaseFolder(die.root()));
+}
+
+// Distance from a point of the die (outside the pocket, at most as high as its top) to the
+// pocket's five faces: its distance to the pocket's box, whose nearest point is then never
+// inside the open top.
+double toPocket(const Vector& p) {
+  const auto outside = [](double v, double lo, double hi) {
+    return v < lo ? lo - v : (v > hi ? v - hi : 0.0);
+  };
+  return std::hypot(outside(p.x(), -0.0287, 0.0313), outside(p.y(), -0.0287, 0.0313),
+                    outside(p.z(), -0.0087, 0.0113));
+}
+
+// The graded die holds the uniform die's volume to round-off in 4 times fewer particles, keeps
+// dx within fineLayers dx of the pocket, and writes each particle's spacing. Measured: 66,000
+// particles at 2 mm uniform, 14,719 graded up to 8 mm (4.48 times fewer).
+TEST(MoldGrading, GradedDieKeepsItsVolumeAndItsPocketFine) {
+  const ParticleizedMold uniform = particleize(dieDict(""));
+  const ParticleizedMold graded =
+      particleize(dieDict("grading { maxSpacing 0.008; fineLayers 3; fineSurfaces (pocket); }"));
+  const ParticleCloud& u = uniform.clouds.at(0);
+  const ParticleCloud& g = graded.clouds.at(0);
+  EXPECT_FALSE(u.hasScalarField(field::localSpacing));
+  ASSERT_TRUE(g.hasScalarField(field::localSpacing));
+  double uniformVolume = 0, gradedVolume = 0;
+  for (const Real v : u.scalarField(field::volume)) uniformVolume += v;
+  for (const Real v : g.scalarField(field::volume)) gradedVolume += v;
+  EXPECT_NEAR(gradedVolume / uniformVolume, 1.0, 1e-12);
+  const double ratio = double(u.size()) / double(g.size());
+  std::printf("die: %zu particles at 2 mm, %zu graded up to 8 mm: %.2f times fewer\n", u.size(),
+              g.size(), ratio);
+  RecordProperty("fewer", std::to_string(ratio));
+  EXPECT_GT(ratio, 4.0);
+  const auto& spacing = g.scalarField(field::localSpacing);
+  const auto& volume = g.scalarField(field::volume);
+  const double dx = 0.002, cell = dx * dx * dx * uniformVolume / (double(u.size()) * dx * dx * dx);
+  std::size_t levels[4] = {0, 0, 0, 0};
+  for (std::size_t i = 0; i < g.size(); ++i) {
+    const int level = static_cast<int>(std::lround(std::log2(spacing[i] / dx)));
+    ASSERT_GE(level, 0);
+    ASSERT_LE(level, 2);
+    ++levels[level];
+    // a coarser particle stands for at least half its block, at most all of it
+    const double points = volume[i] / cell;
+    EXPECT_LE(points, std::pow(8.0, level) + 1e-9);
+    EXPECT_GE(points, level == 0 ? 1.0 - 1e-9 : 0.5 * std::pow(8.0, level) - 1e-9);
+    // every point of its block lies at least fineLayers dx from the pocket
+    if (level > 0) EXPECT_GE(toPocket(g.positions()[i]), 3 * dx) << i;
+  }
+  EXPECT_GT(levels[1], 0u);
+  EXPECT_GT(levels[2], 0u);
+}
+
+// The message of the Error particleizeMold throws, from "system/..." on.
+std::string errorOf(const std::string& dict) {
+  try {
+    particleize(dict);
+  } catch (const Error& error) {
+    const std::string message = error.what();
+    const auto system = message.find("system/particleizeMoldDict");
+    return system == std::string::npos ? message : message.substr(system);
+  }
+  return "no error";
+}
+
+TEST(MoldGrading, MistakesInGradingAreNamed) {
+  EXPECT_NE(errorOf(dieDict("grading { maxSpacing 0.003; }")).find(
+                "'maxSpacing' must be at least twice the spacing"),
+            std::string::npos);
+  EXPECT_NE(errorOf(dieDict("grading { maxSpacing 0.008; fineLayers 2; }"))
+                .find("'fineLayers' must be at least wallLayers (3)"),
+            std::string::npos);
+  const std::string absent = errorOf(dieDict("grading { maxSpacing 0.008; fineSurfaces (cavity); }"));
+  EXPECT_NE(absent.find("fineSurfaces names 'cavity', which is not a Physical Surface"),
+            std::string::npos)
+      << absent;
+  EXPECT_NE(absent.find("the groups present are ( pocket die )"), std::string::npos) << absent;
+  const std::string unknown = errorOf(dieDict("grading { maxSpacing 0.008; coarsest 0.01; }"));
+  EXPECT_NE(unknown.find("coarsest"), std::string::npos) << unknown;
+  EXPECT_EQ(unknown.rfind("system/particleizeMoldDict:", 0), 0u) << unknown;
+  std::string shell = dieDict("grading { maxSpacing 0.008; }");
+  shell.replace(shell.find("mode volume"), 11, "mode shell");
+  shell.replace(shell.find("die { cloud"), 3, "pocket");
+  EXPECT_NE(errorOf(shell).find("'grading' is for the volume patches of a 3D mold"),
+            std::string::npos)
+      << errorOf(shell);
+}
+
+}  // namespace
+}  // namespace sphcast
