@@ -35,7 +35,7 @@ struct Neighbour {
 
 GradedPairs findGradedPairs(const std::vector<Vector>& x, const std::vector<Real>& localSpacing,
                             Real hOverDx, const PeriodicBox& periodic,
-                            const std::vector<std::uint8_t>* wanted) {
+                            const std::vector<std::uint8_t>* wanted, PairSupport support) {
   const std::size_t n = x.size();
   std::vector<Real> spacings(localSpacing.begin(), localSpacing.end());
   std::sort(spacings.begin(), spacings.end());
@@ -78,7 +78,7 @@ GradedPairs findGradedPairs(const std::vector<Vector>& x, const std::vector<Real
     if (wanted != nullptr && !(*wanted)[i]) return;
     const Real hi = hOverDx * localSpacing[i];
     for (const LevelGrid& grid : grids) {
-      const Real reach = Real(0.5) * (hi + grid.radius);
+      const Real reach = support == PairSupport::row ? hi : Real(0.5) * (hi + grid.radius);
       const auto span = static_cast<std::int64_t>(std::ceil(reach / grid.radius));
       const std::int64_t ci = grid.cellOf(x[i][0]), cj = grid.cellOf(x[i][1]),
                          ck = grid.cellOf(x[i][2]);

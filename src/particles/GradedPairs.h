@@ -22,9 +22,13 @@ namespace sphcast {
 struct GradedPairs {
   std::vector<std::size_t> rowStart;      // row i: [rowStart[i], rowStart[i + 1])
   std::vector<std::uint32_t> neighbours;  // j
-  std::vector<Real> supportRadii;         // h_ij
+  std::vector<Real> supportRadii;         // h_ij (or h_i, PairSupport::row)
   std::size_t entryCount() const { return neighbours.size(); }
 };
+
+// Which support a pair takes: the mean of its two particles' (symmetric: a pair sum that moves
+// a quantity), or its row's own h_i (a gather, each particle summing with its own kernel).
+enum class PairSupport { mean, row };
 
 // positions: where the particles are (their body-frame places for a rigid mold); wanted: null
 // for every row, else the rows to find (the others stay empty). Throws Error when a periodic
@@ -32,6 +36,7 @@ struct GradedPairs {
 GradedPairs findGradedPairs(const std::vector<Vector>& positions,
                             const std::vector<Real>& localSpacing, Real supportRadiusOverSpacing,
                             const PeriodicBox& periodic,
-                            const std::vector<std::uint8_t>* wanted = nullptr);
+                            const std::vector<std::uint8_t>* wanted = nullptr,
+                            PairSupport support = PairSupport::mean);
 
 }  // namespace sphcast

@@ -167,14 +167,9 @@ void ExposedArea::findCoarsePairs() {
     const auto& placed = cloud.hasVectorField(field::restPosition)
                              ? cloud.vectorField(field::restPosition)
                              : cloud.positions();
-    const Real hOverDx = supportRadius_ / spacing_;
-    const PeriodicBox periodic = neighbourhood_.periodicBox();
-    // and the particles at dx within reach of a coarser one (a pair is in both rows)
-    const GradedPairs ofCoarse = findGradedPairs(placed, localSpacing, hOverDx, periodic, &coarse);
-    std::vector<std::uint8_t> rows = coarse;
-    for (const std::uint32_t j : ofCoarse.neighbours) rows[j] = 1;
     coarsePairs_[e] = std::make_unique<GradedPairs>(
-        findGradedPairs(placed, localSpacing, hOverDx, periodic, &rows));
+        findGradedPairs(placed, localSpacing, supportRadius_ / spacing_,
+                        neighbourhood_.periodicBox(), &coarse, PairSupport::row));
   }
 }
 
@@ -253,6 +248,7 @@ void ExposedArea::computeIn() {
                               ? cloud->scalarField(field::wallDistance).data()
                               : nullptr;
 
+
 #pragma omp parallel for schedule(static)
       for (std::size_t i = 0; i < x.size(); ++i) {
         Real s = volume[i] * selfKernel;
@@ -291,7 +287,7 @@ void ExposedArea::computeIn() {
           gradientArea[e][i] = areaFactor * volume[i] * gradient.norm();
           // deeper than its support in the mold: no surface (where spacings change, the kernel
           // sums of unlike particles leave a gradient inside, 0.73 of a face's area in a block)
-          if (coarseRow && depth && depth[i] >= supportRadius_ / spacing_ * localSpacing[i]) {
+          if (coarse && depth && depth[i] >= supportRadius_ / spacing_ * localSpacing[i]) {
             gradientArea[e][i] = 0;
           }
           fullness_[e][i] = momentScale * moment;
@@ -318,10 +314,23 @@ void ExposedArea::computeIn() {
       const auto& x = cloud->positions();
       const auto& granularity = cloud->scalarField(field::granularity);
       auto& area = cloud->scalarField(field::exposedArea);
+      const GradedPairs* coarse = coarsePairs_[e].get();
+      const Real* localSpacing =
+          coarse ? cloud->scalarField(field::localSpacing).data() : nullptr;
 #pragma omp parallel for schedule(static)
       for (std::size_t i = 0; i < x.size(); ++i) {
         Real weighted = volume[i] * selfKernel * fullness_[e][i];
+        const bool coarseRow = coarse && coarse->rowStart[i + 1] > coarse->rowStart[i];
+        if (coarseRow) {  // within its own cloud, with its own kernel (as in the first pass)
+          const WendlandC2Kernel<Dim> own(supportRadius_ / spacing_ * localSpacing[i]);
+          weighted = volume[i] * own.value(0) * fullness_[e][i];
+          for (std::size_t slot = coarse->rowStart[i]; slot < coarse->rowStart[i + 1]; ++slot) {
+            const std::uint32_t j = coarse->neighbours[slot];
+            weighted += volume[j] * own.value(separation(x[i], x[j]).norm()) * fullness_[e][j];
+          }
+        }
         for (std::size_t c = 0; c < covering_.size(); ++c) {
+          if (coarseRow && covering_[c] == cloud) continue;
           const Vector* otherX = covering_[c]->positions().data();
           const Real* otherVolume = coveringVolume_[c].data();
           const Real* otherFullness = coveringFullness[c];

@@ -69,10 +69,11 @@ void GradedConduction::build(const ParticleCloud& cloud, Real supportRadius, Rea
   // The first-moment correction, at the particles whose support lies in the material.
   std::vector<std::uint8_t> interior(n, 0);
   std::size_t interiorCount = 0;
+  const double hOverDxForInterior = double(supportRadius) / double(spacing);
   if (correctFirstMoments && cloud.hasScalarField(field::wallDistance)) {
     const auto& depth = cloud.scalarField(field::wallDistance);
     for (std::size_t i = 0; i < n; ++i) {
-      interior[i] = depth[i] >= reachOf[i] ? 1 : 0;
+      interior[i] = depth[i] >= hOverDxForInterior * localSpacing[i] ? 1 : 0;
       interiorCount += interior[i];
     }
   }
