@@ -25,9 +25,11 @@ namespace sphcast {
 //   G'_ij = G_ij (1 + (lambda_j - lambda_i) . (x_j - x_i) / l_ij),   l_ij = (l_i + l_j) / 2,
 //
 // symmetric still, with the vectors lambda_i solved (conjugate gradients, block-Jacobi
-// preconditioned) so that sum_j G'_ij (x_j - x_i) = 0 at every particle whose support lies in
-// the material (wallDistance at least its pairs' reach; lambda = 0 at the others, whose moment
-// is the surface's): a linear profile is then exact and the books still close to round-off.
+// preconditioned) so that sum_j G'_ij (x_j - x_i) = 0 at every particle whose own support lies in
+// the material (wallDistance at least h_i; lambda = 0 at the others, whose moment is the
+// surface's): a linear profile is then exact there and the books still close to round-off. (Held
+// only where the widest pair's support lay inside, the correction reached 256 of a 100 mm die's
+// 14,719 particles, and its casting solidified 1.7 % early with the air's losses; at h_i, 3,571.)
 // The mold moves, if at all, as a rigid body, so the pairs and weights are made once, from the
 // body-frame positions (restPosition) where the cloud has them, and a restart makes the same.
 class GradedConduction {

@@ -21,3 +21,8 @@ Box(4) = {-ditchWidth / 2, -pocket / 2, -ditchDepth, ditchWidth, pocket, ditchDe
 BooleanDifference(5) = { Volume{1}; Delete; }{ Volume{2, 3, 4}; Delete; };
 
 Physical Volume("lowerMold") = {5};
+
+// The faces the metal meets (the pocket and the ditch), for a mold particleized at graded spacing
+// (grading's fineSurfaces in system/particleizeMoldDict; ./setResolution DX graded).
+eps = 1e-6;
+Physical Surface("lowerMoldCavity") = Surface In BoundingBox{-pocket / 2 - eps, -pocket / 2 - eps, -ditchDepth - eps, pocket / 2 + eps, pocket / 2 + eps, pocketDepth + eps};

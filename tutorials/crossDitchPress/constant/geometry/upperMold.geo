@@ -12,3 +12,8 @@ start = 20.25e-3;        // height of its face above the pocket floor at the sta
 Box(1) = {-pocket / 2, -pocket / 2, start, pocket, pocket, thickness};
 
 Physical Volume("upperMold") = {1};
+
+// The face that presses the metal, for a mold particleized at graded spacing (grading's
+// fineSurfaces in system/particleizeMoldDict; ./setResolution DX graded).
+eps = 1e-6;
+Physical Surface("upperMoldFace") = Surface In BoundingBox{-pocket / 2 - eps, -pocket / 2 - eps, start - eps, pocket / 2 + eps, pocket / 2 + eps, start + eps};
