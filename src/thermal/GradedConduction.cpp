@@ -13,7 +13,6 @@
 
 namespace sphcast {
 
-
 GradedConduction::GradedConduction(const ParticleCloud& cloud, int dimension, Real supportRadius,
                                    Real spacing, const PeriodicBox& periodic,
                                    bool correctFirstMoments) {
@@ -45,7 +44,6 @@ void GradedConduction::build(const ParticleCloud& cloud, Real supportRadius, Rea
   };
   std::vector<double> volume(n);
   for (std::size_t i = 0; i < n; ++i) volume[i] = double(mass[i]) / double(rho[i]);
-  std::vector<double> reachOf(n, 0.0);
   weights_.resize(neighbours_.size());
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < n; ++i) {
@@ -59,14 +57,13 @@ void GradedConduction::build(const ParticleCloud& cloud, Real supportRadius, Rea
       weights_[s] = -2.0 * volume[i] * volume[j] *
                     double(kernel.derivativeOverDistance(static_cast<Real>(std::sqrt(rSquared)))) *
                     rSquared / (rSquared + etaSquared);
-      reachOf[i] = std::max(reachOf[i], double(hij));
     }
   }
   std::vector<Real> spacings(localSpacing.begin(), localSpacing.end());
   std::sort(spacings.begin(), spacings.end());
   spacings.erase(std::unique(spacings.begin(), spacings.end()), spacings.end());
 
-  // The first-moment correction, at the particles whose support lies in the material.
+  // The first-moment correction, at the particles whose own support lies in the material.
   std::vector<std::uint8_t> interior(n, 0);
   std::size_t interiorCount = 0;
   const double hOverDxForInterior = double(supportRadius) / double(spacing);
@@ -108,9 +105,9 @@ void GradedConduction::build(const ParticleCloud& cloud, Real supportRadius, Rea
       out[i] = sum;
     }
   };
+  // in index order on one thread: the weights are then the same bits on any number of threads
   const auto dot = [&](const std::vector<Vec>& a, const std::vector<Vec>& b) {
     double sum = 0;
-#pragma omp parallel for schedule(static) reduction(+ : sum)
     for (std::size_t i = 0; i < n; ++i) sum += interior[i] ? a[i].dot(b[i]) : 0.0;
     return sum;
   };

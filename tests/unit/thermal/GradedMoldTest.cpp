@@ -133,6 +133,27 @@ TEST(GradedConductionTest, PairsMoveHeatWithoutMakingAny) {
   EXPECT_LT(std::abs(total), 1e-13 * magnitude);
 }
 
+// The pairs, their corrected weights and the rates they give are the same bits on 1 and 2
+// threads (the correction's sums are taken in index order).
+TEST(GradedConductionTest, SameBitsOnOneAndTwoThreads) {
+  const int before = omp_get_max_threads();
+  std::vector<std::vector<Real>> rates;
+  for (const int threads : {1, 2}) {
+    omp_set_num_threads(threads);
+    ParticleCloud cloud = gradedStrip(twiceDoubled, 300);
+    const GradedConduction pairs = pairsOf(cloud, true);
+    std::vector<Real> phi(cloud.size()), rate(cloud.size(), 0);
+    for (std::size_t i = 0; i < cloud.size(); ++i) {
+      const Vector& x = cloud.positions()[i];
+      phi[i] = Real(1e5 * std::sin(400 * x[0]) * std::cos(300 * x[1]));
+    }
+    pairs.addEnergyRates(phi.data(), cloud.scalarField(field::mass).data(), rate.data());
+    rates.push_back(rate);
+  }
+  omp_set_num_threads(before);
+  EXPECT_EQ(rates[0], rates[1]);
+}
+
 const char* const water = "body { density 1000; conductivity 1; specificHeat 1000; }";
 
 // A held face of `layers` fine columns beside x0, as in ConductionValidationTest.
@@ -321,6 +342,24 @@ void checkFacesOfAGradedBlock(int n) {
 }
 
 TEST(GradedMoldTest, FacesOfAGradedBlockShowTheirArea) { checkFacesOfAGradedBlock(64); }
+
+// The exposed area of a graded block is the same bits on 1 and 2 threads.
+TEST(GradedMoldTest, ExposedAreaSameBitsOnOneAndTwoThreads) {
+  const int before = omp_get_max_threads();
+  std::vector<std::vector<Real>> areas;
+  for (const int threads : {1, 2}) {
+    omp_set_num_threads(threads);
+    ParticleCloud block = gradedBlock(40, 4);
+    Neighbourhood neighbourhood(h, PeriodicBox());
+    neighbourhood.addCloud(block, Neighbourhood::Motion::fixed);
+    ExposedArea area(ExposedAreaForm::gradient, 3, h, dx, {&block}, {&block}, neighbourhood);
+    neighbourhood.update(CloudOrder::keep);
+    area.compute();
+    areas.push_back(block.scalarField(field::exposedArea));
+  }
+  omp_set_num_threads(before);
+  EXPECT_EQ(areas[0], areas[1]);
+}
 
 // 62 dx: the coarser blocks cut by the faces (at least half inside: a particle at the centre
 // of its points), as off the lattice of 4 dx a mold's faces to the air are.
