@@ -66,9 +66,9 @@ WallParticles gradeVolumeParticles(const WallParticles& fine, const std::vector<
       const Index b = blockOf(p, level[p]);
       return std::array<std::int64_t, 4>{level[p], b[0], b[1], b[2]};
     };
-    std::sort(order.begin(), order.end(),
-              [&](std::size_t a, std::size_t b) { return key(a) < key(b) || (key(a) == key(b) && a < b); });
-    std::vector<std::size_t> particleOfGroup;
+    std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+      return key(a) < key(b) || (key(a) == key(b) && a < b);
+    });
     for (std::size_t first = 0; first < count;) {
       std::size_t last = first;
       while (last < count && key(order[last]) == key(order[first])) ++last;

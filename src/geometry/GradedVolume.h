@@ -27,16 +27,16 @@ struct VolumeGrading {
 //
 // Method: the lattice's blocks of 2^l x 2^l x 2^l points (aligned on the lattice, so that the
 // blocks of one level nest in those of the next, an octree of the lattice) stand for a particle
-// of spacing 2^l dx at their centre, a point of the coarser lattice with the same half-cell
-// offset (LatticeSolid.h), when all their 8^l points are in the volume and every one lies at
-// least start_l deep: start_1 = fineDepth, start_(l+1) = start_l + layersPerLevel 2^l dx. A point
-// takes the coarsest block that qualifies (a block qualifies only if its children do, so the
-// levels nest). The blocks partition the fine lattice exactly: a particle's volume is its
-// points' count times the fine particles' volume (the caller's share of the geometry's volume,
-// `fineVolume`), so the mold's mass and heat capacity are those of the uniform mold to
-// round-off. Fine points keep their place in the order of `fine`; a coarse particle takes the
-// place of its block's first point. A coarse particle's normal and wall distance are those of
-// its centre to `boundary`. `spacings` holds each particle's spacing.
+// of spacing 2^l dx at the centre of their points when at least half of their 8^l points are in
+// the volume (a block cut by a face keeps the points inside; a complete block's centre is a
+// point of the coarser lattice with the same half-cell offset, LatticeSolid.h) and every one lies
+// at least start_l deep: start_1 = fineDepth, start_(l+1) = start_l + layersPerLevel 2^l dx. A
+// point takes the coarsest block that qualifies. The blocks partition the fine lattice exactly:
+// a particle's volume is its points' count times the fine particles' volume (the caller's share
+// of the geometry's volume, `fineVolume`), so the mold's mass and heat capacity are those of the
+// uniform mold to round-off. Fine points keep their place in the order of `fine`; a coarse
+// particle takes the place of its block's first point. A coarse particle's normal and wall
+// distance are those of its centre to `boundary`. `spacings` holds each particle's spacing.
 WallParticles gradeVolumeParticles(const WallParticles& fine, const std::vector<double>& depth,
                                    const TriangleMesh& boundary, double spacing, double fineVolume,
                                    const VolumeGrading& grading);

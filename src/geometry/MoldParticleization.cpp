@@ -241,7 +241,7 @@ WallParticles particleizeSolidMold(const std::vector<GeometryFilePatches>& files
         }
       } else {
         VolumeJob job{geometry.boundaryOfVolumes(geometry.volumesOf(*group)), patch.id,
-                      patch.grading};
+                      patch.grading, {}};
         const std::size_t freeEdges = job.boundary.freeEdgeCount();
         if (job.boundary.size() == 0 || freeEdges > 0) {
           throw DictionaryError(requests[p].where,

@@ -38,8 +38,8 @@ namespace sphcast {
 // grading (3D volume patches; GradedVolume.h): the particles within fineLayers dx of the
 // volume's surface keep the spacing dx (default fineLayers 2 wallLayers, at least wallLayers:
 // the flow's walls and the contact see those only, and with 2 wallLayers a face's exposed area
-// is the uniform mold's), and deeper in the material the spacing doubles every wallLayers of its
-// own spacings, up to maxSpacing (at least 2 dx). fineSurfaces (optional: Physical Surfaces of
+// is the uniform mold's), and deeper in the material the spacing doubles every layersPerLevel
+// (default wallLayers, at least 2) of its own spacings, up to maxSpacing (at least 2 dx). fineSurfaces (optional: Physical Surfaces of
 // the same file) keeps dx near those surfaces only, the ones the metal meets; the others, faces
 // to the air, may then be coarse (their area: sph/ExposedArea.h). The particles carry their
 // spacing (field localSpacing), by which the solver's conduction sizes each pair's kernel

@@ -159,6 +159,12 @@ void ExposedArea::findCoarsePairs() {
     const ParticleCloud& cloud = *exposed_[e];
     if (!cloud.hasScalarField(field::localSpacing)) continue;
     if (std::find(covering_.begin(), covering_.end(), &cloud) == covering_.end()) continue;
+    if (neighbourhood_.decomposed()) {
+      throw Error("cloud '" + cloud.name() +
+                  "' is a mold particleized at graded spacing (field localSpacing): a decomposed "
+                  "run (-parallel) does not take one yet; run it serial (OpenMP threads), or "
+                  "particleize the mold without grading");
+    }
     const auto& localSpacing = cloud.scalarField(field::localSpacing);
     std::vector<std::uint8_t> coarse(cloud.size(), 0);
     for (std::size_t i = 0; i < cloud.size(); ++i) {
@@ -247,24 +253,23 @@ void ExposedArea::computeIn() {
       const Real* depth = coarse && cloud->hasScalarField(field::wallDistance)
                               ? cloud->scalarField(field::wallDistance).data()
                               : nullptr;
-
-
 #pragma omp parallel for schedule(static)
       for (std::size_t i = 0; i < x.size(); ++i) {
         Real s = volume[i] * selfKernel;
         Real moment = 0;
         Vector gradient = Vector::Zero();
         const bool coarseRow = coarse && coarse->rowStart[i + 1] > coarse->rowStart[i];
-        if (coarseRow) {  // within its own cloud, each pair with its own kernel
-          const Real hi = supportRadius_ / spacing_ * localSpacing[i];
-          s = volume[i] * WendlandC2Kernel<Dim>(hi).value(0);
+        Real ownKernelAtZero = selfKernel;
+        if (coarseRow) {  // within its own cloud, with its own kernel h_i
+          const WendlandC2Kernel<Dim> own(supportRadius_ / spacing_ * localSpacing[i]);
+          ownKernelAtZero = own.value(0);
+          s = volume[i] * ownKernelAtZero;
           for (std::size_t slot = coarse->rowStart[i]; slot < coarse->rowStart[i + 1]; ++slot) {
             const std::uint32_t j = coarse->neighbours[slot];
-            const WendlandC2Kernel<Dim> pairKernel(coarse->supportRadii[slot]);
             const Vector xij = separation(x[i], x[j]);
             const Real r = xij.norm();
-            const Real derivativeOverDistance = pairKernel.derivativeOverDistance(r);
-            s += volume[j] * pairKernel.value(r);
+            const Real derivativeOverDistance = own.derivativeOverDistance(r);
+            s += volume[j] * own.value(r);
             gradient += (volume[j] * derivativeOverDistance) * xij;
             moment += volume[j] * derivativeOverDistance * r * r;
           }
@@ -292,7 +297,7 @@ void ExposedArea::computeIn() {
           }
           fullness_[e][i] = momentScale * moment;
         } else {
-          const Real q = Real(1) - volume[i] * selfKernel;
+          const Real q = Real(1) - volume[i] * ownKernelAtZero;
           area[i] = areaFactor * exposureWeight(Real(1) - s, q) * std::pow(volume[i], areaExponent);
         }
       }

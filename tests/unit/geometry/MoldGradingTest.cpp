@@ -87,7 +87,9 @@ TEST(MoldGrading, GradedDieKeepsItsVolumeAndItsPocketFine) {
     EXPECT_LE(points, std::pow(8.0, level) + 1e-9);
     EXPECT_GE(points, level == 0 ? 1.0 - 1e-9 : 0.5 * std::pow(8.0, level) - 1e-9);
     // every point of its block lies at least fineLayers dx from the pocket
-    if (level > 0) EXPECT_GE(toPocket(g.positions()[i]), 3 * dx) << i;
+    if (level > 0) {
+      EXPECT_GE(toPocket(g.positions()[i]), 3 * dx) << i;
+    }
   }
   EXPECT_GT(levels[1], 0u);
   EXPECT_GT(levels[2], 0u);
