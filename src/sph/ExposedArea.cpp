@@ -258,6 +258,14 @@ void ExposedArea::computeIn() {
         Real s = volume[i] * selfKernel;
         Real moment = 0;
         Vector gradient = Vector::Zero();
+        // a neighbour of volume Vj at xij (x_i - x_j) under `with`'s kernel
+        const auto add = [&](const auto& with, Real Vj, const Vector& xij) {
+          const Real r = xij.norm();
+          const Real derivativeOverDistance = with.derivativeOverDistance(r);
+          s += Vj * with.value(r);
+          gradient += (Vj * derivativeOverDistance) * xij;
+          moment += Vj * derivativeOverDistance * r * r;
+        };
         const bool coarseRow = coarse && coarse->rowStart[i + 1] > coarse->rowStart[i];
         Real ownKernelAtZero = selfKernel;
         if (coarseRow) {  // within its own cloud, with its own kernel h_i
@@ -266,12 +274,7 @@ void ExposedArea::computeIn() {
           s = volume[i] * ownKernelAtZero;
           for (std::size_t slot = coarse->rowStart[i]; slot < coarse->rowStart[i + 1]; ++slot) {
             const std::uint32_t j = coarse->neighbours[slot];
-            const Vector xij = separation(x[i], x[j]);
-            const Real r = xij.norm();
-            const Real derivativeOverDistance = own.derivativeOverDistance(r);
-            s += volume[j] * own.value(r);
-            gradient += (volume[j] * derivativeOverDistance) * xij;
-            moment += volume[j] * derivativeOverDistance * r * r;
+            add(own, volume[j], separation(x[i], x[j]));
           }
         }
         for (std::size_t c = 0; c < covering_.size(); ++c) {
@@ -279,12 +282,7 @@ void ExposedArea::computeIn() {
           const Vector* otherX = covering_[c]->positions().data();
           const Real* otherVolume = coveringVolume_[c].data();
           for (const std::uint32_t j : lists[c]->of(i)) {
-            const Vector xij = separation(x[i], otherX[j]);
-            const Real r = xij.norm();
-            const Real derivativeOverDistance = kernel.derivativeOverDistance(r);
-            s += otherVolume[j] * kernel.value(r);
-            gradient += (otherVolume[j] * derivativeOverDistance) * xij;
-            moment += otherVolume[j] * derivativeOverDistance * r * r;
+            add(kernel, otherVolume[j], separation(x[i], otherX[j]));
           }
         }
         granularity[i] = s;

@@ -35,16 +35,7 @@ ThermalRun strip(const std::string& properties) {
 // start, midway between the held and the free particles.
 ParticleCloud heldSurface(const std::string& name, Real x0, bool left, int layers, Real T,
                           bool withSurface = true) {
-  ParticleCloud cloud =
-      latticeBlock(name, Vector(left ? x0 - layers * dx : x0, 0, 0), layers, across, 1, dx, 2, T);
-  if (!withSurface) return cloud;
-  auto& depth = cloud.addScalarField(field::wallDistance);
-  auto& normal = cloud.addVectorField(field::normal);
-  for (std::size_t i = 0; i < cloud.size(); ++i) {
-    depth[i] = std::abs(cloud.positions()[i][0] - x0);
-    normal[i] = Vector(left ? 1 : -1, 0, 0);
-  }
-  return cloud;
+  return heldSurfaceColumns(name, x0, left, layers, across, dx, T, withSurface);
 }
 
 // L2 norm over the particles with x < reach of (T - exact(x)) / scale.

@@ -156,18 +156,9 @@ TEST(GradedConductionTest, SameBitsOnOneAndTwoThreads) {
 
 const char* const water = "body { density 1000; conductivity 1; specificHeat 1000; }";
 
-// A held face of `layers` fine columns beside x0, as in ConductionValidationTest.
+// A held face of 4 fine columns beside x0, as in ConductionValidationTest.
 ParticleCloud heldFace(const std::string& name, Real x0, bool left, Real T) {
-  const int layers = 4;
-  ParticleCloud cloud = latticeBlock(name, Vector(left ? x0 - layers * dx : x0, 0, 0), layers,
-                                     across, 1, dx, 2, T);
-  auto& depth = cloud.addScalarField(field::wallDistance);
-  auto& normal = cloud.addVectorField(field::normal);
-  for (std::size_t i = 0; i < cloud.size(); ++i) {
-    depth[i] = std::abs(cloud.positions()[i][0] - x0);
-    normal[i] = Vector(left ? 1 : -1, 0, 0);
-  }
-  return cloud;
+  return heldSurfaceColumns(name, x0, left, 4, across, dx, T);
 }
 
 // L2 over the body's particles of (T - series) / (T_0 - T_s) for the slab 0 < x < L with both

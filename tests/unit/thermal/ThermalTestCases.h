@@ -42,6 +42,25 @@ inline ParticleCloud latticeBlock(const std::string& name, const Vector& lower, 
   return cloud;
 }
 
+// A held mold with a surface, as particleizeMold writes one, for a 2D strip `across` particles
+// wide: `layers` columns of the lattice behind the surface x = x0 (to the left when left is
+// true), the first centred dx/2 behind it, each with its depth (wallDistance) and the normal out
+// of the mold. Without the two fields (withSurface false: a box of setCastFields) the solver
+// places the same surface at the start.
+inline ParticleCloud heldSurfaceColumns(const std::string& name, Real x0, bool left, int layers,
+                                        int across, Real dx, Real T, bool withSurface = true) {
+  ParticleCloud cloud =
+      latticeBlock(name, Vector(left ? x0 - layers * dx : x0, 0, 0), layers, across, 1, dx, 2, T);
+  if (!withSurface) return cloud;
+  auto& depth = cloud.addScalarField(field::wallDistance);
+  auto& normal = cloud.addVectorField(field::normal);
+  for (std::size_t i = 0; i < cloud.size(); ++i) {
+    depth[i] = std::abs(cloud.positions()[i][0] - x0);
+    normal[i] = Vector(left ? 1 : -1, 0, 0);
+  }
+  return cloud;
+}
+
 // Keeps only the particles for which keep(x) holds.
 inline void keepWhere(ParticleCloud& cloud, const std::function<bool(const Vector&)>& keep) {
   std::vector<std::size_t> order, dropped;

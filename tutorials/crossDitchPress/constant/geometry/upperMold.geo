@@ -13,7 +13,15 @@ Box(1) = {-pocket / 2, -pocket / 2, start, pocket, pocket, thickness};
 
 Physical Volume("upperMold") = {1};
 
-// The face that presses the metal, for a mold particleized at graded spacing (grading's
-// fineSurfaces in system/particleizeMoldDict; ./setResolution DX graded).
+// The faces the metal meets (the pressing face, and the sides that slide along the pocket's
+// walls), for a mold particleized at graded spacing (grading's fineSurfaces in
+// system/particleizeMoldDict; ./setResolution DX graded). The top, to the air, may be coarse.
 eps = 1e-6;
-Physical Surface("upperMoldFace") = Surface In BoundingBox{-pocket / 2 - eps, -pocket / 2 - eps, start - eps, pocket / 2 + eps, pocket / 2 + eps, start + eps};
+x0 = -pocket / 2; x1 = pocket / 2; z0 = start; z1 = start + thickness;
+Physical Surface("upperMoldFace") = {
+    Surface In BoundingBox{x0 - eps, x0 - eps, z0 - eps, x1 + eps, x1 + eps, z0 + eps},
+    Surface In BoundingBox{x0 - eps, x0 - eps, z0 - eps, x0 + eps, x1 + eps, z1 + eps},
+    Surface In BoundingBox{x1 - eps, x0 - eps, z0 - eps, x1 + eps, x1 + eps, z1 + eps},
+    Surface In BoundingBox{x0 - eps, x0 - eps, z0 - eps, x1 + eps, x0 + eps, z1 + eps},
+    Surface In BoundingBox{x0 - eps, x1 - eps, z0 - eps, x1 + eps, x1 + eps, z1 + eps}
+};
