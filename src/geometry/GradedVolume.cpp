@@ -37,9 +37,8 @@ WallParticles gradeVolumeParticles(const WallParticles& fine, const std::vector<
   double start = grading.fineDepth;
   for (int l = 1; l <= levels; ++l) {
     std::iota(order.begin(), order.end(), std::size_t{0});
-    std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-      return blockOf(a, l) < blockOf(b, l);
-    });
+    std::sort(order.begin(), order.end(),
+              [&](std::size_t a, std::size_t b) { return blockOf(a, l) < blockOf(b, l); });
     const std::size_t complete = std::size_t{1} << (3 * l);
     for (std::size_t first = 0; first < count;) {
       std::size_t last = first;

@@ -40,9 +40,9 @@ VolumeGrading readGrading(const Dictionary& grading, const std::string& mode, in
                           double spacing, int wallLayers) {
   grading.checkKeys({"maxSpacing", "fineLayers", "layersPerLevel", "fineSurfaces"});
   if (mode != "volume" || dimension != 3) {
-    throw DictionaryError(grading.location(),
-                          "'grading' is for the volume patches of a 3D mold (mode volume), in " +
-                              grading.name());
+    throw DictionaryError(
+        grading.location(),
+        "'grading' is for the volume patches of a 3D mold (mode volume), in " + grading.name());
   }
   VolumeGrading result;
   result.maxSpacing = grading.get<double>("maxSpacing", length);
@@ -53,11 +53,10 @@ VolumeGrading readGrading(const Dictionary& grading, const std::string& mode, in
   }
   const int fineLayers = grading.getOrDefault<int>("fineLayers", 2 * wallLayers);
   if (fineLayers < wallLayers) {
-    throw DictionaryError(grading.location("fineLayers"),
-                          "'fineLayers' must be at least wallLayers (" +
-                              std::to_string(wallLayers) +
-                              "): the flow's walls need that many layers at dx, in " +
-                              grading.name());
+    throw DictionaryError(
+        grading.location("fineLayers"),
+        "'fineLayers' must be at least wallLayers (" + std::to_string(wallLayers) +
+            "): the flow's walls need that many layers at dx, in " + grading.name());
   }
   result.fineDepth = fineLayers * spacing;
   result.layersPerLevel = grading.getOrDefault<int>("layersPerLevel", wallLayers);
@@ -90,8 +89,8 @@ std::vector<PatchRequest> readPatches(const Dictionary& patches, int dimension, 
     request.patch.type = entry.getChoice("type", {"fixedWall", "rigidBody", "fixedTemperature"});
     request.patch.mode = entry.getChoiceOrDefault("mode", {"shell", "volume"}, "shell");
     if (entry.found("grading")) {
-      request.patch.grading = readGrading(entry.subDict("grading"), request.patch.mode, dimension,
-                                          spacing, wallLayers);
+      request.patch.grading =
+          readGrading(entry.subDict("grading"), request.patch.mode, dimension, spacing, wallLayers);
     }
     requests.push_back(std::move(request));
   }
@@ -240,8 +239,8 @@ WallParticles particleizeSolidMold(const std::vector<GeometryFilePatches>& files
           throw DictionaryError(requests[p].where, error.what());
         }
       } else {
-        VolumeJob job{geometry.boundaryOfVolumes(geometry.volumesOf(*group)), patch.id,
-                      patch.grading, {}};
+        VolumeJob job{
+            geometry.boundaryOfVolumes(geometry.volumesOf(*group)), patch.id, patch.grading, {}};
         const std::size_t freeEdges = job.boundary.freeEdgeCount();
         if (job.boundary.size() == 0 || freeEdges > 0) {
           throw DictionaryError(requests[p].where,
@@ -253,11 +252,11 @@ WallParticles particleizeSolidMold(const std::vector<GeometryFilePatches>& files
         for (const std::string& name : patch.grading.fineSurfaces) {
           const PhysicalGroup* surface = geometry.findGroup(name);
           if (surface == nullptr || surface->dimension != 2) {
-            throw DictionaryError(
-                requests[p].where,
-                "patch '" + patch.name + "': grading's fineSurfaces names '" + name +
-                    "', which is not a Physical Surface of '" + path.string() +
-                    "'; the groups present are (" + groupNames(geometry.groups()) + " )");
+            throw DictionaryError(requests[p].where,
+                                  "patch '" + patch.name + "': grading's fineSurfaces names '" +
+                                      name + "', which is not a Physical Surface of '" +
+                                      path.string() + "'; the groups present are (" +
+                                      groupNames(geometry.groups()) + " )");
           }
           job.fineSurfaces.append(geometry.surfacesOf({{surface, patch.id}}));
         }
@@ -313,13 +312,12 @@ WallParticles particleizeSolidMold(const std::vector<GeometryFilePatches>& files
       }
       filled = gradeVolumeParticles(filled, depth, volume.boundary, spacing, volumePerParticle,
                                     volume.grading);
-      info() << "    graded: " << filled.size() << " particles for the " << uniform
-             << " at dx (" << std::setprecision(3)
+      info() << "    graded: " << filled.size() << " particles for the " << uniform << " at dx ("
+             << std::setprecision(3)
              << static_cast<double>(uniform) / static_cast<double>(filled.size())
              << " times fewer), dx within " << volume.grading.fineDepth << std::setprecision(6)
              << " m of " << (volume.fineSurfaces.size() > 0 ? "its fineSurfaces" : "its surface")
-             << ", coarser inward up to "
-             << volume.grading.maxSpacing << " m\n";
+             << ", coarser inward up to " << volume.grading.maxSpacing << " m\n";
     }
     addWallSurfacePatches(filled, volume.boundary, spacing);
     logPatchRadii(filled, spacing);
@@ -482,10 +480,9 @@ std::string patchesDictionaryText(const ParticleizedMold& mold) {
          << patch.mode << ";\n    particles   " << patch.particleCount << ";\n";
     if (patch.grading.maxSpacing > 0.0) {
       text << "    // graded: dx within " << patch.grading.fineDepth << " m of "
-           << (patch.grading.fineSurfaces.empty() ? std::string("the surface")
-                                                  : "the fineSurfaces (" +
-                                                        groupNamesOf(patch.grading.fineSurfaces) +
-                                                        " )")
+           << (patch.grading.fineSurfaces.empty()
+                   ? std::string("the surface")
+                   : "the fineSurfaces (" + groupNamesOf(patch.grading.fineSurfaces) + " )")
            << ", coarser inward up to " << patch.grading.maxSpacing << " m\n";
     }
     text << "}\n\n";

@@ -22,7 +22,9 @@ struct LevelGrid {
            (static_cast<std::uint64_t>(j + offset) << 21) | static_cast<std::uint64_t>(k + offset);
   }
   std::int64_t cellOf(Real x) const { return static_cast<std::int64_t>(std::floor(x / radius)); }
-  std::uint64_t keyOf(const Vector& x) const { return key(cellOf(x[0]), cellOf(x[1]), cellOf(x[2])); }
+  std::uint64_t keyOf(const Vector& x) const {
+    return key(cellOf(x[0]), cellOf(x[1]), cellOf(x[2]));
+  }
 };
 
 struct Neighbour {
@@ -47,8 +49,10 @@ GradedPairs findGradedPairs(const std::vector<Vector>& x, const std::vector<Real
   const Real widest = spacings.empty() ? Real(0) : hOverDx * spacings.back();
   for (int axis = 0; axis < 3; ++axis) {
     if (periodic.isPeriodic(axis) && !(periodic.period(axis) > 2 * widest)) {
-      throw Error("a periodic axis is shorter than twice the coarsest support radius of a graded "
-                  "cloud (" + std::to_string(2 * widest) + " m)");
+      throw Error(
+          "a periodic axis is shorter than twice the coarsest support radius of a graded "
+          "cloud (" +
+          std::to_string(2 * widest) + " m)");
     }
   }
   for (std::size_t i = 0; i < n; ++i) {

@@ -248,8 +248,7 @@ void ExposedArea::computeIn() {
         fullness_[e].resize(x.size());
       }
       const GradedPairs* coarse = coarsePairs_[e].get();
-      const Real* localSpacing =
-          coarse ? cloud->scalarField(field::localSpacing).data() : nullptr;
+      const Real* localSpacing = coarse ? cloud->scalarField(field::localSpacing).data() : nullptr;
       const Real* depth = coarse && cloud->hasScalarField(field::wallDistance)
                               ? cloud->scalarField(field::wallDistance).data()
                               : nullptr;
@@ -318,8 +317,7 @@ void ExposedArea::computeIn() {
       const auto& granularity = cloud->scalarField(field::granularity);
       auto& area = cloud->scalarField(field::exposedArea);
       const GradedPairs* coarse = coarsePairs_[e].get();
-      const Real* localSpacing =
-          coarse ? cloud->scalarField(field::localSpacing).data() : nullptr;
+      const Real* localSpacing = coarse ? cloud->scalarField(field::localSpacing).data() : nullptr;
 #pragma omp parallel for schedule(static)
       for (std::size_t i = 0; i < x.size(); ++i) {
         Real weighted = volume[i] * selfKernel * fullness_[e][i];

@@ -40,7 +40,8 @@ void GradedConduction::build(const ParticleCloud& cloud, Real supportRadius, Rea
   rowStart_ = pairs.rowStart;
   neighbours_ = pairs.neighbours;
   const auto separation = [&](std::size_t j, std::size_t i) {  // x_j - x_i, minimum image
-    return Vec(periodic.separation(placed[j], placed[i]).template head<Dim>().template cast<double>());
+    return Vec(
+        periodic.separation(placed[j], placed[i]).template head<Dim>().template cast<double>());
   };
   std::vector<double> volume(n);
   for (std::size_t i = 0; i < n; ++i) volume[i] = double(mass[i]) / double(rho[i]);
@@ -179,10 +180,10 @@ void GradedConduction::build(const ParticleCloud& cloud, Real supportRadius, Rea
   std::ostringstream line;
   line << "graded conduction in cloud '" << cloud.name() << "': " << n << " particles at "
        << spacings.size() << " spacings (" << spacings.front() << " to " << spacings.back()
-       << " m), " << pairCount() << " pairs, each with its own kernel; first moments held to zero at "
-       << interiorCount << " particles inside (" << iterations
-       << " conjugate-gradient iterations, largest left " << largest
-       << " of the pair sum), weights scaled by " << leastRatio << " at least";
+       << " m), " << pairCount()
+       << " pairs, each with its own kernel; first moments held to zero at " << interiorCount
+       << " particles inside (" << iterations << " conjugate-gradient iterations, largest left "
+       << largest << " of the pair sum), weights scaled by " << leastRatio << " at least";
   description_ = line.str();
 }
 

@@ -88,9 +88,9 @@ std::string HeatConduction::buildGradedPairs() {
                   "run (-parallel) does not conduct through one yet; run it serial (OpenMP "
                   "threads), or particleize the mold without grading");
     }
-    graded_[a] = std::make_unique<GradedConduction>(cloud, context_.dimension,
-                                                    context_.supportRadius, context_.spacing,
-                                                    context_.neighbourhood->periodicBox());
+    graded_[a] =
+        std::make_unique<GradedConduction>(cloud, context_.dimension, context_.supportRadius,
+                                           context_.spacing, context_.neighbourhood->periodicBox());
     if (!line.str().empty()) line << "; ";
     line << graded_[a]->description();
   }

@@ -108,13 +108,14 @@ std::string errorOf(const std::string& dict) {
 }
 
 TEST(MoldGrading, MistakesInGradingAreNamed) {
-  EXPECT_NE(errorOf(dieDict("grading { maxSpacing 0.003; }")).find(
-                "'maxSpacing' must be at least twice the spacing"),
+  EXPECT_NE(errorOf(dieDict("grading { maxSpacing 0.003; }"))
+                .find("'maxSpacing' must be at least twice the spacing"),
             std::string::npos);
   EXPECT_NE(errorOf(dieDict("grading { maxSpacing 0.008; fineLayers 2; }"))
                 .find("'fineLayers' must be at least wallLayers (3)"),
             std::string::npos);
-  const std::string absent = errorOf(dieDict("grading { maxSpacing 0.008; fineSurfaces (cavity); }"));
+  const std::string absent =
+      errorOf(dieDict("grading { maxSpacing 0.008; fineSurfaces (cavity); }"));
   EXPECT_NE(absent.find("fineSurfaces names 'cavity', which is not a Physical Surface"),
             std::string::npos)
       << absent;

@@ -62,7 +62,8 @@ ParticleCloud gradedStrip(const std::vector<Band>& bands, Real T) {
 }
 
 // Fine at both faces, doubled twice towards the middle: 16 dx at dx, 8 at 2 dx, 16 at 4 dx.
-const std::vector<Band> twiceDoubled{{0, 16, 1}, {16, 24, 2}, {24, 40, 4}, {40, 48, 2}, {48, 64, 1}};
+const std::vector<Band> twiceDoubled{
+    {0, 16, 1}, {16, 24, 2}, {24, 40, 4}, {40, 48, 2}, {48, 64, 1}};
 
 // The pairs of the strip alone, with mass and rho = 1 per unit volume.
 GradedConduction pairsOf(ParticleCloud& cloud, bool corrected) {
@@ -186,7 +187,8 @@ std::vector<double> slabErrors(const std::vector<Band>& bands) {
     const ParticleCloud& body = run.clouds.front();
     double sum = 0;
     for (std::size_t i = 0; i < body.size(); ++i) {
-      const double error = (body.scalarField(field::T)[i] - series(body.positions()[i][0], t)) / 100;
+      const double error =
+          (body.scalarField(field::T)[i] - series(body.positions()[i][0], t)) / 100;
       sum += error * error;
     }
     errors.push_back(std::sqrt(sum / double(body.size())));
@@ -240,7 +242,8 @@ ParticleCloud gradedBlock(int n, int maxSpacing) {
   for (int corner = 0; corner < 8; ++corner) {
     box.vertices.emplace_back(corner & 1 ? side : 0, corner & 2 ? side : 0, corner & 4 ? side : 0);
   }
-  const int quads[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
+  const int quads[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4},
+                           {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
   for (const auto& q : quads) {
     box.triangles.push_back({q[0], q[1], q[2]});
     box.triangles.push_back({q[0], q[2], q[3]});
@@ -316,12 +319,12 @@ void checkFacesOfAGradedBlock(int n) {
   const double piece = span * span;
   const double bottomError = bottom / piece - 1, wallError = wall / piece - 1,
                farWallError = farWall / piece - 1;
-  std::printf("graded block, %zu particles (%zu coarser than dx): bottom face %+.3f %%, side face "
-              "across the changes of spacing %+.3f %%, the face at x = L %+.3f %%, inside %.3e of a face, "
-              "all %+.3f %% of 6 L^2\n",
-              block.size(), coarse, 100 * bottomError, 100 * wallError, 100 * farWallError,
-              inside / (side * side),
-              100 * (total / (6 * side * side) - 1));
+  std::printf(
+      "graded block, %zu particles (%zu coarser than dx): bottom face %+.3f %%, side face "
+      "across the changes of spacing %+.3f %%, the face at x = L %+.3f %%, inside %.3e of a face, "
+      "all %+.3f %% of 6 L^2\n",
+      block.size(), coarse, 100 * bottomError, 100 * wallError, 100 * farWallError,
+      inside / (side * side), 100 * (total / (6 * side * side) - 1));
   ::testing::Test::RecordProperty("bottomError_" + std::to_string(n), std::to_string(bottomError));
   ::testing::Test::RecordProperty("wallError_" + std::to_string(n), std::to_string(wallError));
   EXPECT_LT(std::abs(bottomError), 0.005);  // a flat face of 4 dx particles: R_A is exact there
