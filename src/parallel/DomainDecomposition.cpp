@@ -28,9 +28,12 @@ void DomainDecomposition::distribute(std::vector<Cloud> clouds) {
   halos_.assign(clouds_.size(), HaloExchange());
   decompose();
   for (std::size_t c = 0; c < clouds_.size(); ++c) redistribute(c);
-  for (std::size_t c = 0; c < clouds_.size(); ++c) {
-    halos_[c].build(*clouds_[c].cloud, bisection_, haloRadius_, periodic_, comm_);
-  }
+  for (std::size_t c = 0; c < clouds_.size(); ++c) buildHalo(c);
+}
+
+void DomainDecomposition::buildHalo(std::size_t c) {
+  const double radius = clouds_[c].haloRadius > 0 ? clouds_[c].haloRadius : haloRadius_;
+  halos_[c].build(*clouds_[c].cloud, bisection_, radius, periodic_, comm_);
 }
 
 // The bisection of every cloud's owned particles, wherever they are (at the start a serial
@@ -101,7 +104,7 @@ void DomainDecomposition::update(Neighbourhood& neighbourhood, bool rebuild) {
   for (std::size_t c = 0; c < clouds_.size(); ++c) {
     if (!rebalance && !clouds_[c].moves) continue;
     redistribute(c);
-    halos_[c].build(*clouds_[c].cloud, bisection_, haloRadius_, periodic_, comm_);
+    buildHalo(c);
   }
   neighbourhood.update(CloudOrder::keep, true);
 }

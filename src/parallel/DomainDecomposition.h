@@ -15,8 +15,9 @@ namespace sphcast {
 // A run decomposed over the ranks of a communicator (doc/design.md §5, "Parallel runs"): space
 // cut into one subdomain per rank by recursive bisection of every cloud's weighted particles;
 // each rank holds the particles of its subdomain, followed by a halo of copies of the other
-// ranks' particles within the neighbour search's reach (h plus the lists' skin), so that a pair
-// loop over its own particles finds exactly the neighbours a serial run finds. The solver's
+// ranks' particles within the neighbour search's reach (h plus the lists' skin; a graded mold's
+// coarsest support plus the skin), so that a pair loop over its own particles finds exactly the
+// neighbours a serial run finds. The solver's
 // search goes through update(); a model brings the halo up to date between two of its passes
 // through the neighbourhood's syncHalo, which lands in refresh().
 class DomainDecomposition : public HaloSync {
@@ -25,6 +26,9 @@ class DomainDecomposition : public HaloSync {
     ParticleCloud* cloud = nullptr;
     bool moves = false;       // migrates at every rebuild (the metal); else at re-balances
     std::int64_t weight = 1;  // one particle's share of a rank's work
+    // its halo's reach, 0: the search's (haloRadius); a mold particleized at graded spacing
+    // takes its coarsest particles' support plus the skin (their pairs reach that far)
+    double haloRadius = 0;
   };
 
   // haloRadius: the neighbour search's reach (support radius plus skin).
@@ -70,6 +74,7 @@ class DomainDecomposition : public HaloSync {
   void decompose();
   void redistribute(std::size_t c);  // drops the halo, migrates, puts the owned in cell order
   std::size_t indexOf(const ParticleCloud& cloud) const;
+  void buildHalo(std::size_t c);
 
   Communicator comm_;
   DecompositionSettings settings_;

@@ -276,6 +276,28 @@ void CastingSolver::decompose() {
       decomposed.push_back({writable(wall), moving, wallWeight});
     }
   }
+  // a mold particleized at graded spacing: its halo reaches its coarsest particles' support
+  // h l_max / dx (their pairs within it, thermal/GradedConduction.h, sph/ExposedArea.h)
+  double smallestSpacing = 0;
+  for (const auto& entry : decomposed) {
+    const auto attribute = entry.cloud->attributes().find("spacing");
+    if (attribute == entry.cloud->attributes().end()) continue;
+    smallestSpacing =
+        smallestSpacing == 0 ? attribute->second : std::min(smallestSpacing, attribute->second);
+  }
+  for (auto& entry : decomposed) {
+    double coarsest = 0;
+    if (entry.cloud->hasScalarField(field::localSpacing)) {
+      for (const Real l : entry.cloud->scalarField(field::localSpacing)) {
+        coarsest = std::max(coarsest, static_cast<double>(l));
+      }
+    }
+    coarsest = comm_.max(coarsest);  // a serial start's particles are all on rank 0
+    if (coarsest > smallestSpacing && smallestSpacing > 0) {
+      entry.haloRadius = models_.neighbourhood->radius() * coarsest / smallestSpacing +
+                         models_.neighbourhood->skin();
+    }
+  }
   models_.decomposition->distribute(decomposed);
   models_.neighbourhood->setHaloSync(models_.decomposition.get());
   info() << "Decomposition: " << models_.decomposition->describe() << '\n';

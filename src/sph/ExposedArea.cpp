@@ -151,23 +151,20 @@ ExposedArea::ExposedArea(ExposedAreaForm form, int dimension, Real supportRadius
   }
 }
 
-// The pairs of each graded exposed cloud's coarser particles within it, found once.
+// The pairs of each graded exposed cloud's coarser particles within it, this rank's own rows
+// (their halo reaches the coarsest support, DomainDecomposition::Cloud::haloRadius): found at the
+// first pass, and again where a decomposed run moved the cloud's particles.
 void ExposedArea::findCoarsePairs() {
-  if (coarsePairs_.size() == exposed_.size()) return;
   coarsePairs_.resize(exposed_.size());
+  coarseLayouts_.resize(exposed_.size(), 0);
   for (std::size_t e = 0; e < exposed_.size(); ++e) {
     const ParticleCloud& cloud = *exposed_[e];
     if (!cloud.hasScalarField(field::localSpacing)) continue;
     if (std::find(covering_.begin(), covering_.end(), &cloud) == covering_.end()) continue;
-    if (neighbourhood_.decomposed()) {
-      throw Error("cloud '" + cloud.name() +
-                  "' is a mold particleized at graded spacing (field localSpacing): a decomposed "
-                  "run (-parallel) does not take one yet; run it serial (OpenMP threads), or "
-                  "particleize the mold without grading");
-    }
+    if (coarsePairs_[e] && coarseLayouts_[e] == cloud.layoutVersion()) continue;
     const auto& localSpacing = cloud.scalarField(field::localSpacing);
     std::vector<std::uint8_t> coarse(cloud.size(), 0);
-    for (std::size_t i = 0; i < cloud.size(); ++i) {
+    for (std::size_t i = 0; i < cloud.ownedSize(); ++i) {
       coarse[i] = localSpacing[i] > Real(1.001) * spacing_ ? 1 : 0;
     }
     const auto& placed = cloud.hasVectorField(field::restPosition)
@@ -176,6 +173,7 @@ void ExposedArea::findCoarsePairs() {
     coarsePairs_[e] = std::make_unique<GradedPairs>(
         findGradedPairs(placed, localSpacing, supportRadius_ / spacing_,
                         neighbourhood_.periodicBox(), &coarse, PairSupport::row));
+    coarseLayouts_[e] = cloud.layoutVersion();
   }
 }
 

@@ -15,28 +15,45 @@ namespace sphcast {
 
 GradedConduction::GradedConduction(const ParticleCloud& cloud, int dimension, Real supportRadius,
                                    Real spacing, const PeriodicBox& periodic,
-                                   bool correctFirstMoments) {
+                                   bool correctFirstMoments, const Neighbourhood* decomposition) {
   if (dimension == 2) {
-    build<2>(cloud, supportRadius, spacing, periodic, correctFirstMoments);
+    build<2>(cloud, supportRadius, spacing, periodic, correctFirstMoments, decomposition);
   } else {
-    build<3>(cloud, supportRadius, spacing, periodic, correctFirstMoments);
+    build<3>(cloud, supportRadius, spacing, periodic, correctFirstMoments, decomposition);
   }
 }
 
 template <int Dim>
 void GradedConduction::build(const ParticleCloud& cloud, Real supportRadius, Real spacing,
-                             const PeriodicBox& periodic, bool correctFirstMoments) {
+                             const PeriodicBox& periodic, bool correctFirstMoments,
+                             const Neighbourhood* decomposition) {
   using Vec = Eigen::Matrix<double, Dim, 1>;
   using Mat = Eigen::Matrix<double, Dim, Dim>;
   const std::size_t n = cloud.size();
+  // the rows: this rank's own particles (decomposed: the halo's are its owners' rows)
+  const std::size_t owned = cloud.ownedSize();
+  std::vector<std::uint8_t> ownRows(n, 0);
+  std::fill(ownRows.begin(), ownRows.begin() + static_cast<long>(owned), 1);
+  const auto sumOverRanks = [&](double value) {
+    if (decomposition == nullptr) return value;
+    std::vector<double> values{value};
+    decomposition->sumOverRanks(values);
+    return values[0];
+  };
+  const auto maxOverRanks = [&](double value) {
+    return decomposition ? decomposition->maxOverRanks(value) : value;
+  };
+  const auto syncHalo = [&](std::vector<Vec>& values) {
+    if (decomposition) decomposition->syncHalo(cloud, values);
+  };
   const auto& placed = cloud.hasVectorField(field::restPosition)
                            ? cloud.vectorField(field::restPosition)
                            : cloud.positions();
   const auto& localSpacing = cloud.scalarField(field::localSpacing);
   const auto& mass = cloud.scalarField(field::mass);
   const auto& rho = cloud.scalarField(field::rho);
-  const GradedPairs pairs =
-      findGradedPairs(placed, localSpacing, supportRadius / spacing, periodic);
+  const GradedPairs pairs = findGradedPairs(placed, localSpacing, supportRadius / spacing, periodic,
+                                            owned < n ? &ownRows : nullptr);
   rowStart_ = pairs.rowStart;
   neighbours_ = pairs.neighbours;
   const auto separation = [&](std::size_t j, std::size_t i) {  // x_j - x_i, minimum image
@@ -60,7 +77,7 @@ void GradedConduction::build(const ParticleCloud& cloud, Real supportRadius, Rea
                     rSquared / (rSquared + etaSquared);
     }
   }
-  std::vector<Real> spacings(localSpacing.begin(), localSpacing.end());
+  std::vector<Real> spacings(localSpacing.begin(), localSpacing.begin() + static_cast<long>(owned));
   std::sort(spacings.begin(), spacings.end());
   spacings.erase(std::unique(spacings.begin(), spacings.end()), spacings.end());
 
@@ -72,7 +89,7 @@ void GradedConduction::build(const ParticleCloud& cloud, Real supportRadius, Rea
     const auto& depth = cloud.scalarField(field::wallDistance);
     for (std::size_t i = 0; i < n; ++i) {
       interior[i] = depth[i] >= hOverDxForInterior * localSpacing[i] ? 1 : 0;
-      interiorCount += interior[i];
+      if (i < owned) interiorCount += interior[i];
     }
   }
   const auto pairLength = [&](std::size_t i, std::size_t j) {
@@ -107,30 +124,34 @@ void GradedConduction::build(const ParticleCloud& cloud, Real supportRadius, Rea
     }
   };
   // in index order on one thread: the weights are then the same bits on any number of threads
+  // (decomposed: each rank's own, summed over the ranks)
   const auto dot = [&](const std::vector<Vec>& a, const std::vector<Vec>& b) {
     double sum = 0;
-    for (std::size_t i = 0; i < n; ++i) sum += interior[i] ? a[i].dot(b[i]) : 0.0;
-    return sum;
+    for (std::size_t i = 0; i < owned; ++i) sum += interior[i] ? a[i].dot(b[i]) : 0.0;
+    return sumOverRanks(sum);
   };
   std::vector<Mat> inverse(n, Mat::Zero());
-  for (std::size_t i = 0; i < n; ++i) {
+  for (std::size_t i = 0; i < owned; ++i) {
     if (interior[i]) inverse[i] = diagonal[i].inverse();
   }
-  std::vector<Vec> lambda(n, Vec::Zero()), residual(n, Vec::Zero()), z(n), direction(n), product(n);
-  for (std::size_t i = 0; i < n; ++i) residual[i] = interior[i] ? moment[i] : Vec::Zero();
+  std::vector<Vec> lambda(n, Vec::Zero()), residual(n, Vec::Zero()), z(n, Vec::Zero()),
+      direction(n, Vec::Zero()), product(n, Vec::Zero());
+  for (std::size_t i = 0; i < owned; ++i) residual[i] = interior[i] ? moment[i] : Vec::Zero();
   const double target = 1e-26 * std::max(dot(residual, residual), 1e-300);  // |r| 1e-13 of |b|
   int iterations = 0;
   double residualSquared = dot(residual, residual);
-  if (interiorCount > 0 && residualSquared > 0) {
-    for (std::size_t i = 0; i < n; ++i) z[i] = inverse[i] * residual[i];
+  const auto interiorEverywhere = sumOverRanks(static_cast<double>(interiorCount));
+  if (interiorEverywhere > 0 && residualSquared > 0) {
+    for (std::size_t i = 0; i < owned; ++i) z[i] = inverse[i] * residual[i];
     direction = z;
     double rz = dot(residual, z);
     constexpr int maxIterations = 5000;
     while (residualSquared > target && iterations < maxIterations) {
+      syncHalo(direction);  // the halo's lambda_j are their owners' unknowns
       apply(direction, product);
       const double alpha = rz / dot(direction, product);
 #pragma omp parallel for schedule(static)
-      for (std::size_t i = 0; i < n; ++i) {
+      for (std::size_t i = 0; i < owned; ++i) {
         lambda[i] += alpha * direction[i];
         residual[i] -= alpha * product[i];
         z[i] = inverse[i] * residual[i];
@@ -139,11 +160,13 @@ void GradedConduction::build(const ParticleCloud& cloud, Real supportRadius, Rea
       const double beta = rzNext / rz;
       rz = rzNext;
 #pragma omp parallel for schedule(static)
-      for (std::size_t i = 0; i < n; ++i) direction[i] = z[i] + beta * direction[i];
+      for (std::size_t i = 0; i < owned; ++i) direction[i] = z[i] + beta * direction[i];
       residualSquared = dot(residual, residual);
       ++iterations;
     }
   }
+  // both rows of a pair on two ranks scale it by the same bits: the books close across ranks
+  syncHalo(lambda);
   double leastRatio = 1;
 #pragma omp parallel for schedule(static) reduction(min : leastRatio)
   for (std::size_t i = 0; i < n; ++i) {
@@ -156,9 +179,10 @@ void GradedConduction::build(const ParticleCloud& cloud, Real supportRadius, Rea
       leastRatio = std::min(leastRatio, ratio);
     }
   }
+  leastRatio = -maxOverRanks(-leastRatio);
   leastWeightRatio_ = leastRatio;
   double largest = 0;
-  for (std::size_t i = 0; i < n; ++i) {
+  for (std::size_t i = 0; i < owned; ++i) {
     if (!interior[i]) continue;
     Vec sum = Vec::Zero();
     double scale = 0;
@@ -169,6 +193,7 @@ void GradedConduction::build(const ParticleCloud& cloud, Real supportRadius, Rea
     }
     largest = std::max(largest, sum.norm() / scale);
   }
+  largest = maxOverRanks(largest);
   largestFirstMoment_ = largest;
   if (!(leastRatio > 0)) {
     throw Error("graded conduction in cloud '" + cloud.name() +
@@ -177,13 +202,20 @@ void GradedConduction::build(const ParticleCloud& cloud, Real supportRadius, Rea
                 std::to_string(leastRatio) +
                 "); particleize the mold with more fineLayers or a smaller maxSpacing");
   }
+  // the counts and spacings of every rank's particles
+  const double finest =
+      -maxOverRanks(spacings.empty() ? -std::numeric_limits<double>::max() : -spacings.front());
+  const double coarsest =
+      maxOverRanks(spacings.empty() ? -std::numeric_limits<double>::max() : spacings.back());
   std::ostringstream line;
-  line << "graded conduction in cloud '" << cloud.name() << "': " << n << " particles at "
-       << spacings.size() << " spacings (" << spacings.front() << " to " << spacings.back()
-       << " m), " << pairCount()
-       << " pairs, each with its own kernel; first moments held to zero at " << interiorCount
-       << " particles inside (" << iterations << " conjugate-gradient iterations, largest left "
-       << largest << " of the pair sum), weights scaled by " << leastRatio << " at least";
+  line << "graded conduction in cloud '" << cloud.name()
+       << "': " << std::llround(sumOverRanks(static_cast<double>(owned)))
+       << " particles at spacings from " << finest << " to " << coarsest << " m, "
+       << std::llround(sumOverRanks(static_cast<double>(neighbours_.size()))) / 2
+       << " pairs, each with its own kernel; first moments held to zero at "
+       << std::llround(interiorEverywhere) << " particles inside (" << iterations
+       << " conjugate-gradient iterations, largest left " << largest
+       << " of the pair sum), weights scaled by " << leastRatio << " at least";
   description_ = line.str();
 }
 

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "boundaries/PeriodicBox.h"
+#include "particles/Neighbourhood.h"
 #include "particles/ParticleCloud.h"
 
 namespace sphcast {
@@ -30,16 +31,24 @@ namespace sphcast {
 // surface's): a linear profile is then exact there and the books still close to round-off. (Held
 // only where the widest pair's support lay inside, the correction reached 256 of a 100 mm die's
 // 14,719 particles, and its casting solidified 1.7 % early with the air's losses; at h_i, 3,571.)
-// The mold moves, if at all, as a rigid body, so the pairs and weights are made once, from the
+// The mold moves, if at all, as a rigid body, so the pairs and weights are made from the
 // body-frame positions (restPosition) where the cloud has them, and a restart makes the same.
+// Decomposed (-parallel), each rank makes the rows of its own particles, over its halo (which
+// reaches the coarsest support: DomainDecomposition::Cloud::haloRadius), the correction by
+// conjugate gradients over every rank's particles, and again whenever the cloud's particles
+// changed places (a re-balance; a moving mold's migration); serial, once.
 class GradedConduction {
  public:
   // periodic: the case's periodic axes (pairs across them by the minimum image).
   // correctFirstMoments false: the plain pair sum (for measuring what the correction does).
+  // decomposition: a decomposed run's neighbourhood (its halo refreshes and sums over the
+  // ranks), null for a serial run; the constructor is then collective.
   GradedConduction(const ParticleCloud& cloud, int dimension, Real supportRadius, Real spacing,
-                   const PeriodicBox& periodic = {}, bool correctFirstMoments = true);
+                   const PeriodicBox& periodic = {}, bool correctFirstMoments = true,
+                   const Neighbourhood* decomposition = nullptr);
 
-  // Adds sum_j G'_ij (phi_j - phi_i) / m_i to energyRate (indexed like the cloud).
+  // Adds sum_j G'_ij (phi_j - phi_i) / m_i to energyRate (indexed like the cloud; the owned
+  // particles' rows).
   void addEnergyRates(const Real* phi, const Real* mass, Real* energyRate) const;
 
   // "graded conduction in 'die': 41,300 particles at 4 spacings, 2.1e6 pairs; ..." for the log.
@@ -53,7 +62,8 @@ class GradedConduction {
  private:
   template <int Dim>
   void build(const ParticleCloud& cloud, Real supportRadius, Real spacing,
-             const PeriodicBox& periodic, bool correctFirstMoments);
+             const PeriodicBox& periodic, bool correctFirstMoments,
+             const Neighbourhood* decomposition);
 
   std::vector<std::size_t> rowStart_;  // CSR: row i holds [rowStart_[i], rowStart_[i + 1])
   std::vector<std::uint32_t> neighbours_;

@@ -74,23 +74,24 @@ std::string HeatConduction::description() const {
   return line.str();
 }
 
-// The graded molds' pairs (GradedConduction), made once; their lines for the log.
+// The graded molds' pairs (GradedConduction): made at the start, and again where a decomposed
+// run moved a graded cloud's particles between ranks (the same decision on every rank: the
+// build is collective); their lines for the log.
 std::string HeatConduction::buildGradedPairs() {
   std::ostringstream line;
-  graded_.clear();
   graded_.resize(context_.clouds.size());
+  gradedLayouts_.resize(context_.clouds.size(), 0);
+  const bool decomposed = context_.neighbourhood->decomposed();
   for (std::size_t a = 0; a < context_.clouds.size(); ++a) {
     if (!graded(a) || !conducts(a, a)) continue;
     const ParticleCloud& cloud = *context_.clouds[a].cloud;
-    if (context_.comm.size() > 1) {
-      throw Error("cloud '" + cloud.name() +
-                  "' is a mold particleized at graded spacing (field localSpacing): a decomposed "
-                  "run (-parallel) does not conduct through one yet; run it serial (OpenMP "
-                  "threads), or particleize the mold without grading");
-    }
-    graded_[a] =
-        std::make_unique<GradedConduction>(cloud, context_.dimension, context_.supportRadius,
-                                           context_.spacing, context_.neighbourhood->periodicBox());
+    bool stale = !graded_[a] || gradedLayouts_[a] != cloud.layoutVersion();
+    if (decomposed) stale = context_.neighbourhood->maxOverRanks(stale ? 1.0 : 0.0) > 0;
+    if (!stale) continue;
+    graded_[a] = std::make_unique<GradedConduction>(
+        cloud, context_.dimension, context_.supportRadius, context_.spacing,
+        context_.neighbourhood->periodicBox(), true, decomposed ? context_.neighbourhood : nullptr);
+    gradedLayouts_[a] = cloud.layoutVersion();
     if (!line.str().empty()) line << "; ";
     line << graded_[a]->description();
   }
@@ -186,7 +187,7 @@ std::size_t HeatConduction::placeHeldSurface(std::size_t a) {
 }
 
 void HeatConduction::addEnergyRates() {
-  if (graded_.size() != context_.clouds.size()) buildGradedPairs();
+  buildGradedPairs();  // where a graded cloud's particles changed places (a decomposed run's)
   if (context_.dimension == 2) {
     addRatesIn<2>();
   } else {

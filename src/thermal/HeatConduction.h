@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cstdint>
 #include <memory>
 #include <set>
 #include <string>
@@ -56,7 +57,7 @@ namespace sphcast {
 //
 // Within a mold particleized at graded spacing (the field localSpacing), the pairs and their
 // kernels are GradedConduction's: each pair's own support, corrected so that a linear profile
-// is exact across a change of spacing.
+// is exact across a change of spacing (made again where a decomposed run moved its particles).
 //
 // Between two clouds whose materials have a contact coefficient (moldContact), this model
 // leaves the exchange to MoldContactTransfer: the coefficient is the interface's conductance.
@@ -93,9 +94,10 @@ class HeatConduction : public HeatTransferModel {
 
   const HeatTransferContext& context_;
   std::set<std::pair<std::string, std::string>> contactPairs_;
-  std::vector<std::vector<Real>> volumes_;  // m / rho of each cloud, refreshed every pass
+  std::vector<std::vector<Real>> volumes_;    // m / rho of each cloud, refreshed every pass
   std::vector<std::vector<Real>> kirchhoff_;  // phi(T) of each cloud, refreshed every pass
   std::vector<std::unique_ptr<GradedConduction>> graded_;  // per cloud: null unless graded
+  std::vector<std::uint64_t> gradedLayouts_;  // the clouds' layoutVersion at graded_'s build
   double stableDeltaT_;
 };
 

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 
 #include "particles/FieldNames.h"
@@ -48,6 +49,46 @@ inline void addWallCells(ParticleCloud& wall, int columnBegin, int columnEnd, in
       const Vector normal = normalOf(column, row).normalized();
       wall.vectorField(field::normal)[k] = normal;
       wall.scalarField(field::wallDistance)[k] = depthOf(column, row);
+    }
+  }
+}
+
+// Wall particles in the cells [columnBegin, columnEnd) x [rowBegin, rowEnd) where inside(column,
+// row), particleized at graded spacing as particleizeMold grades a volume (geometry/
+// GradedVolume.h): each 2 x 2 block of cells (aligned on columnBegin, rowBegin) whose four cells
+// are inside and none fine(column, row) is one particle of 2 dx at the block's centre, of volume
+// 4 dx^2; the other cells inside are particles of dx. Each particle has the field localSpacing,
+// its normal normalAt(x) and its depth depthAt(x) (x in spacings from `lower`).
+template <class Inside, class Fine, class NormalAt, class DepthAt>
+inline void addGradedWallCells(ParticleCloud& wall, int columnBegin, int columnEnd, int rowBegin,
+                               int rowEnd, Real dx, const Vector& lower, Inside inside, Fine fine,
+                               NormalAt normalAt, DepthAt depthAt) {
+  if (!wall.hasScalarField(field::localSpacing)) wall.addScalarField(field::localSpacing);
+  const auto add = [&](Real column, Real row, Real spacing) {
+    const std::size_t k = wall.size();
+    wall.resize(k + 1);
+    const Vector at(column, row, 0);
+    wall.positions()[k] = lower + at * dx;
+    wall.scalarField(field::volume)[k] = spacing * spacing;
+    wall.scalarField(field::localSpacing)[k] = spacing;
+    wall.vectorField(field::normal)[k] = normalAt(at).normalized();
+    wall.scalarField(field::wallDistance)[k] = depthAt(at) * dx;
+  };
+  for (int row = rowBegin; row < rowEnd; row += 2) {
+    for (int column = columnBegin; column < columnEnd; column += 2) {
+      bool coarse = true;
+      for (int r = row; r < row + 2; ++r) {
+        for (int c = column; c < column + 2; ++c) coarse = coarse && inside(c, r) && !fine(c, r);
+      }
+      if (coarse) {
+        add(Real(column + 1), Real(row + 1), 2 * dx);
+        continue;
+      }
+      for (int r = row; r < std::min(row + 2, rowEnd); ++r) {
+        for (int c = column; c < std::min(column + 2, columnEnd); ++c) {
+          if (inside(c, r)) add(Real(c) + Real(0.5), Real(r) + Real(0.5), dx);
+        }
+      }
     }
   }
 }
