@@ -44,10 +44,25 @@ FlowSetup readFlowSetup(const CaseDescription& description) {
   schemes.checkKeys({"densityScheme", "kernelCorrection", "viscousForm", "wallSlip",
                      "wallDissipation", "supportRadius", "soundSpeed", "deltaSPHCoeffs",
                      "wallClearance", "neighbourListSkin", "viscositySolver",
-                     "viscositySolverCoeffs"});
+                     "viscositySolverCoeffs", "densityReinitialisation",
+                     "densityReinitialisationCoeffs"});
   FlowSettings& settings = setup.settings;
   settings.densityScheme = schemes.getChoice("densityScheme", {"riemann", "standard", "deltaSPH"});
   settings.kernelCorrection = schemes.getOrDefault<bool>("kernelCorrection", false);
+  settings.reinitialiseDensity =
+      schemes.getChoiceOrDefault("densityReinitialisation", {"none", "packed"}, "none") == "packed";
+  if (schemes.found("densityReinitialisationCoeffs")) {
+    const Dictionary& coeffs = schemes.subDict("densityReinitialisationCoeffs");
+    coeffs.checkKeys({"relaxation"});
+    settings.densityRelaxation =
+        coeffs.getOrDefault<Real>("relaxation", settings.densityRelaxation);
+    if (!(settings.densityRelaxation > 0 && settings.densityRelaxation <= 1)) {
+      throw DictionaryError(coeffs.location("relaxation"),
+                            "'relaxation' (the share of the way to the packed density taken "
+                            "each flow step) must lie in (0, 1] in " +
+                                coeffs.name());
+    }
+  }
   settings.viscousForm = schemes.getChoice("viscousForm", {"Morris", "Cleary"});
   const std::string solver =
       schemes.getChoiceOrDefault("viscositySolver", {"auto", "explicit", "implicit"}, "auto");

@@ -64,6 +64,16 @@ void WeaklyCompressibleFlow::checkInput() {
   if (settings_.dimension != 2 && settings_.dimension != 3) {
     throw Error("flow: dimension must be 2 or 3, not " + std::to_string(settings_.dimension));
   }
+  if (settings_.reinitialiseDensity) {
+    const auto spacing = fluid_.attributes().find("spacing");
+    if (spacing == fluid_.attributes().end()) {
+      throw Error("flow: densityReinitialisation needs the fluid cloud '" + fluid_.name() +
+                  "' to have its spacing attribute");
+    }
+    densityReinitialisation_ = std::make_unique<DensityReinitialisation>(
+        settings_.dimension, settings_.supportRadius, static_cast<Real>(spacing->second),
+        settings_.densityRelaxation);
+  }
   if (settings_.densityScheme != "riemann" && settings_.densityScheme != "standard" &&
       settings_.densityScheme != "deltaSPH") {
     throw Error("unknown densityScheme '" + settings_.densityScheme +
@@ -334,6 +344,7 @@ void WeaklyCompressibleFlow::computeRatesAndKick(double deltaT) {
   const auto& acceleration = fluid_.vectorField(field::acceleration);
   viscosityImplicit_ = solvesViscosityImplicitly(deltaT);
   addWallTime(timings_.rates, [&] {
+    if (densityReinitialisation_) densityReinitialisation_->apply(fluid_, walls_, neighbourhood_);
     updatePressure();
     computeRates();
   });
@@ -365,6 +376,12 @@ void WeaklyCompressibleFlow::computeRatesAndKick(double deltaT) {
 void WeaklyCompressibleFlow::computeRatesAndKickStormerVerlet(Real dt) {
   const Real halfDt = Real(0.5) * dt;
   viscosityImplicit_ = solvesViscosityImplicitly(dt);
+  if (densityReinitialisation_) {
+    addWallTime(timings_.rates, [&] {
+      densityReinitialisation_->apply(fluid_, walls_, neighbourhood_);
+      updatePressure();
+    });
+  }
   auto& v = fluid_.vectorField(field::U);
   auto& rho = fluid_.scalarField(field::rho);
   const auto& densityRate = fluid_.scalarField(field::densityRate);

@@ -9,6 +9,7 @@
 #include "boundaries/WallCondition.h"
 #include "particles/Neighbourhood.h"
 #include "particles/ParticleCloud.h"
+#include "sph/DensityReinitialisation.h"
 #include "sph/FluidForceModel.h"
 #include "sph/ImplicitViscosity.h"
 #include "sph/KernelCorrection.h"
@@ -51,6 +52,12 @@ struct FlowSettings {
   // clumping through the tensile instability. Solidification sets it (cavitationPressure);
   // otherwise there is none.
   Real cavitationPressure = std::numeric_limits<Real>::lowest();
+  // densityReinitialisation packed in system/sphSchemes: the density relaxed towards the
+  // particles' arrangement before every evaluation of the rates (DensityReinitialisation.h), by
+  // densityReinitialisationCoeffs' relaxation of the way each step; none (the default): the
+  // continuity equation's alone.
+  bool reinitialiseDensity = false;
+  Real densityRelaxation = Real(0.3);
 };
 
 // The work the rate passes did and left out since the start, in particle-steps (one particle's
@@ -223,6 +230,7 @@ class WeaklyCompressibleFlow {
   void computeRatesFor();
 
   FlowSettings settings_;
+  std::unique_ptr<DensityReinitialisation> densityReinitialisation_;  // null unless asked for
   ParticleCloud& fluid_;
   std::vector<const ParticleCloud*> walls_;
   std::unique_ptr<Neighbourhood> ownNeighbourhood_;  // null in a shared one

@@ -184,6 +184,25 @@ TEST(FlowSetup, BadKeysAreErrorsAtTheirLine) {
               "kernelCorrection");
   expectError(errorOf(FlowCase("", "densityScheme deltaSPH;\ndeltaSPHCoeffs { delta -1; }\n")),
               "sphSchemes:3", "'delta' must not be negative");
+  expectError(errorOf(FlowCase("", riemann + "densityReinitialisation summed;\n")), "sphSchemes:3",
+              "none packed");
+  expectError(
+      errorOf(FlowCase("", riemann + "densityReinitialisation packed;\n"
+                                     "densityReinitialisationCoeffs { relaxation 1.5; }\n")),
+      "sphSchemes:4", "'relaxation'");
+  expectError(errorOf(FlowCase("", riemann + "densityReinitialisationCoeffs { relax 0.2; }\n")),
+              "sphSchemes:3", "relax");
+}
+
+// densityReinitialisation: none by default; packed with its relaxation (DensityReinitialisation.h).
+TEST(FlowSetup, DensityReinitialisationIsOffByDefaultAndTakesItsRelaxation) {
+  EXPECT_FALSE(FlowCase("", "densityScheme riemann;\n").read().settings.reinitialiseDensity);
+  const FlowSetup setup = FlowCase("",
+                                   "densityScheme riemann;\ndensityReinitialisation packed;\n"
+                                   "densityReinitialisationCoeffs { relaxation 0.2; }\n")
+                              .read();
+  EXPECT_TRUE(setup.settings.reinitialiseDensity);
+  EXPECT_DOUBLE_EQ(setup.settings.densityRelaxation, 0.2);
 }
 
 // c is the case's (case/CaseDescription.h), read and checked in one place for the flow and the
