@@ -14,7 +14,8 @@
 // melt and presses it), with surface tension (the continuum surface force with a contact angle,
 // and the paper's surface energy), conduction, mold contact, air and radiation on every cloud.
 // Same particles, positions, temperatures, the lid's travel and the energy books within
-// round-off growth of the serial run's; the same with the lid particleized at graded spacing.
+// round-off growth of the serial run's; the same with the lid particleized at graded spacing,
+// and with the density relaxed towards the particles' arrangement (densityReinitialisation).
 // Also: a melt freezing far from some ranks (models that must take part in halo refreshes and
 // sums on ranks that hold none of a cloud), heat alone (the heat clouds decomposed) in a uniform
 // and in a graded mold, a start from fewer pieces than ranks, and the refusal of a case with
@@ -232,9 +233,9 @@ ParticleCloud gradedTank2D(int columns, int rows, int layers, int fine, Real spa
 }
 
 // lidGraded: the lid 14 x 8 spacings, dx in its 4 lower rows, 2 dx in the 4 upper (a body
-// particleized at graded spacing, moving); else 13 x 3 at dx.
+// particleized at graded spacing, moving); else 13 x 3 at dx. schemes: more of sphSchemes.
 void writePourCase(const fs::path& root, int ranks, const std::string& surfaceTension,
-                   bool lidGraded = false) {
+                   bool lidGraded = false, const std::string& schemes = "") {
   writeText(root / "system/controlDict",
             "application sphCastFoam; startFrom latestTime; stopAt endTime; endTime 0.12;\n"
             "deltaT 1e-5; adjustTimeStep yes; maxCo 0.25; writeControl adjustableRunTime;\n"
@@ -242,7 +243,8 @@ void writePourCase(const fs::path& root, int ranks, const std::string& surfaceTe
             "functions { books { type energyBalance; clouds (metal mold lid); } }\n");
   writeText(root / "system/sphSchemes",
             "densityScheme riemann; viscousForm Morris; supportRadius 0.012;\n"
-            "soundSpeed 20; wallDissipation normalApproach;\n");
+            "soundSpeed 20; wallDissipation normalApproach;\n" +
+                schemes);
   writeText(root / "system/decomposeParDict",
             "numberOfSubdomains " + std::to_string(ranks) + "; method recursiveBisection;\n");
   writeText(root / "constant/physicsModels",
@@ -503,17 +505,21 @@ TEST(ParallelSolverTest, APourWithABodyHeatAndSurfaceTensionIsTheSerialRunWithin
   struct Variant {
     std::string model, surfaceTension;
     bool lidGraded;
+    std::string schemes;
   };
   // the third: the lid particleized at graded spacing, its pairs made again on every rank each
-  // time its particles migrate (at each rebuild of the lists)
+  // time its particles migrate (at each rebuild of the lists); the fourth: the density relaxed
+  // towards the particles' arrangement (sph/DensityReinitialisation.h), its sums over the halo
   const std::vector<Variant> variants{
-      {"continuumSurfaceForce", "model continuumSurfaceForce; contactAngle 120;", false},
-      {"surfaceEnergy", "model surfaceEnergy;", false},
-      {"gradedLid", "model continuumSurfaceForce; contactAngle 120;", true}};
-  for (const auto& [model, surfaceTension, lidGraded] : variants) {
+      {"continuumSurfaceForce", "model continuumSurfaceForce; contactAngle 120;", false, ""},
+      {"surfaceEnergy", "model surfaceEnergy;", false, ""},
+      {"gradedLid", "model continuumSurfaceForce; contactAngle 120;", true, ""},
+      {"packedDensity", "model continuumSurfaceForce; contactAngle 120;", false,
+       "densityReinitialisation packed;\n"}};
+  for (const auto& [model, surfaceTension, lidGraded, schemes] : variants) {
     const fs::path serial = scratch / (model + "Serial"), decomposed = scratch / model;
     runSerialAndDecomposed(world, serial, decomposed, [&](const fs::path& root, int ranks) {
-      writePourCase(root, ranks, surfaceTension, lidGraded);
+      writePourCase(root, ranks, surfaceTension, lidGraded, schemes);
     });
     if (!world.master()) continue;
     for (const char* time : {"0.04", "0.08", "0.12"}) {
