@@ -17,9 +17,9 @@ namespace sphcast {
 // each rank holds the particles of its subdomain, followed by a halo of copies of the other
 // ranks' particles within the neighbour search's reach (h plus the lists' skin; a graded mold's
 // coarsest support plus the skin), so that a pair loop over its own particles finds exactly the
-// neighbours a serial run finds. The solver's
-// search goes through update(); a model brings the halo up to date between two of its passes
-// through the neighbourhood's syncHalo, which lands in refresh().
+// neighbours a serial run finds. The solver's search goes through update(); a model brings the
+// halo up to date between two of its passes through the neighbourhood's syncHalo, which lands
+// in refresh().
 class DomainDecomposition : public HaloSync {
  public:
   struct Cloud {
