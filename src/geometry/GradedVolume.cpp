@@ -21,6 +21,20 @@ int gradingLevels(const VolumeGrading& grading, double spacing) {
 WallParticles gradeVolumeParticles(const WallParticles& fine, const std::vector<double>& depth,
                                    const TriangleMesh& boundary, double spacing, double fineVolume,
                                    const VolumeGrading& grading) {
+  const TriangleDistanceTree tree(boundary);
+  return gradeLatticeParticles(
+      fine, depth,
+      [&tree](const Eigen::Vector3d& x) {
+        const ClosestPoint hit = tree.closest(x, std::numeric_limits<double>::max());
+        return std::make_pair(hit.point, hit.distance);
+      },
+      spacing, fineVolume, grading, 3);
+}
+
+WallParticles gradeLatticeParticles(const WallParticles& fine, const std::vector<double>& depth,
+                                    const NearestBoundaryPoint& nearest, double spacing,
+                                    double fineVolume, const VolumeGrading& grading,
+                                    int dimension) {
   const int levels = gradingLevels(grading, spacing);
   const std::size_t count = fine.size();
   using Index = std::array<std::int64_t, 3>;
@@ -39,7 +53,7 @@ WallParticles gradeVolumeParticles(const WallParticles& fine, const std::vector<
     std::iota(order.begin(), order.end(), std::size_t{0});
     std::sort(order.begin(), order.end(),
               [&](std::size_t a, std::size_t b) { return blockOf(a, l) < blockOf(b, l); });
-    const std::size_t complete = std::size_t{1} << (3 * l);
+    const std::size_t complete = std::size_t{1} << (dimension * l);
     for (std::size_t first = 0; first < count;) {
       std::size_t last = first;
       double shallowest = std::numeric_limits<double>::max();
@@ -105,15 +119,14 @@ WallParticles gradeVolumeParticles(const WallParticles& fine, const std::vector<
       graded.wallDistances[g] = fine.wallDistances[p];
     }
   }
-  const TriangleDistanceTree tree(boundary);
 #pragma omp parallel for schedule(dynamic, 256)
   for (std::ptrdiff_t s = 0; s < static_cast<std::ptrdiff_t>(n); ++s) {
     const auto g = static_cast<std::size_t>(s);
     graded.positions[g] /= static_cast<double>(points[g]);
     if (points[g] == 1) continue;
-    const ClosestPoint hit = tree.closest(graded.positions[g], std::numeric_limits<double>::max());
-    graded.normals[g] = (hit.point - graded.positions[g]).normalized();
-    graded.wallDistances[g] = hit.distance;
+    const auto [point, distance] = nearest(graded.positions[g]);
+    graded.normals[g] = (point - graded.positions[g]).normalized();
+    graded.wallDistances[g] = distance;
   }
   return graded;
 }

@@ -1,6 +1,8 @@
 #pragma once
 
+#include <functional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "geometry/TriangleMesh.h"
@@ -25,10 +27,10 @@ struct VolumeGrading {
 // The particles of a graded volume made from `fine`, every lattice point of the volume at dx
 // (fillVolumeParticles), with `depth` each point's distance to the surfaces kept fine.
 //
-// Method: the lattice's blocks of 2^l x 2^l x 2^l points (aligned on the lattice, so that the
-// blocks of one level nest in those of the next, an octree of the lattice) stand for a particle
-// of spacing 2^l dx at the centre of their points when at least half of their 8^l points are in
-// the volume (a block cut by a face keeps the points inside; a complete block's centre is a
+// Method: the lattice's blocks of 2^l x 2^l x 2^l points (2^l x 2^l in 2D) (aligned on the lattice,
+// so that the blocks of one level nest in those of the next, an octree of the lattice) stand for a
+// particle of spacing 2^l dx at the centre of their points when at least half of their 8^l points
+// are in the volume (a block cut by a face keeps the points inside; a complete block's centre is a
 // point of the coarser lattice with the same half-cell offset, LatticeSolid.h) and every one lies
 // at least start_l deep: start_1 = fineDepth, start_(l+1) = start_l + layersPerLevel 2^l dx. A
 // point takes the coarsest block that qualifies. The blocks partition the fine lattice exactly:
@@ -40,6 +42,15 @@ struct VolumeGrading {
 WallParticles gradeVolumeParticles(const WallParticles& fine, const std::vector<double>& depth,
                                    const TriangleMesh& boundary, double spacing, double fineVolume,
                                    const VolumeGrading& grading);
+
+// The same for any lattice of `dimension` 2 (the plane z = 0: blocks of 2^l x 2^l points, a
+// quadtree) or 3, the boundary given by its nearest point to a place and the distance to it
+// (called from several threads at once).
+using NearestBoundaryPoint =
+    std::function<std::pair<Eigen::Vector3d, double>(const Eigen::Vector3d&)>;
+WallParticles gradeLatticeParticles(const WallParticles& fine, const std::vector<double>& depth,
+                                    const NearestBoundaryPoint& nearest, double spacing,
+                                    double fineVolume, const VolumeGrading& grading, int dimension);
 
 // The number of levels above dx that `grading` asks for (0: none).
 int gradingLevels(const VolumeGrading& grading, double spacing);

@@ -36,13 +36,14 @@ struct VolumeJob {
 };
 
 // A volume patch's `grading { maxSpacing ...; fineLayers ...; }` (MoldParticleization.h).
-VolumeGrading readGrading(const Dictionary& grading, const std::string& mode, int dimension,
-                          double spacing, int wallLayers) {
+VolumeGrading readGrading(const Dictionary& grading, const std::string& mode, double spacing,
+                          int wallLayers) {
   grading.checkKeys({"maxSpacing", "fineLayers", "layersPerLevel", "fineSurfaces"});
-  if (mode != "volume" || dimension != 3) {
-    throw DictionaryError(
-        grading.location(),
-        "'grading' is for the volume patches of a 3D mold (mode volume), in " + grading.name());
+  if (mode != "volume") {
+    throw DictionaryError(grading.location(),
+                          "'grading' is for the volume patches (mode volume; in 2D Physical "
+                          "Surfaces), in " +
+                              grading.name());
   }
   VolumeGrading result;
   result.maxSpacing = grading.get<double>("maxSpacing", length);
@@ -75,8 +76,7 @@ VolumeGrading readGrading(const Dictionary& grading, const std::string& mode, in
   return result;
 }
 
-std::vector<PatchRequest> readPatches(const Dictionary& patches, int dimension, double spacing,
-                                      int wallLayers) {
+std::vector<PatchRequest> readPatches(const Dictionary& patches, double spacing, int wallLayers) {
   std::vector<PatchRequest> requests;
   for (const std::string& name : patches.keys()) {
     const Dictionary& entry = patches.subDict(name);
@@ -90,7 +90,7 @@ std::vector<PatchRequest> readPatches(const Dictionary& patches, int dimension, 
     request.patch.mode = entry.getChoiceOrDefault("mode", {"shell", "volume"}, "shell");
     if (entry.found("grading")) {
       request.patch.grading =
-          readGrading(entry.subDict("grading"), request.patch.mode, dimension, spacing, wallLayers);
+          readGrading(entry.subDict("grading"), request.patch.mode, spacing, wallLayers);
     }
     requests.push_back(std::move(request));
   }
@@ -361,7 +361,7 @@ ParticleizedMold particleizeMold(const CaseFolder& caseFolder) {
   mold.wallLayers = readWallLayers(dict, spacing);
   const double maxParticles = dict.getOrDefault<double>("maxParticles", defaultMaxParticles);
   std::vector<PatchRequest> requests =
-      readPatches(dict.subDict("patches"), dimension, spacing, mold.wallLayers);
+      readPatches(dict.subDict("patches"), spacing, mold.wallLayers);
   std::vector<GeometryFilePatches> files;
   for (const std::string& file : dict.get<std::vector<std::string>>("geometry")) {
     const auto path = caseFolder.constant() / "geometry" / file;

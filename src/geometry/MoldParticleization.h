@@ -35,12 +35,12 @@ namespace sphcast {
 // the Physical Surface named by `cavity name;`; a volume patch is a Physical Surface filled on
 // the square lattice. A .geo's curves are followed by their parametrisation, a .msh's along
 // their line elements (mesh curved ones finely, dx/8 or less); particle volumes are areas (m^2).
-// grading (3D volume patches; GradedVolume.h): the particles within fineLayers dx of the
+// grading (volume patches, 3D and 2D; GradedVolume.h): the particles within fineLayers dx of the
 // volume's surface keep the spacing dx (default fineLayers 2 wallLayers, at least wallLayers:
 // the flow's walls and the contact see those only, and with 2 wallLayers a face's exposed area
 // is the uniform mold's), and deeper in the material the spacing doubles every layersPerLevel
 // (default wallLayers, at least 2) of its own spacings, up to maxSpacing (at least 2 dx). fineSurfaces (optional: Physical Surfaces of
-// the same file) keeps dx near those surfaces only, the ones the metal meets; the others, faces
+// the same file; in 2D Physical Curves) keeps dx near those surfaces only, the ones the metal meets; the others, faces
 // to the air, may then be coarse (their area: sph/ExposedArea.h). The particles carry their
 // spacing (field localSpacing), by which the solver's conduction sizes each pair's kernel
 // (thermal/GradedConduction.h).

@@ -5,6 +5,7 @@
 #include "core/Error.h"
 #include "core/Log.h"
 #include "geometry/GmshGeometry.h"
+#include "geometry/GradedVolume.h"
 #include "geometry/MoldPatchRequest.h"
 #include "geometry/WallCurves2D.h"
 
@@ -25,6 +26,49 @@ PlaneRegion regionBoundedBy(const GmshGeometry& geometry, const std::vector<int>
   return region;
 }
 
+// The area patch's particles graded (GradedVolume.h, the quadtree of the lattice): dx within
+// fineDepth of the grading's fineSurfaces (Physical Curves in 2D; none named: the region's
+// whole boundary), coarser inward.
+WallParticles gradeSurfaceGroup(const GmshGeometry& geometry, const PlaneRegion& region,
+                                const MoldPatch& patch, WallParticles filled, double spacing,
+                                double areaPerParticle) {
+  const VolumeGrading& grading = patch.grading;
+  std::vector<double> depth = filled.wallDistances;
+  if (!grading.fineSurfaces.empty()) {
+    PlaneRegion fine;
+    for (const std::string& name : grading.fineSurfaces) {
+      const PhysicalGroup* curves = geometry.findGroup(name);
+      if (curves == nullptr || curves->dimension != 1) {
+        throw Error("grading's fineSurfaces names '" + name +
+                    "', which is not a Physical Curve of the 2D geometry; the groups present "
+                    "are (" +
+                    groupNames(geometry.groups()) + " )");
+      }
+      for (const int curve : geometry.entitiesOf(*curves)) {
+        fine.add(geometry.planarCurve(curve, curveSampling(spacing)));
+      }
+    }
+    for (std::size_t p = 0; p < depth.size(); ++p) {
+      depth[p] = fine.closest(filled.positions[p].head<2>()).second;
+    }
+  }
+  const std::size_t uniform = filled.size();
+  filled = gradeLatticeParticles(
+      filled, depth,
+      [&region](const Eigen::Vector3d& x) {
+        const auto [point, distance] = region.closest(x.head<2>());
+        return std::make_pair(Eigen::Vector3d(point.x(), point.y(), 0.0), distance);
+      },
+      spacing, areaPerParticle, grading, 2);
+  info() << "    graded: " << filled.size() << " particles for the " << uniform << " at dx ("
+         << static_cast<double>(uniform) /
+                static_cast<double>(std::max<std::size_t>(filled.size(), 1))
+         << " times fewer), dx within " << grading.fineDepth << " m of "
+         << (grading.fineSurfaces.empty() ? "its boundary" : "its fineSurfaces")
+         << ", coarser inward up to " << grading.maxSpacing << " m\n";
+  return filled;
+}
+
 // The particles filling a surface group, their volumes sharing the group's exact area.
 WallParticles fillSurfaceGroup(const GmshGeometry& geometry, const PhysicalGroup& group,
                                const MoldPatch& patch, double spacing) {
@@ -38,6 +82,9 @@ WallParticles fillSurfaceGroup(const GmshGeometry& geometry, const PhysicalGroup
          << " m^2 of the geometry's " << area << " m^2; particle volume (area) set to "
          << areaPerParticle << " m^2\n";
   std::fill(filled.volumes.begin(), filled.volumes.end(), areaPerParticle);
+  if (gradingLevels(patch.grading, spacing) > 0) {
+    return gradeSurfaceGroup(geometry, region, patch, std::move(filled), spacing, areaPerParticle);
+  }
   return filled;
 }
 

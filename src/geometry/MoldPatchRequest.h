@@ -36,7 +36,8 @@ struct CavityRequest {
 };
 
 // The particles of the 2D patches (WallCurves2D.h): shells behind Physical Curves, volumes
-// filling Physical Surfaces, all in the plane z = 0.
+// filling Physical Surfaces (graded where the patch asks: GradedVolume.h's quadtree), all in
+// the plane z = 0.
 WallParticles particleizePlaneMold(const std::vector<GeometryFilePatches>& files,
                                    const std::vector<PatchRequest>& requests,
                                    const CavityRequest& cavity, double spacing, int layers);

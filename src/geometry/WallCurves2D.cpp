@@ -226,6 +226,15 @@ void PlaneRegion::add(const std::vector<Eigen::Vector2d>& polyline) {
     edges_.emplace_back(polyline[j], polyline[j + 1]);
 }
 
+std::pair<Eigen::Vector2d, double> PlaneRegion::closest(const Eigen::Vector2d& p) const {
+  Foot nearest;
+  for (const auto& [a, b] : edges_) {
+    const Foot foot = closestOnSegment(a, b, p);
+    if (foot.distance < nearest.distance) nearest = foot;
+  }
+  return {nearest.point, nearest.distance};
+}
+
 bool PlaneRegion::contains(const Eigen::Vector2d& p) const {
   // Crossings of the ray from p towards +x; the half-open test counts a vertex on the ray once.
   bool inside = false;
@@ -331,15 +340,11 @@ WallParticles fillAreaParticles(const PlaneRegion& region, double spacing, int p
          i <= latticeIndex(box.max().x(), spacing); ++i) {
       const Point p(latticeCoordinate(i, spacing), latticeCoordinate(j, spacing));
       if (!region.contains(p)) continue;
-      Foot nearest;
-      for (const auto& [a, b] : region.edges()) {
-        const Foot foot = closestOnSegment(a, b, p);
-        if (foot.distance < nearest.distance) nearest = foot;
-      }
-      const Point outward = (nearest.point - p) / std::max(nearest.distance, 1e-300);
+      const auto [point, distance] = region.closest(p);
+      const Point outward = (point - p) / std::max(distance, 1e-300);
       area.positions.emplace_back(p.x(), p.y(), 0.0);
       area.normals.emplace_back(outward.x(), outward.y(), 0.0);
-      area.wallDistances.push_back(nearest.distance);
+      area.wallDistances.push_back(distance);
       area.volumes.push_back(spacing * spacing);
       area.owners.push_back(patch);
     }

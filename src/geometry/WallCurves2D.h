@@ -29,6 +29,8 @@ class PlaneRegion {
   void add(const std::vector<Eigen::Vector2d>& polyline);
 
   bool contains(const Eigen::Vector2d& p) const;
+  // The nearest point of the boundary's edges to p and its distance (max without edges).
+  std::pair<Eigen::Vector2d, double> closest(const Eigen::Vector2d& p) const;
   // Area of the inside (the shoelace sum with each edge oriented inside-left); only meaningful
   // for a closed boundary.
   double area() const;
