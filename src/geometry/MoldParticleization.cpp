@@ -428,8 +428,14 @@ ParticleizedMold particleizeMold(const CaseFolder& caseFolder) {
   }
   if (estimate > maxParticles) {
     std::ostringstream message;
+    const bool graded = std::any_of(requests.begin(), requests.end(), [](const PatchRequest& r) {
+      return r.patch.grading.maxSpacing > 0.0;
+    });
     message << "spacing " << spacing << " m would make about " << std::llround(estimate)
             << " mold particles, more than maxParticles " << maxParticles
+            << (graded ? " (a graded volume is filled at the spacing before it is graded, and "
+                         "that fill's memory and time are these)"
+                       : "")
             << " (raise maxParticles in " << dict.name() << " if you mean it); nothing was written";
     throw DictionaryError(dict.location("spacing"), message.str());
   }

@@ -126,6 +126,12 @@ TEST(MoldGrading, MistakesInGradingAreNamed) {
   std::string shell = dieDict("grading { maxSpacing 0.008; }");
   shell.replace(shell.find("mode volume"), 11, "mode shell");
   shell.replace(shell.find("die { cloud"), 3, "pocket");
+  // the guard against too many particles counts the lattice a graded volume is filled with
+  std::string tooMany = dieDict("grading { maxSpacing 0.008; }");
+  tooMany.replace(tooMany.find("spacing 0.002;"), 14, "spacing 0.002;\nmaxParticles 1000;");
+  EXPECT_NE(errorOf(tooMany).find("a graded volume is filled at the spacing before it is graded"),
+            std::string::npos)
+      << errorOf(tooMany);
   EXPECT_NE(errorOf(shell).find("'grading' is for the volume patches (mode volume"),
             std::string::npos)
       << errorOf(shell);
