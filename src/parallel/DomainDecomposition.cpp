@@ -5,6 +5,7 @@
 
 #include "core/Error.h"
 #include "particles/CellGrid.h"
+#include "particles/FieldNames.h"
 
 namespace sphcast {
 
@@ -32,8 +33,11 @@ void DomainDecomposition::distribute(std::vector<Cloud> clouds) {
 }
 
 void DomainDecomposition::buildHalo(std::size_t c) {
-  const double radius = clouds_[c].haloRadius > 0 ? clouds_[c].haloRadius : haloRadius_;
-  halos_[c].build(*clouds_[c].cloud, bisection_, radius, periodic_, comm_);
+  const Cloud& entry = clouds_[c];
+  const double radius = entry.haloRadius > 0 ? entry.haloRadius : haloRadius_;
+  const std::vector<Real>* reach =
+      entry.perParticleReach ? &entry.cloud->scalarField(field::supportReach) : nullptr;
+  halos_[c].build(*entry.cloud, bisection_, radius, periodic_, comm_, reach, entry.skin);
 }
 
 // The bisection of every cloud's owned particles, wherever they are (at the start a serial

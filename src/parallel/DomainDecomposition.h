@@ -27,8 +27,11 @@ class DomainDecomposition : public HaloSync {
     bool moves = false;       // migrates at every rebuild (the metal); else at re-balances
     std::int64_t weight = 1;  // one particle's share of a rank's work
     // its halo's reach, 0: the search's (haloRadius); a mold particleized at graded spacing
-    // takes its coarsest particles' support plus the skin (their pairs reach that far)
+    // takes its coarsest particles' support plus the skin (their pairs reach that far), and
+    // where it has the field supportReach, each particle its own reach plus the skin
     double haloRadius = 0;
+    double skin = 0;
+    bool perParticleReach = false;  // the field supportReach holds each particle's reach
   };
 
   // haloRadius: the neighbour search's reach (support radius plus skin).

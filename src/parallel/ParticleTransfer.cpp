@@ -2,6 +2,7 @@
 // then each field's values for all the particles, contiguous.
 #include "parallel/ParticleTransfer.h"
 
+#include <algorithm>
 #include <cstdint>
 #include <cstring>
 #include <optional>
@@ -249,7 +250,8 @@ std::size_t migrateParticles(ParticleCloud& cloud, const RecursiveBisection& dec
 }
 
 void HaloExchange::build(ParticleCloud& cloud, const RecursiveBisection& decomposition,
-                         double radius, const PeriodicBox& periodic, const Communicator& comm) {
+                         double radius, const PeriodicBox& periodic, const Communicator& comm,
+                         const std::vector<Real>* reach, double skin) {
   remove(cloud);
   if (decomposition.parts() != comm.size()) {
     throw Error("halo exchange: " + std::to_string(decomposition.parts()) + " subdomains for " +
@@ -263,7 +265,8 @@ void HaloExchange::build(ParticleCloud& cloud, const RecursiveBisection& decompo
   const auto& x = cloud.positions();
   for (std::size_t i = 0; i < owned_; ++i) {
     near.clear();
-    decomposition.partsNear(x[i], radius, periodic, comm.rank(), near);
+    const double own = reach ? std::min(radius, double((*reach)[i]) + skin) : radius;
+    decomposition.partsNear(x[i], own, periodic, comm.rank(), near);
     for (int r : near) sendIndices_[static_cast<std::size_t>(r)].push_back(i);
   }
   std::vector<std::vector<char>> outgoing(ranks);

@@ -49,8 +49,11 @@ std::size_t migrateParticles(ParticleCloud& cloud, const RecursiveBisection& dec
 class HaloExchange {
  public:
   // Collective: removes the halo of the last build, then appends the new one, grouped by rank.
+  // reach: null, every particle sent within `radius` of a subdomain; else each within
+  // min(radius, reach[i] + skin) (a graded mold's supportReach).
   void build(ParticleCloud& cloud, const RecursiveBisection& decomposition, double radius,
-             const PeriodicBox& periodic, const Communicator& comm);
+             const PeriodicBox& periodic, const Communicator& comm,
+             const std::vector<Real>* reach = nullptr, double skin = 0);
   // Collective: overwrites the halo copies' positions and every field with their owners'.
   void refresh(ParticleCloud& cloud, const Communicator& comm) const;
   // Collective: overwrites the named scalar and vector fields only ("position": the positions).

@@ -26,6 +26,9 @@ inline constexpr const char* wallDistance = "wallDistance";  // m, behind the wa
 inline constexpr const char* patch = "patch";                // the patch's number (patches file)
 // m, a graded mold's particle's own spacing (geometry/GradedVolume.h); absent: the case's dx
 inline constexpr const char* localSpacing = "localSpacing";
+// m, a graded mold's particle: the largest support radius among the particles whose support
+// holds it, its own included (GradedPairs.h); a decomposed run sends it that far as a halo
+inline constexpr const char* supportReach = "supportReach";
 inline constexpr const char* wallPatchRadius = "wallPatchRadius";  // m, surface the foot stands for
 // a second foot, on a face no first foot stands for near it (geometry/WallSurfacePatches.h)
 inline constexpr const char* secondNormal = "secondNormal";

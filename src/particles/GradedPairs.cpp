@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 #include <unordered_map>
 
@@ -134,6 +135,30 @@ GradedPairs findGradedPairs(const std::vector<Vector>& x, const std::vector<Real
     }
   }
   return pairs;
+}
+
+std::vector<Real> gradedSupportReach(const std::vector<Vector>& x,
+                                     const std::vector<Real>& localSpacing, Real hOverDx,
+                                     const PeriodicBox& periodic) {
+  const std::size_t n = x.size();
+  std::vector<Real> reach(n);
+  Real finest = std::numeric_limits<Real>::max();
+  for (std::size_t i = 0; i < n; ++i) {
+    reach[i] = hOverDx * localSpacing[i];
+    finest = std::min(finest, localSpacing[i]);
+  }
+  // the finest particles' supports reach no one farther than their own: only the coarser rows
+  std::vector<std::uint8_t> coarser(n, 0);
+  for (std::size_t i = 0; i < n; ++i) coarser[i] = localSpacing[i] > Real(1.001) * finest ? 1 : 0;
+  const GradedPairs rows =
+      findGradedPairs(x, localSpacing, hOverDx, periodic, &coarser, PairSupport::row);
+  for (std::size_t i = 0; i < n; ++i) {
+    for (std::size_t s = rows.rowStart[i]; s < rows.rowStart[i + 1]; ++s) {
+      Real& r = reach[rows.neighbours[s]];
+      r = std::max(r, rows.supportRadii[s]);
+    }
+  }
+  return reach;
 }
 
 }  // namespace sphcast

@@ -39,4 +39,12 @@ GradedPairs findGradedPairs(const std::vector<Vector>& positions,
                             const std::vector<std::uint8_t>* wanted = nullptr,
                             PairSupport support = PairSupport::mean);
 
+// Each particle's reach: the largest support radius h_i = (h / dx) l_i among the particles i
+// whose support holds it (|x_i - x_j| < h_i), its own included. A pair of the cloud, of either
+// support, is never longer than the reach of both its particles, so a halo that sends each
+// particle as far as its reach (plus the lists' skin) holds every pair a rank's rows need.
+std::vector<Real> gradedSupportReach(const std::vector<Vector>& positions,
+                                     const std::vector<Real>& localSpacing,
+                                     Real supportRadiusOverSpacing, const PeriodicBox& periodic);
+
 }  // namespace sphcast

@@ -1,13 +1,21 @@
 // The solver's decomposed run (-parallel): which clouds are cut among the ranks, what each
 // particle weighs, how far each cloud's halo reaches, and the search through the decomposition.
 #include <algorithm>
+#include <cmath>
+#include <cstdint>
 
 #include "core/Error.h"
 #include "parallel/DecompositionSettings.h"
 #include "particles/FieldNames.h"
+#include "particles/GradedPairs.h"
 #include "solver/CastingSolver.h"
 
 namespace sphcast {
+
+namespace {
+// the cloud attribute that says for which h / dx its supportReach was made
+constexpr const char* supportReachHOverDx = "supportReachHOverDx";
+}  // namespace
 
 // -parallel decomposes the flow's fluid and walls (every model of a casting runs on them), or,
 // without a flow, the heat clouds. A case with neither (ballistic clouds alone), or with heat
@@ -77,8 +85,10 @@ void CastingSolver::decompose() {
       decomposed.push_back({writable(wall), moving, wallWeight});
     }
   }
-  // a mold particleized at graded spacing: its halo reaches its coarsest particles' support
-  // h l_max / dx (their pairs within it, thermal/GradedConduction.h, sph/ExposedArea.h)
+  // a mold particleized at graded spacing: its halo reaches at most its coarsest particles'
+  // support h l_max / dx (their pairs within it, thermal/GradedConduction.h, sph/ExposedArea.h),
+  // each particle its supportReach (GradedPairs.h): made where one rank holds the whole cloud
+  // (a serial start), read back with the cloud at a restart (written with it)
   double smallestSpacing = 0;
   for (const auto& entry : decomposed) {
     const auto attribute = entry.cloud->attributes().find("spacing");
@@ -95,8 +105,34 @@ void CastingSolver::decompose() {
     }
     coarsest = comm_.max(coarsest);  // a serial start's particles are all on rank 0
     if (coarsest > smallestSpacing && smallestSpacing > 0) {
-      entry.haloRadius = models_.neighbourhood->radius() * coarsest / smallestSpacing +
-                         models_.neighbourhood->skin();
+      const double hOverDx = models_.neighbourhood->radius() / smallestSpacing;
+      entry.haloRadius = hOverDx * coarsest + models_.neighbourhood->skin();
+      entry.skin = models_.neighbourhood->skin();
+      ParticleCloud& cloud = *entry.cloud;
+      // the reaches hold for the h / dx they were made with (the cloud's attribute)
+      const auto made = cloud.attributes().find(supportReachHOverDx);
+      const bool current = cloud.hasScalarField(field::supportReach) &&
+                           made != cloud.attributes().end() &&
+                           std::abs(made->second - hOverDx) <= 1e-9 * hOverDx;
+      const auto owned = static_cast<std::int64_t>(cloud.ownedSize());
+      const bool whole = comm_.max(owned == comm_.sum(owned) ? 1.0 : 0.0) > 0;
+      if (!current && whole) {
+        auto& reach = cloud.hasScalarField(field::supportReach)
+                          ? cloud.scalarField(field::supportReach)
+                          : cloud.addScalarField(field::supportReach);
+        if (cloud.size() > 0) {
+          const auto& placed = cloud.hasVectorField(field::restPosition)
+                                   ? cloud.vectorField(field::restPosition)
+                                   : cloud.positions();
+          reach =
+              gradedSupportReach(placed, cloud.scalarField(field::localSpacing),
+                                 static_cast<Real>(hOverDx), models_.neighbourhood->periodicBox());
+        }
+        cloud.attributes()[supportReachHOverDx] = hOverDx;
+      }
+      // else, a restart's pieces without current reaches: every particle sent within the
+      // coarsest support
+      entry.perParticleReach = current || whole;
     }
   }
   models_.decomposition->distribute(decomposed);

@@ -10,7 +10,7 @@
 # in the same bytes as the run that went on (the graded pairs and their correction are made
 # again from the same places). Decomposed on 2 ranks (-parallel, in a build with MPI), the
 # graded die is the serial run within round-off: solid at the same time, every T within 1e-6 K,
-# the books closed.
+# the books closed; restarted decomposed from 10 s, the same halo and the same temperatures.
 . "$SPHCAST_TEST_TOOLS"
 findVtkPython
 runValidationTutorial gradedDie 3
@@ -55,6 +55,26 @@ for cloud in ("die", "metal"):
     print("decomposed on 2 ranks: %s T within %.3g K of the serial run's" % (cloud, worst))
     assert worst < 1e-6, cloud
 PY
+    # restarted decomposed from 10 s: the particles' reaches (supportReach) read back with the
+    # pieces, the same halo, the same temperatures to the bit
+    cp -r decomposed restartedDecomposed
+    rm -rf restartedDecomposed/20 "restartedDecomposed/${final#graded/}"
+    (
+        cd restartedDecomposed || exit 1
+        export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMP_NUM_THREADS=1
+        timeout 300 mpirun --oversubscribe -np 2 sphCastFoam -parallel > log.restart 2>&1
+    ) || fail "the decomposed graded die restarted from 10 s: $(tail -5 restartedDecomposed/log.restart)"
+    halo() { sed -n 's/^Decomposition: .*halos \([0-9]*\) particles.*/\1/p' "$1"; }
+    [ "$(halo decomposed/log.sphCastFoam)" = "$(halo restartedDecomposed/log.restart)" ] ||
+        fail "the restarted decomposed run's halo $(halo restartedDecomposed/log.restart), the first's $(halo decomposed/log.sphCastFoam)"
+    "$python" - "decomposed/${final#graded/}" "restartedDecomposed/${final#graded/}" <<'PY' || fail "the restarted decomposed graded die's temperatures"
+import sys
+from cloudFields import read_cloud
+for cloud in ("die", "metal"):
+    first = read_cloud(sys.argv[1] + "/" + cloud + ".pvtp", ("T",))
+    again = read_cloud(sys.argv[2] + "/" + cloud + ".pvtp", ("T",))
+    assert first.keys() == again.keys() and all(first[k]["T"] == again[k]["T"] for k in first), cloud
+PY
     "$python" - <<'PY' || fail "the decomposed graded die's books"
 import glob
 path = glob.glob("decomposed/postProcessing/balance/*/energyBalance")[0]
@@ -64,4 +84,4 @@ print("decomposed on 2 ranks: the books within %.3g" % worst)
 assert worst < 1e-10
 PY
 fi
-pass "a graded die: 3 times fewer particles, the casting solid within 1 % of the uniform die's time, restarts to the same bytes, decomposed on 2 ranks the serial run's"
+pass "a graded die: 3 times fewer particles, the casting solid within 1 % of the uniform die's time, restarts to the same bytes, decomposed on 2 ranks the serial run's, restarted decomposed the same"
