@@ -29,8 +29,8 @@ struct VolumeGrading {
 //
 // Method: the lattice's blocks of 2^l x 2^l x 2^l points (2^l x 2^l in 2D) (aligned on the lattice,
 // so that the blocks of one level nest in those of the next, an octree of the lattice) stand for a
-// particle of spacing 2^l dx at the centre of their points when at least half of their 8^l points
-// are in the volume (a block cut by a face keeps the points inside; a complete block's centre is a
+// particle of spacing 2^l dx at the centre of their points when at least half of their 8^l
+// points (4^l) are in the volume (a block cut by a face keeps the points inside; a complete block's centre is a
 // point of the coarser lattice with the same half-cell offset, LatticeSolid.h) and every one lies
 // at least start_l deep: start_1 = fineDepth, start_(l+1) = start_l + layersPerLevel 2^l dx. A
 // point takes the coarsest block that qualifies. The blocks partition the fine lattice exactly:
