@@ -87,4 +87,28 @@ class WendlandC2Kernel {
 using WendlandC2Kernel2D = WendlandC2Kernel<2>;
 using WendlandC2Kernel3D = WendlandC2Kernel<3>;
 
+// sum_j dx^d W(|x_j|) over the cubic lattice of spacing dx with a particle at the origin: a full
+// support's kernel sum (about 1), the norm of a kernel sum (a colour, a summed density).
+template <int Dim>
+Real latticeKernelSum(Real supportRadius, Real spacing) {
+  const WendlandC2Kernel<Dim> kernel(supportRadius);
+  const int reach = static_cast<int>(std::ceil(supportRadius / spacing));
+  const int zReach = Dim == 3 ? reach : 0;
+  const Real cell = std::pow(spacing, Dim);
+  Real sum = 0;
+  for (int k = -zReach; k <= zReach; ++k) {
+    for (int j = -reach; j <= reach; ++j) {
+      for (int i = -reach; i <= reach; ++i) {
+        sum += cell * kernel.value(spacing * std::sqrt(Real(i * i + j * j + k * k)));
+      }
+    }
+  }
+  return sum;
+}
+
+inline Real latticeKernelSum(int dimension, Real supportRadius, Real spacing) {
+  return dimension == 2 ? latticeKernelSum<2>(supportRadius, spacing)
+                        : latticeKernelSum<3>(supportRadius, spacing);
+}
+
 }  // namespace sphcast

@@ -9,34 +9,12 @@
 
 namespace sphcast {
 
-namespace {
-
-template <int Dim>
-Real latticeSumIn(Real supportRadius, Real spacing) {
-  const WendlandC2Kernel<Dim> kernel(supportRadius);
-  const Real cell = std::pow(spacing, Dim);
-  const int reach = static_cast<int>(std::ceil(supportRadius / spacing)) + 1;
-  const int reachZ = Dim == 3 ? reach : 0;
-  Real sum = 0;
-  for (int k = -reachZ; k <= reachZ; ++k) {
-    for (int j = -reach; j <= reach; ++j) {
-      for (int i = -reach; i <= reach; ++i) {
-        sum += cell * kernel.value(spacing * std::sqrt(Real(i * i + j * j + k * k)));
-      }
-    }
-  }
-  return sum;
-}
-
-}  // namespace
-
 DensityReinitialisation::DensityReinitialisation(int dimension, Real supportRadius, Real spacing,
                                                  Real relaxation)
     : dimension_(dimension),
       supportRadius_(supportRadius),
       relaxation_(relaxation),
-      latticeSum_(dimension == 2 ? latticeSumIn<2>(supportRadius, spacing)
-                                 : latticeSumIn<3>(supportRadius, spacing)) {}
+      latticeSum_(latticeKernelSum(dimension, supportRadius, spacing)) {}
 
 void DensityReinitialisation::apply(ParticleCloud& fluid,
                                     const std::vector<const ParticleCloud*>& walls,

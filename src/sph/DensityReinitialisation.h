@@ -38,9 +38,6 @@ class DensityReinitialisation {
   void apply(ParticleCloud& fluid, const std::vector<const ParticleCloud*>& walls,
              const Neighbourhood& neighbourhood) const;
 
-  // sigma_0: sum_j dx^d W(r_j) over a full lattice, self included (about 1).
-  Real latticeSum() const { return latticeSum_; }
-
  private:
   template <int Dim>
   void applyIn(ParticleCloud& fluid, const std::vector<const ParticleCloud*>& walls,
@@ -49,7 +46,7 @@ class DensityReinitialisation {
   int dimension_;
   Real supportRadius_;
   Real relaxation_;
-  Real latticeSum_;
+  Real latticeSum_;  // sigma_0 (particles/WendlandKernel.h, latticeKernelSum)
 };
 
 }  // namespace sphcast

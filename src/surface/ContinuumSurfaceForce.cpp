@@ -54,23 +54,6 @@ double planarProfile(const WendlandC2Kernel<Dim>& kernel, double h, double t) {
   }
 }
 
-// The kernel's sum over a cubic lattice of spacing dx with a particle at the centre.
-template <int Dim>
-Real latticeSum(const WendlandC2Kernel<Dim>& kernel, Real h, Real dx) {
-  const int reach = static_cast<int>(std::ceil(h / dx));
-  const int zReach = Dim == 3 ? reach : 0;
-  const Real cell = std::pow(dx, Dim);
-  Real sum = 0;
-  for (int k = -zReach; k <= zReach; ++k) {
-    for (int j = -reach; j <= reach; ++j) {
-      for (int i = -reach; i <= reach; ++i) {
-        sum += cell * kernel.value(dx * std::sqrt(Real(i * i + j * j + k * k)));
-      }
-    }
-  }
-  return sum;
-}
-
 // P(0): the largest colour gradient of a half space (at its surface).
 Real planarProfileAtSurface(int dimension, Real h) {
   return static_cast<Real>(dimension == 2 ? planarProfile(WendlandC2Kernel<2>(h), h, 0.0)
@@ -133,11 +116,8 @@ ContinuumSurfaceForce::ContinuumSurfaceForce(SurfaceTensionSettings settings, Pa
                    static_cast<Real>(std::cos(largestContactAngle * std::numbers::pi / 180)))),
       sinTheta_(std::sqrt(std::max(Real(0), Real(1) - cosTheta_ * cosTheta_))),
       profile_(settings_.dimension, settings_.supportRadius),
-      bulkColour_(settings_.dimension == 2
-                      ? latticeSum(WendlandC2Kernel<2>(settings_.supportRadius),
-                                   settings_.supportRadius, settings_.spacing)
-                      : latticeSum(WendlandC2Kernel<3>(settings_.supportRadius),
-                                   settings_.supportRadius, settings_.spacing)),
+      bulkColour_(
+          latticeKernelSum(settings_.dimension, settings_.supportRadius, settings_.spacing)),
       surfaceGradient_(planarProfileAtSurface(settings_.dimension, settings_.supportRadius)),
       fluid_(fluid),
       walls_(std::move(walls)),
