@@ -24,57 +24,60 @@ for cloud in die metal; do
     cmp -s "$final/$cloud.vtp" "restarted/${final#graded/}/$cloud.vtp" ||
         fail "the restarted graded run's $cloud at ${final#graded/} s differs from the continued run's"
 done
+# runDecomposed CASE LOG: sphCastFoam in CASE on 2 ranks of one thread.
+runDecomposed() {
+    (cd "$1" && OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMP_NUM_THREADS=1 \
+        timeout 300 mpirun --oversubscribe -np 2 sphCastFoam -parallel > "$2" 2>&1)
+}
+# temperaturesWithin A B TOLERANCE: every particle of the die and the metal in time folder A
+# and in B (a serial .vtp or a decomposed .pvtp) with its T within TOLERANCE K (0: the bits).
+temperaturesWithin() {
+    "$python" - "$@" <<'PY'
+import os
+import sys
+from cloudFields import read_cloud
+def path(folder, cloud):
+    pieces = os.path.join(folder, cloud + ".pvtp")
+    return pieces if os.path.exists(pieces) else os.path.join(folder, cloud + ".vtp")
+first, second, tolerance = sys.argv[1], sys.argv[2], float(sys.argv[3])
+for cloud in ("die", "metal"):
+    a = read_cloud(path(first, cloud), ("T",))
+    b = read_cloud(path(second, cloud), ("T",))
+    assert a.keys() == b.keys(), cloud + ": not the same particles"
+    worst = max(abs(a[k]["T"] - b[k]["T"]) for k in a)
+    print("%s against %s: %s T within %.3g K" % (second, first, cloud, worst))
+    assert worst <= tolerance, cloud
+PY
+}
 if command -v mpirun > /dev/null && [ -f graded/0/die.vtp ]; then
     cp -r graded decomposed
-    (
-        cd decomposed || exit 1
-        rm -rf [1-9]* 0.* postProcessing log.*
-        cat > system/decomposeParDict <<DICT
+    rm -rf decomposed/[1-9]* decomposed/0.* decomposed/postProcessing decomposed/log.*
+    cat > decomposed/system/decomposeParDict <<DICT
 FoamFile { version 2.0; format ascii; class dictionary; object decomposeParDict; }
 numberOfSubdomains 2;
 method recursiveBisection;
 DICT
-        export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMP_NUM_THREADS=1
-        timeout 300 mpirun --oversubscribe -np 2 sphCastFoam -parallel > log.sphCastFoam 2>&1 ||
-            fail "the graded die decomposed on 2 ranks: $(tail -5 log.sphCastFoam)"
-    ) || exit 1
+    runDecomposed decomposed log.sphCastFoam ||
+        fail "the graded die decomposed on 2 ranks: $(tail -5 decomposed/log.sphCastFoam)"
     # the same casting as the serial graded run's: solid at the same time, every particle's T
     # within round-off (measured: the same step, 3.4e-13 K), the books closed
     solid() { sed -n 's/.*the casting is solid (endWhenSolid) at time \([0-9.e+-]*\).*/\1/p' "$1"; }
     [ -n "$(solid graded/log.sphCastFoam)" ] &&
         [ "$(solid graded/log.sphCastFoam)" = "$(solid decomposed/log.sphCastFoam)" ] ||
         fail "the decomposed graded die solid at $(solid decomposed/log.sphCastFoam) s, the serial at $(solid graded/log.sphCastFoam) s"
-    "$python" - "$final" "decomposed/${final#graded/}" <<'PY' || fail "the decomposed graded die's temperatures"
-import sys
-from cloudFields import read_cloud
-for cloud in ("die", "metal"):
-    serial = read_cloud(sys.argv[1] + "/" + cloud + ".vtp", ("T",))
-    decomposed = read_cloud(sys.argv[2] + "/" + cloud + ".pvtp", ("T",))
-    assert serial.keys() == decomposed.keys(), cloud + ": not the same particles"
-    worst = max(abs(serial[k]["T"] - decomposed[k]["T"]) for k in serial)
-    print("decomposed on 2 ranks: %s T within %.3g K of the serial run's" % (cloud, worst))
-    assert worst < 1e-6, cloud
-PY
+    temperaturesWithin "$final" "decomposed/${final#graded/}" 1e-6 ||
+        fail "the decomposed graded die's temperatures"
     # restarted decomposed from 10 s: the particles' reaches (supportReach) read back with the
     # pieces, the same halo, the same temperatures to the bit
     cp -r decomposed restartedDecomposed
     rm -rf restartedDecomposed/20 "restartedDecomposed/${final#graded/}"
-    (
-        cd restartedDecomposed || exit 1
-        export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMP_NUM_THREADS=1
-        timeout 300 mpirun --oversubscribe -np 2 sphCastFoam -parallel > log.restart 2>&1
-    ) || fail "the decomposed graded die restarted from 10 s: $(tail -5 restartedDecomposed/log.restart)"
+    runDecomposed restartedDecomposed log.restart ||
+        fail "the decomposed graded die restarted from 10 s: $(tail -5 restartedDecomposed/log.restart)"
     halo() { sed -n 's/^Decomposition: .*halos \([0-9]*\) particles.*/\1/p' "$1"; }
     [ "$(halo decomposed/log.sphCastFoam)" = "$(halo restartedDecomposed/log.restart)" ] ||
         fail "the restarted decomposed run's halo $(halo restartedDecomposed/log.restart), the first's $(halo decomposed/log.sphCastFoam)"
-    "$python" - "decomposed/${final#graded/}" "restartedDecomposed/${final#graded/}" <<'PY' || fail "the restarted decomposed graded die's temperatures"
-import sys
-from cloudFields import read_cloud
-for cloud in ("die", "metal"):
-    first = read_cloud(sys.argv[1] + "/" + cloud + ".pvtp", ("T",))
-    again = read_cloud(sys.argv[2] + "/" + cloud + ".pvtp", ("T",))
-    assert first.keys() == again.keys() and all(first[k]["T"] == again[k]["T"] for k in first), cloud
-PY
+    temperaturesWithin "decomposed/${final#graded/}" "restartedDecomposed/${final#graded/}" 0 ||
+        fail "the restarted decomposed graded die's temperatures"
     "$python" - <<'PY' || fail "the decomposed graded die's books"
 import glob
 path = glob.glob("decomposed/postProcessing/balance/*/energyBalance")[0]
