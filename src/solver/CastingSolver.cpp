@@ -19,12 +19,15 @@ namespace sphcast {
 
 // The flow's limits over every rank (each the smallest), so that all take the same step.
 FlowStepLimits CastingSolver::flowStepLimits(double maxCo) const {
-  FlowStepLimits limits = models_.flow->stepLimits(maxCo);
+  // the cooling mode's flow steps are kick-drift-kick's (evolveCooling)
+  FlowStepLimits limits =
+      models_.flow->stepLimits(maxCo, flowSetup_.settings.dualCriteria && !cooling_);
   if (!parallel_) return limits;
   std::vector<double> each{limits.acoustic,     limits.viscous,     limits.bodyForce,
-                           limits.acceleration, limits.densityRate, limits.forceModel};
+                           limits.acceleration, limits.densityRate, limits.forceModel,
+                           limits.advection};
   comm_.min(each);
-  return {each[0], each[1], each[2], each[3], each[4], each[5], limits.forceModelName};
+  return {each[0], each[1], each[2], each[3], each[4], each[5], limits.forceModelName, each[6]};
 }
 
 double CastingSolver::stableDeltaT(std::string& limiter) const {
@@ -80,7 +83,12 @@ void CastingSolver::evolve(double deltaT) {
         std::string limiter;
         return models_.energy->stableDeltaT(limiter);
       });
-  if (models_.flow) flowFirstKickAndDrift(deltaT);
+  const bool dualCriteria = models_.flow && flowSetup_.settings.dualCriteria;
+  if (dualCriteria) {
+    flowAdvectionStep(deltaT);
+  } else if (models_.flow) {
+    flowFirstKickAndDrift(deltaT);
+  }
   if (heatThisStep)
     addWallTime(monitor_.times().heat, [&] { firstHeatKick(heatSchedule_.deltaT()); });
   // before the search places it; after the heat's first kick, the spilled metal leaves with the
@@ -91,7 +99,7 @@ void CastingSolver::evolve(double deltaT) {
   if (heatThisStep && models_.flow && models_.exposedArea) {
     addWallTime(monitor_.times().heat, [&] { models_.exposedArea->compute(); });
   }
-  if (models_.flow) flowRatesAndSecondKick(deltaT);
+  if (models_.flow && !dualCriteria) flowRatesAndSecondKick(deltaT);
   if (heatThisStep) {
     addWallTime(monitor_.times().heat, [&] { finishHeatStep(); });
     heatSchedule_.countStep();
@@ -103,6 +111,28 @@ void CastingSolver::evolve(double deltaT) {
 void CastingSolver::flowFirstKickAndDrift(double deltaT) {
   models_.flow->kickAndDrift(deltaT);
   models_.movingMolds.drift(deltaT, time_.value());
+  models_.pouringInlets.pour(time_.value(), models_.decomposition.get());
+}
+
+// dualCriteria's flow step: the rheology's viscosity, the advection step's acoustic sub-steps
+// with the bodies moved and kicked and the inlets' buffers held in each, then the metal the
+// inlets pour. The search follows.
+void CastingSolver::flowAdvectionStep(double deltaT) {
+  if (models_.rheology) models_.rheology->update(deltaT);
+  // the time at a sub-step's end (the last one's is the step's, to the bit)
+  const double end = time_.value();
+  auto at = [end, deltaT](double elapsed) {
+    return elapsed < deltaT ? end - (deltaT - elapsed) : end;
+  };
+  WeaklyCompressibleFlow::SubStepHooks hooks;
+  if (!models_.movingMolds.empty()) {
+    hooks.drift = [&](double dt, double elapsed) { models_.movingMolds.drift(dt, at(elapsed)); };
+  }
+  hooks.kick = [&](double dt, double elapsed) {
+    models_.movingMolds.kick(dt, at(elapsed));
+    models_.pouringInlets.holdBuffers();
+  };
+  models_.flow->advectionStep(deltaT, time_.settings().maxCo, hooks);
   models_.pouringInlets.pour(time_.value(), models_.decomposition.get());
 }
 

@@ -87,6 +87,7 @@ class CastingSolver {
   double coolingMaxCo() const;  // the cooling mode's flow steps' Courant number
   void evolveCooling(double deltaT);
   void flowFirstKickAndDrift(double deltaT);
+  void flowAdvectionStep(double deltaT);  // dualCriteria's, in place of the kicks
   // The metal outside the domain spilled (MetalSpill.h): logged, and spillStop_ set when the
   // spill passes healthChecks' maxSpilledFraction. heatKickPending: a heat step's first kick
   // with rates that include the spilled metal is still to come (firstHeatKick books it).

@@ -232,7 +232,17 @@ void CastingSolver::setUpFlow() {
          << ", " << settings.walls.all.describe() << ", viscositySolver "
          << describeViscositySolver(settings.viscositySolver, settings.implicitViscosity)
          << ", h = " << settings.supportRadius << " m, c = " << settings.soundSpeed << " m/s\n"
-         << "    pair lists: searched with h + " << models_.neighbourhood->skin()
+         << "    time stepping: ";
+  if (settings.dualCriteria) {
+    info() << "dualCriteria: steps of at most advectionCo " << settings.advectionCo
+           << " dx / |U|max (and the viscous, body-force and force models' limits), each with "
+              "a search and the viscous term, in acoustic sub-steps of maxCo "
+           << time_.settings().maxCo << " (controlDict) of the pressure and the density\n";
+  } else {
+    info() << "kickDriftKick: steps of maxCo " << time_.settings().maxCo
+           << " (controlDict), each with every pass\n";
+  }
+  info() << "    pair lists: searched with h + " << models_.neighbourhood->skin()
          << " m, reused until particles may have closed in by that skin\n"
          << "    fluid " << fluid.name() << ": " << countOf(fluid) << " particles\n";
   for (const ParticleCloud* wall : walls) {

@@ -151,6 +151,12 @@ void RunMonitor::logTimeSpent() {
            << " times, filtered from the last search " << models_.neighbourhood->reuseCount()
            << " times (skin " << models_.neighbourhood->skin() << " m)\n";
   }
+  if (models_.flow && models_.flow->work().advectionSteps > 0) {
+    const FlowWork& work = models_.flow->work();
+    info() << "Time stepping (dualCriteria): " << work.advectionSteps << " advection steps, "
+           << work.acousticSubSteps << " acoustic sub-steps ("
+           << double(work.acousticSubSteps) / double(work.advectionSteps) << " a step)\n";
+  }
   info() << "Run health: " << warnings_.summary() << '\n';
   // the process's peak resident memory (Linux gives ru_maxrss in KiB): what a larger case needs
   rusage usage{};

@@ -96,6 +96,28 @@ struct ImplicitlySolvedViscosity {
   }
 };
 
+// The interface of dualCriteria's viscous pass (WeaklyCompressibleFlow::advectionStep), which
+// takes the viscous term alone: no pressure, and v* = v_i, so that the pair's pressure and
+// continuity terms vanish and FluidPair and accumulateWallPair add only the Viscosity form's.
+struct ViscousTermOnlyInterface {
+  static constexpr const char* name = "viscous term only";
+  static constexpr bool fluidTensionAtWalls = false;
+  [[gnu::always_inline]] InterfaceState operator()(const InterfaceSide& left,
+                                                   const InterfaceSide& /*right*/,
+                                                   const Vector& /*towardsRight*/,
+                                                   Real /*soundSpeed*/,
+                                                   Real /*restingJump*/ = 0) const {
+    return {Real(0), left.velocity};
+  }
+  [[gnu::always_inline]] InterfaceState withCompression(const InterfaceSide& left,
+                                                        const InterfaceSide& right,
+                                                        const Vector& towardsRight,
+                                                        Real /*compression*/, Real soundSpeed,
+                                                        Real restingJump = 0) const {
+    return (*this)(left, right, towardsRight, soundSpeed, restingJump);
+  }
+};
+
 // Contributions of one fluid neighbour j to fluid particle i (paper eqs. (1) and (2)):
 //   drho_i/dt += 2 rho_i (m_j / rho_j) (v_i - v*) . grad_i W_ij
 //   dv_i/dt   += -2 m_j p* / (rho_i rho_j) grad_i W_ij  + the Viscosity form's term

@@ -45,7 +45,7 @@ FlowSetup readFlowSetup(const CaseDescription& description) {
                      "wallDissipation", "supportRadius", "soundSpeed", "deltaSPHCoeffs",
                      "wallClearance", "neighbourListSkin", "viscositySolver",
                      "viscositySolverCoeffs", "densityReinitialisation",
-                     "densityReinitialisationCoeffs"});
+                     "densityReinitialisationCoeffs", "timeStepping", "dualCriteriaCoeffs"});
   FlowSettings& settings = setup.settings;
   settings.densityScheme = schemes.getChoice("densityScheme", {"riemann", "standard", "deltaSPH"});
   settings.kernelCorrection = schemes.getOrDefault<bool>("kernelCorrection", false);
@@ -60,6 +60,26 @@ FlowSetup readFlowSetup(const CaseDescription& description) {
       throw DictionaryError(coeffs.location("relaxation"),
                             "'relaxation' (the share of the way to the packed density taken "
                             "each flow step) must lie in (0, 1] in " +
+                                coeffs.name());
+    }
+  }
+  settings.dualCriteria =
+      schemes.getChoiceOrDefault("timeStepping", {"kickDriftKick", "dualCriteria"},
+                                 "kickDriftKick") == "dualCriteria";
+  if (settings.dualCriteria && settings.densityScheme == "deltaSPH") {
+    throw DictionaryError(schemes.location("timeStepping"),
+                          "timeStepping dualCriteria takes densityScheme riemann or standard; "
+                          "deltaSPH has its own Stormer-Verlet step (kickDriftKick) in " +
+                              schemes.name());
+  }
+  if (schemes.found("dualCriteriaCoeffs")) {
+    const Dictionary& coeffs = schemes.subDict("dualCriteriaCoeffs");
+    coeffs.checkKeys({"advectionCo"});
+    settings.advectionCo = coeffs.getOrDefault<Real>("advectionCo", settings.advectionCo);
+    if (!(settings.advectionCo > 0 && settings.advectionCo <= 1)) {
+      throw DictionaryError(coeffs.location("advectionCo"),
+                            "'advectionCo' (the most a particle travels between two searches, "
+                            "in particle spacings) must lie in (0, 1] in " +
                                 coeffs.name());
     }
   }

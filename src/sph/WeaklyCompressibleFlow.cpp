@@ -21,7 +21,8 @@ double FlowStepLimits::smallest(std::string& limiter) const {
   const std::pair<double, const char*> limits[] = {
       {acoustic, "acoustic CFL"},    {viscous, "viscous"},
       {bodyForce, "body force"},     {acceleration, "acceleration"},
-      {densityRate, "density rate"}, {forceModel, forceModelName.c_str()}};
+      {densityRate, "density rate"}, {forceModel, forceModelName.c_str()},
+      {advection, "advection"}};
   const auto* smallest = std::min_element(  // of equal limits the first, as before
       std::begin(limits), std::end(limits),
       [](const auto& a, const auto& b) { return a.first < b.first; });
@@ -78,6 +79,14 @@ void WeaklyCompressibleFlow::checkInput() {
       settings_.densityScheme != "deltaSPH") {
     throw Error("unknown densityScheme '" + settings_.densityScheme +
                 "'; valid densityScheme are: (riemann standard deltaSPH)");
+  }
+  if (settings_.dualCriteria && settings_.densityScheme == "deltaSPH") {
+    throw Error(
+        "timeStepping dualCriteria takes densityScheme riemann or standard; deltaSPH has its "
+        "own Stormer-Verlet step (timeStepping kickDriftKick)");
+  }
+  if (settings_.dualCriteria && !(settings_.advectionCo > 0)) {
+    throw Error("flow: advectionCo must be positive");
   }
   if (settings_.viscousForm != "Morris" && settings_.viscousForm != "Cleary") {
     throw Error("unknown viscousForm '" + settings_.viscousForm +
@@ -286,11 +295,17 @@ void WeaklyCompressibleFlow::holdFrozenParticles() {
   }
 }
 
-void WeaklyCompressibleFlow::step(double deltaT) {
+void WeaklyCompressibleFlow::step(double deltaT, double maxCo) {
   if (!ownNeighbourhood_) {
     throw Error(
         "flow: step() is for a flow with its own neighbourhood; in a shared one the "
         "solver calls the phases");
+  }
+  if (settings_.dualCriteria) {
+    advectionStep(deltaT, maxCo);
+    addWallTime(timings_.neighbourSearch, [&] { neighbourhood_.update(); });
+    keepClearOfWalls();
+    return;
   }
   kickAndDrift(deltaT);
   addWallTime(timings_.neighbourSearch, [&] { neighbourhood_.update(); });
@@ -400,6 +415,118 @@ void WeaklyCompressibleFlow::computeRatesAndKickStormerVerlet(Real dt) {
   if (viscosityImplicit_) solveViscosity(dt);
 }
 
+// The viscous term and the force models at the start of an advection step, into
+// priorAcceleration_ (the acceleration field keeps the last sub-step's total, which the first
+// sub-step's limit reads), with what the pass put on the measured walls into priorLoads_.
+void WeaklyCompressibleFlow::computePriorAcceleration() {
+  auto& acceleration = fluid_.vectorField(field::acceleration);
+  lastTotalAcceleration_.assign(acceleration.begin(), acceleration.end());
+  computeRates(RatePart::viscous);
+  priorAcceleration_.assign(acceleration.begin(), acceleration.end());
+  acceleration.assign(lastTotalAcceleration_.begin(), lastTotalAcceleration_.end());
+  priorLoads_ = wallLoads_;
+}
+
+void WeaklyCompressibleFlow::advectionStep(double deltaT, double maxCo, const SubStepHooks& hooks) {
+  if (!settings_.dualCriteria) {
+    throw Error("flow: advectionStep() is timeStepping dualCriteria's");
+  }
+  holdFrozenParticles();  // those frozen since the last step (by a heat step) too
+  viscosityImplicit_ = solvesViscosityImplicitly(deltaT);
+  addWallTime(timings_.rates, [&] {
+    if (densityReinitialisation_) {
+      densityReinitialisation_->apply(fluid_, walls_, neighbourhood_);
+      updatePressure();
+    }
+    computePriorAcceleration();
+  });
+  ++work_.advectionSteps;
+  double elapsed = 0;
+  while (elapsed < deltaT) {
+    std::string limiter;
+    const double limit = acousticSubStepLimit(maxCo, limiter);
+    if (!(limit > 0) || !std::isfinite(limit)) {
+      std::ostringstream problem;
+      problem << "the acoustic sub-step's limit (" << limiter << ") is " << limit;
+      throw Error(problem.str());
+    }
+    // equal sub-steps over what is left, none of them longer than the limit (a relative 1e-9
+    // of slack, so that round-off in deltaT - elapsed adds no sliver of a sub-step)
+    const double remaining = deltaT - elapsed;
+    const double count = std::ceil(remaining / limit * (1 - 1e-9));
+    const bool last = count <= 1;
+    const double dt = last ? remaining : remaining / count;
+    elapsed = last ? deltaT : elapsed + dt;
+    acousticSubStep(static_cast<Real>(dt), hooks, elapsed);
+  }
+  if (viscosityImplicit_) solveViscosity(static_cast<Real>(deltaT));
+}
+
+// One Verlet sub-step of the pressure and the density (advectionStep spells it out). The halo
+// of a decomposed run drifts with its owners' velocities, so its positions stay theirs to the
+// bit; its velocities and densities are refreshed after the passes that change them.
+void WeaklyCompressibleFlow::acousticSubStep(Real dt, const SubStepHooks& hooks, double elapsed) {
+  const Real halfDt = Real(0.5) * dt;
+  auto& x = fluid_.positions();
+  auto& v = fluid_.vectorField(field::U);
+  auto& rho = fluid_.scalarField(field::rho);
+  const auto& densityRate = fluid_.scalarField(field::densityRate);
+  auto& acceleration = fluid_.vectorField(field::acceleration);
+  const Real* frozen =
+      fluid_.hasScalarField(field::frozen) ? fluid_.scalarField(field::frozen).data() : nullptr;
+  const PeriodicBox periodic = settings_.periodic;
+  addWallTime(timings_.integration, [&] {
+#pragma omp parallel for
+    for (std::size_t i = 0; i < x.size(); ++i) {
+      rho[i] += halfDt * densityRate[i];
+      x[i] = periodic.wrap(x[i] + halfDt * v[i]);
+    }
+    updatePressure();
+  });
+  if (hooks.drift) hooks.drift(dt, elapsed);
+  addWallTime(timings_.rates, [&] { computeRates(RatePart::pressure); });
+  for (std::size_t w = 0; w < walls_.size(); ++w) {
+    if (!loadMeasured_[w]) continue;
+    wallLoads_[w].force += priorLoads_[w].force;
+    wallLoads_[w].torque += priorLoads_[w].torque;
+  }
+  addWallTime(timings_.integration, [&] {
+#pragma omp parallel for
+    for (std::size_t i = 0; i < x.size(); ++i) {
+      acceleration[i] += priorAcceleration_[i];
+      if (frozen && frozen[i] != 0) {  // held (holdFrozenParticles)
+        acceleration[i].setZero();
+        v[i].setZero();
+      }
+      v[i] += dt * acceleration[i];
+      x[i] = periodic.wrap(x[i] + halfDt * v[i]);
+    }
+  });
+  neighbourhood_.syncHalo(fluid_, {field::U});
+  addWallTime(timings_.rates, [&] { computeRates(RatePart::densityRate); });
+  addWallTime(timings_.integration, [&] {
+#pragma omp parallel for
+    for (std::size_t i = 0; i < x.size(); ++i) rho[i] += halfDt * densityRate[i];
+    neighbourhood_.syncHalo(fluid_, {field::rho, field::densityRate});
+    updatePressure();
+  });
+  ++work_.acousticSubSteps;
+  if (hooks.kick) hooks.kick(dt, elapsed);
+}
+
+double WeaklyCompressibleFlow::acousticSubStepLimit(double maxCo, std::string& limiter) const {
+  const FlowStepLimits limits = allStepLimits(maxCo);
+  const std::pair<double, const char*> candidates[] = {{limits.acoustic, "acoustic CFL"},
+                                                       {limits.acceleration, "acceleration"},
+                                                       {limits.densityRate, "density rate"}};
+  const auto* smallest =
+      std::min_element(std::begin(candidates), std::end(candidates),
+                       [](const auto& a, const auto& b) { return a.first < b.first; });
+  limiter = smallest->second;
+  // every rank takes the same sub-step
+  return -neighbourhood_.maxOverRanks(-smallest->first);
+}
+
 double WeaklyCompressibleFlow::explicitViscousLimit() const {
   const auto& rho = fluid_.scalarField(field::rho);
   const auto& mu = fluid_.scalarField(field::viscosity);
@@ -453,7 +580,27 @@ void WeaklyCompressibleFlow::solveViscosity(Real dt) {
   }
 }
 
-FlowStepLimits WeaklyCompressibleFlow::stepLimits(double maxCo) const {
+FlowStepLimits WeaklyCompressibleFlow::stepLimits(double maxCo, bool advectionStep) const {
+  FlowStepLimits limits = allStepLimits(maxCo);
+  const double infinite = std::numeric_limits<double>::max();
+  if (advectionStep) {  // the sub-steps' (acousticSubStepLimit)
+    limits.acoustic = limits.acceleration = limits.densityRate = infinite;
+  } else {
+    limits.advection = infinite;
+  }
+  // A viscosity solved implicitly sets no limit: always (implicit), or where its explicit limit
+  // is below every other (auto: solvesViscosityImplicitly then takes the step's length for it).
+  if (settings_.viscositySolver == ViscositySolver::implicitForm) {
+    limits.viscous = infinite;
+  } else if (settings_.viscositySolver == ViscositySolver::automatic) {
+    const double others = std::min({limits.acoustic, limits.bodyForce, limits.acceleration,
+                                    limits.densityRate, limits.forceModel, limits.advection});
+    if (limits.viscous < others) limits.viscous = infinite;
+  }
+  return limits;
+}
+
+FlowStepLimits WeaklyCompressibleFlow::allStepLimits(double maxCo) const {
   const auto& v = fluid_.vectorField(field::U);
   const auto& rho = fluid_.scalarField(field::rho);
   const auto& mu = fluid_.scalarField(field::viscosity);
@@ -517,17 +664,9 @@ FlowStepLimits WeaklyCompressibleFlow::stepLimits(double maxCo) const {
       g > 0 ? 0.25 * std::sqrt(dx / g) : infinite,
       largestAcceleration > 0 ? 0.25 * std::sqrt(dx / largestAcceleration) : infinite,
       largestRelativeDensityRate > 0 ? maxDensityChange / largestRelativeDensityRate : infinite,
-      forceLimit,
-      forceLimiter};
-  // A viscosity solved implicitly sets no limit: always (implicit), or where its explicit limit
-  // is below every other (auto: solvesViscosityImplicitly then takes the step's length for it).
-  if (settings_.viscositySolver == ViscositySolver::implicitForm) {
-    limits.viscous = infinite;
-  } else if (settings_.viscositySolver == ViscositySolver::automatic) {
-    const double others = std::min({limits.acoustic, limits.bodyForce, limits.acceleration,
-                                    limits.densityRate, limits.forceModel});
-    if (limits.viscous < others) limits.viscous = infinite;
-  }
+      forceLimit, forceLimiter,
+      // dualCriteria: no particle moves more than advectionCo dx between two searches
+      fastest > 0 ? settings_.advectionCo * dx / fastest : infinite};
   return limits;
 }
 

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <limits>
 #include <memory>
 #include <string>
@@ -58,6 +59,12 @@ struct FlowSettings {
   // continuity equation's alone.
   bool reinitialiseDensity = false;
   Real densityRelaxation = Real(0.3);
+  // timeStepping in system/sphSchemes: kickDriftKick (the default), one step of the acoustic
+  // length with every pass; dualCriteria, an advection step (advectionStep) of
+  // dualCriteriaCoeffs' advectionCo dx / |v|max and the viscous, body-force and force models'
+  // limits, made of acoustic sub-steps of controlDict's maxCo.
+  bool dualCriteria = false;
+  Real advectionCo = Real(0.3);
 };
 
 // The work the rate passes did and left out since the start, in particle-steps (one particle's
@@ -68,6 +75,8 @@ struct FlowWork {
   std::uint64_t skippedFrozen = 0;         // frozen with no melt within two neighbour hops
   std::uint64_t implicitViscousSteps = 0;  // flow steps whose viscosity was solved implicitly
   std::uint64_t viscousIterations = 0;     // the conjugate gradient's iterations in them
+  std::uint64_t advectionSteps = 0;        // dualCriteria: the steps of the pair lists
+  std::uint64_t acousticSubSteps = 0;      // dualCriteria: the pressure passes within them
 };
 
 // Wall time spent in each part of the flow's steps, seconds since construction.
@@ -80,6 +89,9 @@ struct FlowTimings {
 };
 
 // Why the step is what it is: each limit in seconds, for the log.
+// With dualCriteria the solver's step takes advection, viscous, bodyForce and forceModel (the
+// others are infinite there), and the acoustic sub-steps within it the acoustic, acceleration and
+// density-rate limits (WeaklyCompressibleFlow::acousticSubStep).
 struct FlowStepLimits {
   double acoustic;      // maxCo dx / (c + |v|max)
   double viscous;       // 0.125 dx^2 / nu_max; infinite where the viscosity is solved implicitly
@@ -88,6 +100,7 @@ struct FlowStepLimits {
   double densityRate;   // 0.02 min rho / |drho/dt|: no density changes by more than 2 % a step
   double forceModel;    // the smallest of the force models' (FluidForceModel), if any
   std::string forceModelName;
+  double advection = std::numeric_limits<double>::infinity();  // advectionCo dx / |v|max
   double smallest(std::string& limiter) const;
 };
 
@@ -146,7 +159,12 @@ class WeaklyCompressibleFlow {
   // The pressure and rates of the start state (after the first neighbourhood update).
   void start();
 
-  FlowStepLimits stepLimits(double maxCo) const;
+  // The limits of a step: with dualCriteria those of an advection step (FlowStepLimits), with
+  // advectionStep false those of a kick-drift-kick step (the casting's cooling mode takes them).
+  FlowStepLimits stepLimits(double maxCo) const {
+    return stepLimits(maxCo, settings_.dualCriteria);
+  }
+  FlowStepLimits stepLimits(double maxCo, bool advectionStep) const;
 
   // A force the flow adds at every evaluation of the rates, after its own (surface tension);
   // the model must stay alive while the flow steps.
@@ -157,8 +175,29 @@ class WeaklyCompressibleFlow {
     }
   }
 
-  // One whole kick-drift-kick step of deltaT (a flow with its own neighbourhood).
-  void step(double deltaT);
+  // One whole step of deltaT (a flow with its own neighbourhood): kick-drift-kick, or with
+  // dualCriteria an advection step of acoustic sub-steps of maxCo.
+  void step(double deltaT, double maxCo = 0.25);
+
+  // dualCriteria (Zhang, Hu & Adams 2017 §2.3, as SPHinXsys): the step of the pair lists,
+  // deltaT, in acoustic sub-steps. The viscous term and the force models (and the packed density,
+  // when asked for) are evaluated once, at its start, over the lists of the last search; each
+  // sub-step of dt is then a Verlet step of the pressure and the density alone,
+  //   rho += dt/2 drho/dt,  x += dt/2 v,  v += dt (a_p(x, rho) + a_prior),
+  //   x += dt/2 v,  drho/dt(x, v),  rho += dt/2 drho/dt,
+  // two passes over the same pairs (the positions move, the pairs stay those of the search),
+  // symplectic in the acoustic mode, so its Courant number may be about three times the
+  // kick-drift-kick's. The hooks run the bodies beside it: `drift` after each sub-step's first
+  // half, `kick` after its second, each given dt and the time elapsed since the advection
+  // step's start at the sub-step's end. The search follows (the owner's, or step()'s).
+  struct SubStepHooks {
+    std::function<void(double dt, double elapsed)> drift;
+    std::function<void(double dt, double elapsed)> kick;
+  };
+  void advectionStep(double deltaT, double maxCo, const SubStepHooks& hooks = {});
+  // The acoustic sub-step's limits now: the smallest of the acoustic, acceleration and density
+  // rate limits over every rank.
+  double acousticSubStepLimit(double maxCo, std::string& limiter) const;
 
   // The phases of a step, for a solver that searches once for several models:
   // the first kick and the drift (deltaSPH: the velocity's half kick and the drift) ...
@@ -191,7 +230,10 @@ class WeaklyCompressibleFlow {
   // Which rates a pass computes: both at once (riemann, standard), or, for deltaSPH's
   // Stormer-Verlet step (stepStormerVerlet), the density rate and the acceleration in separate
   // passes.
-  enum class RatePart { both, densityRate, acceleration };
+  // dualCriteria's sub-steps take the pressure's acceleration (with gravity) and the density
+  // rate in passes of their own, the viscous term (with the force models) once per advection
+  // step.
+  enum class RatePart { both, densityRate, acceleration, pressure, viscous };
   void checkInput();
   void requirePlane() const;
   void computeRatesAndKickStormerVerlet(Real dt);
@@ -210,8 +252,13 @@ class WeaklyCompressibleFlow {
   void computeCorrection();
   bool needsCorrectionMatrix(RatePart part) const {
     return settings_.kernelCorrection ||
-           (settings_.densityScheme == "deltaSPH" && part != RatePart::acceleration);
+           (settings_.densityScheme == "deltaSPH" &&
+            (part == RatePart::both || part == RatePart::densityRate));
   }
+  void computePriorAcceleration();
+  // every limit, for stepLimits (the solver's step) and acousticSubStepLimit
+  FlowStepLimits allStepLimits(double maxCo) const;
+  void acousticSubStep(Real dt, const SubStepHooks& hooks, double elapsed);
   void computeRates(RatePart part = RatePart::both);
   void holdFrozenParticles();
   // The explicit viscous limit 0.125 dx^2 / nu_max of the owned particles (infinite without
@@ -247,6 +294,11 @@ class WeaklyCompressibleFlow {
   std::vector<bool> loadMeasured_;
   std::vector<WallLoad> wallLoads_;
   std::vector<std::vector<Vector>> loadForce_, loadTorque_;
+  // dualCriteria: the viscous and force models' acceleration of the advection step, and what its
+  // pass put on the measured walls (added to each sub-step's pressure loads)
+  std::vector<Vector> priorAcceleration_;
+  std::vector<WallLoad> priorLoads_;
+  std::vector<Vector> lastTotalAcceleration_;    // the field's, kept across the viscous pass
   std::vector<Vector> clearanceVelocityChange_;  // of the last keepClearOfWalls, with loads
   std::vector<int> clearanceWall_;
   std::vector<Matrix> correction_;       // L_i, with kernelCorrection or deltaSPH

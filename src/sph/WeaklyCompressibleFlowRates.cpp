@@ -4,9 +4,11 @@
 #include <algorithm>
 #include <cstdint>
 #include <limits>
+#include <type_traits>
 
 #include <Eigen/Geometry>
 
+#include "core/Error.h"
 #include "sph/EquationOfState.h"
 #include "sph/FlowRates.h"
 
@@ -120,8 +122,12 @@ void WeaklyCompressibleFlow::computeCorrection() {
 
 template <int Dim, class Interface, class Viscosity, WeaklyCompressibleFlow::RatePart Part>
 void WeaklyCompressibleFlow::computeRatesFor() {
-  constexpr bool wantsDensityRate = Part != RatePart::acceleration;
+  constexpr bool wantsDensityRate = Part == RatePart::both || Part == RatePart::densityRate;
   constexpr bool wantsAcceleration = Part != RatePart::densityRate;
+  // the viscous pass of dualCriteria leaves gravity to the pressure's (no pair term needs it)
+  constexpr bool withGravity = Part != RatePart::viscous;
+  // the colour gradient is the force models', which dualCriteria evaluates with the viscosity
+  constexpr bool withForceModels = wantsAcceleration && Part != RatePart::pressure;
   extrapolateWallPressure<Dim>();
   if (needsCorrectionMatrix(Part)) computeCorrection<Dim>();
   const LinearEquationOfState eos{settings_.soundSpeed};
@@ -201,7 +207,7 @@ void WeaklyCompressibleFlow::computeRatesFor() {
     skipped = markFrozenNearMelt();
     nearMelt = frozenNearMelt_.data();
   }
-  if constexpr (wantsAcceleration) {  // once per flow step
+  if constexpr (wantsAcceleration && Part != RatePart::viscous) {  // once per flow step
     ++work_.flowSteps;
     work_.particleSteps += x.size();
     work_.skippedFrozen += skipped;
@@ -234,7 +240,7 @@ void WeaklyCompressibleFlow::computeRatesFor() {
   // for one multiply-add per pair (3 % of a flow step when on, tests/benchmarks/README.md).
   Vector* colourGradient = nullptr;
   const Real* pairVolume = nullptr;
-  if constexpr (wantsAcceleration) {
+  if constexpr (withForceModels) {
     if (!colourGradientBuffers_.empty()) {
       colourGradientBuffers_.front()->resize(x.size());
       colourGradient = colourGradientBuffers_.front()->data();
@@ -263,7 +269,7 @@ void WeaklyCompressibleFlow::computeRatesFor() {
       const Real muI = mu[i];
       const InterfaceSide self{rho[i], p[i], vi};
       Real rate = 0;
-      Vector accel = gravity;
+      Vector accel = withGravity ? gravity : Vector::Zero();
       Vector colour = Vector::Zero();  // the colour gradient, when asked for
       const bool interior = inBox && (xi.array() >= interiorLower.array()).all() &&
                             (xi.array() <= interiorUpper.array()).all();
@@ -376,6 +382,14 @@ void WeaklyCompressibleFlow::computeRatesFor() {
 // The numerics are chosen by type once per pass, never by `if` inside the pair loop.
 template <int Dim, class Interface>
 void WeaklyCompressibleFlow::computeRatesWithInterface(RatePart part) {
+  // dualCriteria's sub-step: the pressure alone (its viscosity is in the prior acceleration);
+  // deltaSPH takes its own Stormer-Verlet step, never this one
+  if constexpr (!std::is_same_v<Interface, DeltaSPHInterface>) {
+    if (part == RatePart::pressure) {
+      computeRatesFor<Dim, Interface, ImplicitlySolvedViscosity, RatePart::pressure>();
+      return;
+    }
+  }
   auto withViscosity = [&]<class Viscosity>() {
     switch (part) {
       case RatePart::both:
@@ -387,6 +401,9 @@ void WeaklyCompressibleFlow::computeRatesWithInterface(RatePart part) {
       case RatePart::acceleration:
         computeRatesFor<Dim, Interface, Viscosity, RatePart::acceleration>();
         break;
+      case RatePart::pressure:  // above (deltaSPH refuses dualCriteria)
+      case RatePart::viscous:   // computeRatesInDimension
+        throw Error(std::string("flow: no such pass for densityScheme ") + Interface::name);
     }
   };
   if (viscosityImplicit_ && part != RatePart::densityRate) {
@@ -400,6 +417,17 @@ void WeaklyCompressibleFlow::computeRatesWithInterface(RatePart part) {
 
 template <int Dim>
 void WeaklyCompressibleFlow::computeRatesInDimension(RatePart part) {
+  if (part == RatePart::viscous) {  // dualCriteria's prior acceleration
+    using Viscous = ViscousTermOnlyInterface;
+    if (viscosityImplicit_) {
+      computeRatesFor<Dim, Viscous, ImplicitlySolvedViscosity, RatePart::viscous>();
+    } else if (settings_.viscousForm == "Morris") {
+      computeRatesFor<Dim, Viscous, MorrisViscosity, RatePart::viscous>();
+    } else {
+      computeRatesFor<Dim, Viscous, ClearyViscosity, RatePart::viscous>();
+    }
+    return;
+  }
   if (settings_.densityScheme == "riemann") {
     computeRatesWithInterface<Dim, AcousticRiemannInterface>(part);
   } else if (settings_.densityScheme == "standard") {
@@ -415,7 +443,7 @@ void WeaklyCompressibleFlow::computeRates(RatePart part) {
   } else {
     computeRatesInDimension<3>(part);
   }
-  if (part == RatePart::densityRate) return;
+  if (part == RatePart::densityRate || part == RatePart::pressure) return;
   for (FluidForceModel* model : forceModels_) model->addAcceleration();
   holdFrozenParticles();
 }
