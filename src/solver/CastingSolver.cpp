@@ -132,7 +132,7 @@ void CastingSolver::flowAdvectionStep(double deltaT) {
     models_.movingMolds.kick(dt, at(elapsed));
     models_.pouringInlets.holdBuffers();
   };
-  models_.flow->advectionStep(deltaT, time_.settings().maxCo, hooks);
+  models_.flow->advectionStep(deltaT, hooks);
   models_.pouringInlets.pour(time_.value(), models_.decomposition.get());
 }
 

@@ -236,8 +236,8 @@ void CastingSolver::setUpFlow() {
   if (settings.dualCriteria) {
     info() << "dualCriteria: steps of at most advectionCo " << settings.advectionCo
            << " dx / |U|max (and the viscous, body-force and force models' limits), each with "
-              "a search and the viscous term, in acoustic sub-steps of maxCo "
-           << time_.settings().maxCo << " (controlDict) of the pressure and the density\n";
+              "a search and the viscous term, in acoustic sub-steps of acousticCo "
+           << settings.acousticCo << " of the pressure and the density\n";
   } else {
     info() << "kickDriftKick: steps of maxCo " << time_.settings().maxCo
            << " (controlDict), each with every pass\n";

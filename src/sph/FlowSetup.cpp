@@ -74,12 +74,19 @@ FlowSetup readFlowSetup(const CaseDescription& description) {
   }
   if (schemes.found("dualCriteriaCoeffs")) {
     const Dictionary& coeffs = schemes.subDict("dualCriteriaCoeffs");
-    coeffs.checkKeys({"advectionCo"});
+    coeffs.checkKeys({"advectionCo", "acousticCo"});
     settings.advectionCo = coeffs.getOrDefault<Real>("advectionCo", settings.advectionCo);
+    settings.acousticCo = coeffs.getOrDefault<Real>("acousticCo", settings.acousticCo);
     if (!(settings.advectionCo > 0 && settings.advectionCo <= 1)) {
       throw DictionaryError(coeffs.location("advectionCo"),
                             "'advectionCo' (the most a particle travels between two searches, "
                             "in particle spacings) must lie in (0, 1] in " +
+                                coeffs.name());
+    }
+    if (!(settings.acousticCo > 0 && settings.acousticCo <= 2)) {
+      throw DictionaryError(coeffs.location("acousticCo"),
+                            "'acousticCo' (the acoustic sub-steps' Courant number, dt (c + "
+                            "|U|max) / dx) must lie in (0, 2] in " +
                                 coeffs.name());
     }
   }

@@ -85,8 +85,8 @@ void WeaklyCompressibleFlow::checkInput() {
         "timeStepping dualCriteria takes densityScheme riemann or standard; deltaSPH has its "
         "own Stormer-Verlet step (timeStepping kickDriftKick)");
   }
-  if (settings_.dualCriteria && !(settings_.advectionCo > 0)) {
-    throw Error("flow: advectionCo must be positive");
+  if (settings_.dualCriteria && !(settings_.advectionCo > 0 && settings_.acousticCo > 0)) {
+    throw Error("flow: advectionCo and acousticCo must be positive");
   }
   if (settings_.viscousForm != "Morris" && settings_.viscousForm != "Cleary") {
     throw Error("unknown viscousForm '" + settings_.viscousForm +
@@ -295,14 +295,14 @@ void WeaklyCompressibleFlow::holdFrozenParticles() {
   }
 }
 
-void WeaklyCompressibleFlow::step(double deltaT, double maxCo) {
+void WeaklyCompressibleFlow::step(double deltaT) {
   if (!ownNeighbourhood_) {
     throw Error(
         "flow: step() is for a flow with its own neighbourhood; in a shared one the "
         "solver calls the phases");
   }
   if (settings_.dualCriteria) {
-    advectionStep(deltaT, maxCo);
+    advectionStep(deltaT);
     addWallTime(timings_.neighbourSearch, [&] { neighbourhood_.update(); });
     keepClearOfWalls();
     return;
@@ -427,7 +427,7 @@ void WeaklyCompressibleFlow::computePriorAcceleration() {
   priorLoads_ = wallLoads_;
 }
 
-void WeaklyCompressibleFlow::advectionStep(double deltaT, double maxCo, const SubStepHooks& hooks) {
+void WeaklyCompressibleFlow::advectionStep(double deltaT, const SubStepHooks& hooks) {
   if (!settings_.dualCriteria) {
     throw Error("flow: advectionStep() is timeStepping dualCriteria's");
   }
@@ -444,7 +444,7 @@ void WeaklyCompressibleFlow::advectionStep(double deltaT, double maxCo, const Su
   double elapsed = 0;
   while (elapsed < deltaT) {
     std::string limiter;
-    const double limit = acousticSubStepLimit(maxCo, limiter);
+    const double limit = acousticSubStepLimit(limiter);
     if (!(limit > 0) || !std::isfinite(limit)) {
       std::ostringstream problem;
       problem << "the acoustic sub-step's limit (" << limiter << ") is " << limit;
@@ -514,8 +514,8 @@ void WeaklyCompressibleFlow::acousticSubStep(Real dt, const SubStepHooks& hooks,
   if (hooks.kick) hooks.kick(dt, elapsed);
 }
 
-double WeaklyCompressibleFlow::acousticSubStepLimit(double maxCo, std::string& limiter) const {
-  const FlowStepLimits limits = allStepLimits(maxCo);
+double WeaklyCompressibleFlow::acousticSubStepLimit(std::string& limiter) const {
+  const FlowStepLimits limits = allStepLimits(settings_.acousticCo);
   const std::pair<double, const char*> candidates[] = {{limits.acoustic, "acoustic CFL"},
                                                        {limits.acceleration, "acceleration"},
                                                        {limits.densityRate, "density rate"}};

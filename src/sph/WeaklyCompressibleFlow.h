@@ -60,11 +60,12 @@ struct FlowSettings {
   bool reinitialiseDensity = false;
   Real densityRelaxation = Real(0.3);
   // timeStepping in system/sphSchemes: kickDriftKick (the default), one step of the acoustic
-  // length with every pass; dualCriteria, an advection step (advectionStep) of
-  // dualCriteriaCoeffs' advectionCo dx / |v|max and the viscous, body-force and force models'
-  // limits, made of acoustic sub-steps of controlDict's maxCo.
+  // length (controlDict's maxCo) with every pass; dualCriteria, an advection step
+  // (advectionStep) of dualCriteriaCoeffs' advectionCo dx / |v|max and the viscous, body-force
+  // and force models' limits, made of acoustic sub-steps of its acousticCo.
   bool dualCriteria = false;
   Real advectionCo = Real(0.3);
+  Real acousticCo = Real(1);
 };
 
 // The work the rate passes did and left out since the start, in particle-steps (one particle's
@@ -176,8 +177,8 @@ class WeaklyCompressibleFlow {
   }
 
   // One whole step of deltaT (a flow with its own neighbourhood): kick-drift-kick, or with
-  // dualCriteria an advection step of acoustic sub-steps of maxCo.
-  void step(double deltaT, double maxCo = 0.25);
+  // dualCriteria an advection step of acoustic sub-steps.
+  void step(double deltaT);
 
   // dualCriteria (Zhang, Hu & Adams 2017 §2.3, as SPHinXsys): the step of the pair lists,
   // deltaT, in acoustic sub-steps. The viscous term and the force models (and the packed density,
@@ -194,10 +195,10 @@ class WeaklyCompressibleFlow {
     std::function<void(double dt, double elapsed)> drift;
     std::function<void(double dt, double elapsed)> kick;
   };
-  void advectionStep(double deltaT, double maxCo, const SubStepHooks& hooks = {});
-  // The acoustic sub-step's limits now: the smallest of the acoustic, acceleration and density
-  // rate limits over every rank.
-  double acousticSubStepLimit(double maxCo, std::string& limiter) const;
+  void advectionStep(double deltaT, const SubStepHooks& hooks = {});
+  // The acoustic sub-step's limits now: the smallest of the acoustic (of acousticCo),
+  // acceleration and density rate limits over every rank.
+  double acousticSubStepLimit(std::string& limiter) const;
 
   // The phases of a step, for a solver that searches once for several models:
   // the first kick and the drift (deltaSPH: the velocity's half kick and the drift) ...
