@@ -128,7 +128,9 @@ void WeaklyCompressibleFlow::computeRatesFor() {
   constexpr bool withGravity = Part != RatePart::viscous;
   // the colour gradient is the force models', which dualCriteria evaluates with the viscosity
   constexpr bool withForceModels = wantsAcceleration && Part != RatePart::pressure;
-  extrapolateWallPressure<Dim>();
+  // dualCriteria's density pass follows its pressure pass with the same densities: the walls'
+  // pressures are those it extrapolated (the fluid moved by half a sub-step since)
+  if (!(Part == RatePart::densityRate && settings_.dualCriteria)) extrapolateWallPressure<Dim>();
   if (needsCorrectionMatrix(Part)) computeCorrection<Dim>();
   const LinearEquationOfState eos{settings_.soundSpeed};
   const WendlandC2Kernel<Dim> kernel(settings_.supportRadius);
@@ -278,7 +280,9 @@ void WeaklyCompressibleFlow::computeRatesFor() {
       const Real viscousScale = artificialViscosity * restDensity[i] / rho[i];
       // frozen metal near the melt: held, so only its density rate counts among fluid pairs
       // (its wall pairs stay whole: a body's load includes them)
-      const bool densityOnly = wantsDensityRate && frozen && frozen[i] != 0 && !diffusive;
+      // (and every particle in a pass of the density rate alone, without deltaSPH's terms)
+      const bool densityOnly = wantsDensityRate && !diffusive &&
+                               (Part == RatePart::densityRate || (frozen && frozen[i] != 0));
       Real xijX[chunk], xijY[chunk], xijZ[chunk], distance[chunk], gradientFactor[chunk];
       for (std::uint64_t first = fluidBegins[i]; first < fluidEnds[i]; first += chunk) {
         const std::size_t pairs = std::min<std::uint64_t>(chunk, fluidEnds[i] - first);
