@@ -6,8 +6,8 @@ namespace sphcast {
 
 WallClearanceReport enforceWallClearance(std::span<Vector> positions, std::span<Vector> velocities,
                                          const std::vector<WallSurfaceView>& walls,
-                                         const PeriodicBox& periodic, Real spacing, Real clearance,
-                                         std::span<const Real> held,
+                                         const PeriodicBox& periodic, Real spacing,
+                                         Real clearance, std::span<const Real> held,
                                          std::span<Vector> velocityChange,
                                          std::span<int> changeAtWall) {
   WallClearanceReport report;
