@@ -211,6 +211,9 @@ void WeaklyCompressibleFlow::start() {
   if (restarted_) return;
   updatePressure();
   computeRates();
+  // dualCriteria's first sub-step takes the halo's density rate (its owners'; a search brings
+  // it after every later step)
+  if (settings_.dualCriteria) neighbourhood_.syncHalo(fluid_, {field::densityRate});
 }
 
 // A 2D case keeps every particle, fluid and wall, at the z of the first fluid particle: the 2D
@@ -499,10 +502,14 @@ void WeaklyCompressibleFlow::acousticSubStep(Real dt, const SubStepHooks& hooks,
         v[i].setZero();
       }
       v[i] += dt * acceleration[i];
-      x[i] = periodic.wrap(x[i] + halfDt * v[i]);
     }
   });
+  // the halo drifts with its owners' velocities (its own rates lack its far neighbours)
   neighbourhood_.syncHalo(fluid_, {field::U});
+  addWallTime(timings_.integration, [&] {
+#pragma omp parallel for
+    for (std::size_t i = 0; i < x.size(); ++i) x[i] = periodic.wrap(x[i] + halfDt * v[i]);
+  });
   addWallTime(timings_.rates, [&] { computeRates(RatePart::densityRate); });
   addWallTime(timings_.integration, [&] {
 #pragma omp parallel for

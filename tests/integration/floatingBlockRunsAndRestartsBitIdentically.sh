@@ -32,6 +32,7 @@ cp -r "$scratch/whole" "$scratch/stopped"
 cp -r "$scratch/whole" "$scratch/bad"
 
 sphCastFoam > log.sphCastFoam 2>&1 || fail "sphCastFoam: $(tail -5 log.sphCastFoam)"
+expectTimeStepping log.sphCastFoam
 grep -q "^Body block: cloud block (32 particles), mass 0.016 kg" log.sphCastFoam ||
     fail "no body line: $(grep -m1 '^Body' log.sphCastFoam)"
 for t in 0 0.1 0.2; do

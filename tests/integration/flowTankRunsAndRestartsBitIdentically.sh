@@ -12,6 +12,7 @@ cp -r "$scratch/whole" "$scratch/stopped"
 grep -qa '<DataArray [^>]*Name="p"' 0/water.vtp || fail "0/water.vtp has no p"
 
 sphCastFoam > log.sphCastFoam 2>&1 || fail "sphCastFoam: $(tail -5 log.sphCastFoam)"
+expectTimeStepping log.sphCastFoam
 grep -q "^Density range " log.sphCastFoam || fail "no density range in the log"
 grep -q "fluid water: 500 particles" log.sphCastFoam || fail "not 500 water particles"
 castPostProcess > log.castPostProcess 2>&1 || fail "castPostProcess failed"

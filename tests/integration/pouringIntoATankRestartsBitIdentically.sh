@@ -27,6 +27,7 @@ cp -r "$scratch/whole" "$scratch/stopped"
 cp -r "$scratch/whole" "$scratch/bad"
 
 sphCastFoam > log.sphCastFoam 2>&1 || fail "sphCastFoam: $(tail -5 log.sphCastFoam)"
+expectTimeStepping log.sphCastFoam
 line=$(grep -m1 "^Inlet tap: .* particles a layer" log.sphCastFoam) || fail "no inlet line"
 perLayer=$(echo "$line" | sed 's/^Inlet tap: \([0-9]*\) particles.*/\1/')
 [ "$perLayer" -ge 45 ] || fail "only $perLayer particles a layer: $line"

@@ -85,6 +85,20 @@ coarseWaterTank() {
     sed -i 's/0\.015;/0.03;/' system/sphSchemes
     setEntry system/controlDict endTime 0.2
     setEntry system/controlDict writeInterval 0.05
+    # the tests registered again with SPHCAST_TIME_STEPPING=dualCriteria (CMakeLists.txt)
+    if [ -n "${SPHCAST_TIME_STEPPING:-}" ]; then
+        echo "timeStepping $SPHCAST_TIME_STEPPING;" >> system/sphSchemes
+    fi
+}
+
+# expectTimeStepping LOG: with SPHCAST_TIME_STEPPING=dualCriteria, the run's log shows that its
+# steps were advection steps of acoustic sub-steps (else nothing to check)
+expectTimeStepping() {
+    [ "${SPHCAST_TIME_STEPPING:-}" = dualCriteria ] || return 0
+    grep -q "^    time stepping: dualCriteria" "$1" || fail "$1: not dualCriteria's steps"
+    grep -q "^Time stepping (dualCriteria): [1-9][0-9]* advection steps" "$1" ||
+        fail "$1: no advection steps counted"
+    pass "$(grep '^Time stepping (dualCriteria)' "$1")"
 }
 
 # makeMoldCase DIR GEO REGIONS U SOUNDSPEED ENDTIME: a case whose mold is the Physical Surface

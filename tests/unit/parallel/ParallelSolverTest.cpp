@@ -509,13 +509,17 @@ TEST(ParallelSolverTest, APourWithABodyHeatAndSurfaceTensionIsTheSerialRunWithin
   };
   // the third: the lid particleized at graded spacing, its pairs made again on every rank each
   // time its particles migrate (at each rebuild of the lists); the fourth: the density relaxed
-  // towards the particles' arrangement (sph/DensityReinitialisation.h), its sums over the halo
+  // towards the particles' arrangement (sph/DensityReinitialisation.h), its sums over the halo;
   const std::vector<Variant> variants{
       {"continuumSurfaceForce", "model continuumSurfaceForce; contactAngle 120;", false, ""},
       {"surfaceEnergy", "model surfaceEnergy;", false, ""},
       {"gradedLid", "model continuumSurfaceForce; contactAngle 120;", true, ""},
       {"packedDensity", "model continuumSurfaceForce; contactAngle 120;", false,
-       "densityReinitialisation packed;\n"}};
+       "densityReinitialisation packed;\n"},
+      // the fifth: advection steps of acoustic sub-steps (the halo's velocities and densities
+      // refreshed after each pass, the lid moved and kicked in every sub-step)
+      {"dualCriteria", "model continuumSurfaceForce; contactAngle 120;", false,
+       "timeStepping dualCriteria;\n"}};
   for (const auto& [model, surfaceTension, lidGraded, schemes] : variants) {
     const fs::path serial = scratch / (model + "Serial"), decomposed = scratch / model;
     runSerialAndDecomposed(world, serial, decomposed, [&](const fs::path& root, int ranks) {
