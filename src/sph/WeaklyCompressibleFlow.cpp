@@ -408,6 +408,8 @@ void WeaklyCompressibleFlow::computeRatesAndKickStormerVerlet(Real dt) {
   addWallTime(timings_.integration, [&] {
 #pragma omp parallel for
     for (std::size_t i = 0; i < rho.size(); ++i) rho[i] += dt * densityRate[i];
+    // the acceleration reads the neighbours' rho^{n+1}: the halo's are its owners'
+    neighbourhood_.syncHalo(fluid_, {field::rho});
     updatePressure();
   });
   addWallTime(timings_.rates, [&] { computeRates(RatePart::acceleration); });

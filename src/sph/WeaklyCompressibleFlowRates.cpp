@@ -83,9 +83,11 @@ void WeaklyCompressibleFlow::computeCorrection() {
   std::vector<const NeighbourList*> wallLists;
   for (std::size_t w = 0; w < walls_.size(); ++w) wallLists.push_back(&wallPairs(w));
   // as in computeRatesFor: the minimum image only when an axis is periodic, chosen once
+  // the owned particles: a decomposed run's halo takes its owners' L (syncHalo below)
+  const std::size_t owned = fluid_.ownedSize();
   auto correctWith = [&](auto separation) {
 #pragma omp parallel for schedule(static)
-    for (std::size_t i = 0; i < x.size(); ++i) {
+    for (std::size_t i = 0; i < owned; ++i) {
       CorrectionMoment moment;
       Vector gradientSum = Vector::Zero();
       for (const std::uint32_t j : fluidList.of(i)) {
@@ -252,9 +254,13 @@ void WeaklyCompressibleFlow::computeRatesFor() {
     }
   }
   auto plainDifference = [](const Vector& a, const Vector& b) { return Vector(a - b); };
+  // The owned particles only: a decomposed run's halo lacks its far neighbours, so its rates
+  // would be wrong; what a later pass reads at a neighbour is refreshed from the owners (the
+  // search's refresh, syncHalo), and nothing reads the halo's own rates.
+  const std::size_t owned = fluid_.ownedSize();
   auto ratesWith = [&](auto separation) {
 #pragma omp parallel for schedule(static)
-    for (std::size_t i = 0; i < x.size(); ++i) {
+    for (std::size_t i = 0; i < owned; ++i) {
       if (frozen && frozen[i] != 0 && !nearMelt[i]) {
         if constexpr (wantsDensityRate) densityRate[i] = 0;
         if constexpr (wantsAcceleration) acceleration[i] = Vector::Zero();
