@@ -64,7 +64,7 @@ struct FlowSettings {
   // (advectionStep) of dualCriteriaCoeffs' advectionCo dx / |v|max and the viscous, body-force
   // and force models' limits, made of acoustic sub-steps of its acousticCo.
   bool dualCriteria = false;
-  Real advectionCo = Real(0.3);
+  Real advectionCo = Real(0.2);
   Real acousticCo = Real(1);
 };
 
