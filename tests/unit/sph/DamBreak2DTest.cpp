@@ -173,11 +173,11 @@ FrontError againstConvergedFront(const DamBreakResult& result) {
 void print(int columns, const DamBreakResult& result, const Numerics& numerics = {}) {
   std::printf(
       "dam break 2D, a/dx = %d, densityScheme %s (alpha %g), kernelCorrection %s, "
-      "wallDissipation %s, timeStepping %s (acousticCo %g):\n",
+      "wallDissipation %s, timeStepping %s:\n",
       columns, numerics.densityScheme.c_str(), double(numerics.deltaSPHViscosity),
       numerics.kernelCorrection ? "on" : "off",
       numerics.normalApproach ? "normalApproach" : "relativeVelocity",
-      numerics.dualCriteria ? "dualCriteria" : "kickDriftKick", double(numerics.acousticCo));
+      numerics.dualCriteria ? "dualCriteria" : "kickDriftKick");
   for (std::size_t k = 0; k < result.time.size(); ++k) {
     std::printf("    T %.3f  Z %.3f  measured %.3f\n", result.time[k], result.front[k],
                 result.measured[k]);
