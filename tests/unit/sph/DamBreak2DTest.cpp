@@ -250,8 +250,8 @@ TEST(DamBreak2D, NormalApproachWallsConvergeTheFront) {
 // timeStepping dualCriteria: advection steps of 0.2 dx / |v|max, each with one search and the
 // viscous term, in Verlet sub-steps of the pressure and density at acousticCo 1
 // (WeaklyCompressibleFlow::advectionStep). Measured at a/dx = 20 against the converged inviscid
-// front: RMS 0.59 %, largest 1.48 % (kickDriftKick at maxCo 0.25: 0.62 / 1.55 %), in 910
-// acoustic sub-steps against 2,978 steps (0.31 times; the run 0.7 s against 1.8 s, one thread).
+// front: RMS 0.59 %, largest 1.48 % (kickDriftKick at maxCo 0.25: 0.62 / 1.55 %), in 845
+// acoustic sub-steps against 2,978 steps (0.28 times; the run 0.7 s against 1.8 s, one thread).
 TEST(DamBreak2D, DualCriteriaStepsConvergeTheFrontInFewerPasses) {
   const int columns = 20;
   Numerics kickDriftKick;
