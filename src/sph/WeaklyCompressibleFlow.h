@@ -182,7 +182,8 @@ class WeaklyCompressibleFlow {
 
   // dualCriteria (Zhang, Hu & Adams 2017 §2.3, as SPHinXsys): the step of the pair lists,
   // deltaT, in acoustic sub-steps. The viscous term and the force models (and the packed density,
-  // when asked for) are evaluated once, at its start, over the lists of the last search; each
+  // when asked for) are evaluated once, at its start, over the lists of the last search (a
+  // viscosity solved implicitly is solved in every sub-step, after its kick); each
   // sub-step of dt is then a Verlet step of the pressure and the density alone,
   //   rho += dt/2 drho/dt,  x += dt/2 v,  v += dt (a_p(x, rho) + a_prior),
   //   x += dt/2 v,  drho/dt(x, v),  rho += dt/2 drho/dt,
