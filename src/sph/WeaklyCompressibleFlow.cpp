@@ -372,6 +372,9 @@ void WeaklyCompressibleFlow::computeRatesAndKick(double deltaT) {
       v[i] += halfDt * acceleration[i];
       rho[i] += halfDt * densityRate[i];
     }
+    // the halo's rates are not computed (computeRatesFor): what the heat and the next passes
+    // read there is its owners'
+    neighbourhood_.syncHalo(fluid_, {field::U, field::rho});
     updatePressure();
   });
   if (viscosityImplicit_) solveViscosity(dt);
@@ -416,6 +419,7 @@ void WeaklyCompressibleFlow::computeRatesAndKickStormerVerlet(Real dt) {
   addWallTime(timings_.integration, [&] {
 #pragma omp parallel for
     for (std::size_t i = 0; i < v.size(); ++i) v[i] += halfDt * acceleration[i];
+    neighbourhood_.syncHalo(fluid_, {field::U});  // the halo's rates are not computed
   });
   if (viscosityImplicit_) solveViscosity(dt);
 }
