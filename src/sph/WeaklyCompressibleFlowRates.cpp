@@ -255,8 +255,8 @@ void WeaklyCompressibleFlow::computeRatesFor() {
   }
   auto plainDifference = [](const Vector& a, const Vector& b) { return Vector(a - b); };
   // The owned particles only: a decomposed run's halo lacks its far neighbours, so its rates
-  // would be wrong; what a later pass reads at a neighbour is refreshed from the owners (the
-  // search's refresh, syncHalo), and nothing reads the halo's own rates.
+  // would be wrong. Nothing reads them: the kicks refresh the halo's velocity and density from
+  // the owners (syncHalo), and the search its every field.
   const std::size_t owned = fluid_.ownedSize();
   auto ratesWith = [&](auto separation) {
 #pragma omp parallel for schedule(static)
