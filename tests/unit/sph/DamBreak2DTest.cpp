@@ -65,7 +65,6 @@ struct Numerics {
   Real neighbourListSkin = FlowSettings().neighbourListSkin;
   bool normalApproach = false;  // wallDissipation normalApproach
   bool dualCriteria = false;    // timeStepping dualCriteria
-  Real acousticCo = 1;          // of dualCriteria's acoustic sub-steps (kickDriftKick: 0.25)
 };
 
 // Column a = 0.1 m resolved by `columns` particles across; tank 5a long. Runs to T = endT.
@@ -97,7 +96,6 @@ DamBreakResult runDamBreak(int columns, double endT, const Numerics& numerics = 
   settings.deltaSPHViscosity = numerics.deltaSPHViscosity;
   settings.neighbourListSkin = numerics.neighbourListSkin;
   settings.dualCriteria = numerics.dualCriteria;
-  settings.acousticCo = numerics.acousticCo;
   settings.walls.all.dissipation = numerics.normalApproach
                                        ? WallCondition::Dissipation::normalApproach
                                        : WallCondition::Dissipation::relativeVelocity;
