@@ -87,7 +87,9 @@ ImplicitViscosityReport ImplicitViscosity::solve(ParticleCloud& fluid,
 
   // The weights dt a_ij, the diagonal and the right side (the walls' velocities in it).
   // a_ij is computed alike from either side (the products commute): a_ij == a_ji in bits.
-#pragma omp parallel for schedule(static)
+  // (dynamic here and in the blocks: frozen rows, which cost nothing, lie in runs of the cell
+  // order; a row's and a block's sums are their own, so the bits are the same either way)
+#pragma omp parallel for schedule(dynamic, 64)
   for (std::size_t i = 0; i < owned; ++i) {
     if (isFrozen(i)) {
       diagonal_[i] = 1;
@@ -160,7 +162,7 @@ ImplicitViscosityReport ImplicitViscosity::solve(ParticleCloud& fluid,
   preconditioned_.resize(count);
   // q = A p for the unknowns (frozen rows hold p = 0 throughout), and the sum of p . q
   auto multiply = [&](const std::vector<Vector>& p) {
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(dynamic, 1)
     for (std::size_t b = 0; b < blocks; ++b) {
       Vector pq = Vector::Zero();
       for (std::size_t i = b * blockSize; i < std::min(owned, (b + 1) * blockSize); ++i) {
