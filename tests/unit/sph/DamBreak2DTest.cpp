@@ -65,6 +65,7 @@ struct Numerics {
   Real neighbourListSkin = FlowSettings().neighbourListSkin;
   bool normalApproach = false;  // wallDissipation normalApproach
   bool dualCriteria = false;    // timeStepping dualCriteria
+  Real supportRatio = 3;        // the kernel's support radius in dx
 };
 
 // Column a = 0.1 m resolved by `columns` particles across; tank 5a long. Runs to T = endT.
@@ -88,7 +89,7 @@ DamBreakResult runDamBreak(int columns, double endT, const Numerics& numerics = 
 
   FlowSettings settings;
   settings.dimension = 2;
-  settings.supportRadius = 3 * dx;
+  settings.supportRadius = numerics.supportRatio * dx;
   settings.soundSpeed = c;
   settings.gravity = Vector(0, -g, 0);
   settings.densityScheme = numerics.densityScheme;
@@ -171,11 +172,11 @@ FrontError againstConvergedFront(const DamBreakResult& result) {
 void print(int columns, const DamBreakResult& result, const Numerics& numerics = {}) {
   std::printf(
       "dam break 2D, a/dx = %d, densityScheme %s (alpha %g), kernelCorrection %s, "
-      "wallDissipation %s, timeStepping %s:\n",
+      "wallDissipation %s, timeStepping %s, support %g dx:\n",
       columns, numerics.densityScheme.c_str(), double(numerics.deltaSPHViscosity),
       numerics.kernelCorrection ? "on" : "off",
       numerics.normalApproach ? "normalApproach" : "relativeVelocity",
-      numerics.dualCriteria ? "dualCriteria" : "kickDriftKick");
+      numerics.dualCriteria ? "dualCriteria" : "kickDriftKick", double(numerics.supportRatio));
   for (std::size_t k = 0; k < result.time.size(); ++k) {
     std::printf("    T %.3f  Z %.3f  measured %.3f\n", result.time[k], result.front[k],
                 result.measured[k]);
@@ -350,6 +351,29 @@ TEST(DamBreak2D, DISABLED_SurgeFrontAtThreeResolutions) {
       print(columns, result, numerics);
       std::printf("    %llu pressure passes, %.2f s\n",
                   static_cast<unsigned long long>(result.pressurePasses), seconds.count());
+    }
+  }
+}
+
+// The kernel's support against cost with dualCriteria steps (SPHinXsys's support is 2.6 dx), for
+// the benchmarks: run with --gtest_also_run_disabled_tests --gtest_filter='*SupportRadius*'.
+// Measured (one thread, 2026-12-07), RMS from the a/dx 80 front at a/dx 10 / 20 / 40: 3 dx
+// 2.30 / 0.59 / 0.81 % in 0.10 / 0.71 / 5.68 s; 2.6 dx 2.18 / 0.53 / 0.75 % in 0.08 / 0.58 / 4.56
+// s.
+TEST(DamBreak2D, DISABLED_SupportRadiusAgainstCost) {
+  for (const Real ratio : {Real(3), Real(2.6)}) {
+    Numerics dualCriteria;
+    dualCriteria.normalApproach = true;
+    dualCriteria.dualCriteria = true;
+    dualCriteria.supportRatio = ratio;
+    for (const int columns : {10, 20, 40}) {
+      const auto start = std::chrono::steady_clock::now();
+      const auto result = runDamBreak(columns, 3.4, dualCriteria);
+      const std::chrono::duration<double> seconds = std::chrono::steady_clock::now() - start;
+      print(columns, result, dualCriteria);
+      std::printf("    %llu pressure passes, %zu searches, %.2f s\n",
+                  static_cast<unsigned long long>(result.pressurePasses), result.searches,
+                  seconds.count());
     }
   }
 }
