@@ -248,13 +248,15 @@ TEST(DamBreak2D, NormalApproachWallsConvergeTheFront) {
 
 // timeStepping dualCriteria: advection steps of 0.2 dx / |v|max, each with one search and the
 // viscous term, in Verlet sub-steps of the pressure and density at acousticCo 1
-// (WeaklyCompressibleFlow::advectionStep). Measured at a/dx = 20 against the converged inviscid
-// front: RMS 0.59 %, largest 1.48 % (kickDriftKick at maxCo 0.25: 0.62 / 1.55 %), in 845
-// acoustic sub-steps against 2,978 steps (0.28 times; the run 0.7 s against 1.8 s, one thread).
+// (WeaklyCompressibleFlow::advectionStep), with the tutorial's support h = 2.6 dx. Measured at
+// a/dx = 20 against the converged inviscid front: RMS 0.53 %, largest 1.50 % (with h = 3 dx
+// 0.59 / 1.48 %), in 842 acoustic sub-steps against kickDriftKick's 2,980 steps at maxCo 0.25
+// (0.28 times; its RMS 0.70 %, at 3 dx 0.62 %); 0.58 s (0.71 s at 3 dx), one thread.
 TEST(DamBreak2D, DualCriteriaStepsConvergeTheFrontInFewerPasses) {
   const int columns = 20;
   Numerics kickDriftKick;
   kickDriftKick.normalApproach = true;
+  kickDriftKick.supportRatio = Real(2.6);  // tutorials/validation/damBreak2D's
   Numerics dual = kickDriftKick;
   dual.dualCriteria = true;
   const auto reference = runDamBreak(columns, 3.4, kickDriftKick);
