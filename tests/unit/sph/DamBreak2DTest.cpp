@@ -359,9 +359,9 @@ TEST(DamBreak2D, DISABLED_SurgeFrontAtThreeResolutions) {
 
 // The kernel's support against cost with dualCriteria steps (SPHinXsys's support is 2.6 dx), for
 // the benchmarks: run with --gtest_also_run_disabled_tests --gtest_filter='*SupportRadius*'.
-// Measured (one thread, 2026-12-07), RMS from the a/dx 80 front at a/dx 10 / 20 / 40: 3 dx
-// 2.30 / 0.59 / 0.81 % in 0.10 / 0.71 / 5.68 s; 2.6 dx 2.18 / 0.53 / 0.75 % in 0.08 / 0.58 / 4.56
-// s.
+// Measured (one thread, 2026-12-07), RMS from the a/dx 80 front at a/dx 10 / 20 / 40:
+// 3 dx: 2.30 / 0.59 / 0.81 % in 0.10 / 0.71 / 5.68 s;
+// 2.6 dx: 2.18 / 0.53 / 0.75 % in 0.08 / 0.58 / 4.56 s.
 TEST(DamBreak2D, DISABLED_SupportRadiusAgainstCost) {
   for (const Real ratio : {Real(3), Real(2.6)}) {
     Numerics dualCriteria;
