@@ -2,6 +2,7 @@
 #include "sph/WeaklyCompressibleFlow.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cstdint>
 #include <limits>
 #include <type_traits>
@@ -478,28 +479,37 @@ std::uint64_t WeaklyCompressibleFlow::markFrozenNearMelt() {
   for (std::size_t w = 0; w < walls_.size(); ++w) {
     if (loadMeasured_[w]) bodyPairs.push_back(&wallPairs(w));
   }
-#pragma omp parallel for schedule(static)
+  // Marked outwards from the sources (the melt, and the metal a body touches), each marking its
+  // neighbours, in place of every particle searching its row for one: only the rows of the melt
+  // and of its first hop are read, not those of the frozen metal away from it to their ends
+  // (measured: 6.2 % of conicalMold's run on one thread, 2.4 % after). The pair lists are
+  // symmetric (j lies in i's row when i lies in j's), so the marks are the same; the halo's
+  // rows hold the rank's own particles, so an owned particle's marks are complete.
+  auto mark = [](std::uint8_t& flag) {
+    std::atomic_ref<std::uint8_t>(flag).store(1, std::memory_order_relaxed);
+  };
+#pragma omp parallel for schedule(dynamic, 256)
   for (std::size_t i = 0; i < count; ++i) {
-    bool touches = frozen[i] == 0;
+    const bool melt = frozen[i] == 0;
+    bool source = melt;
     for (const NeighbourList* pairs : bodyPairs) {
-      touches = touches || (i < pairs->particleCount() && !pairs->of(i).empty());
+      source = source || (i < pairs->particleCount() && !pairs->of(i).empty());
     }
-    for (std::uint64_t k = begins[i]; k < ends[i] && !touches; ++k) {
-      touches = frozen[neighbours[k]] == 0;
-    }
-    frozenTouchesMelt_[i] = touches ? 1 : 0;
+    if (!source) continue;
+    mark(frozenTouchesMelt_[i]);
+    if (!melt) continue;
+    for (std::uint64_t k = begins[i]; k < ends[i]; ++k) mark(frozenTouchesMelt_[neighbours[k]]);
   }
   neighbourhood_.syncHalo(fluid_, frozenTouchesMelt_);  // the second hop reads the neighbours
+#pragma omp parallel for schedule(dynamic, 256)
+  for (std::size_t i = 0; i < count; ++i) {
+    if (frozenTouchesMelt_[i] == 0) continue;
+    mark(frozenNearMelt_[i]);
+    for (std::uint64_t k = begins[i]; k < ends[i]; ++k) mark(frozenNearMelt_[neighbours[k]]);
+  }
   std::uint64_t skipped = 0;
 #pragma omp parallel for schedule(static) reduction(+ : skipped)
-  for (std::size_t i = 0; i < count; ++i) {
-    bool near = frozenTouchesMelt_[i] != 0;
-    for (std::uint64_t k = begins[i]; k < ends[i] && !near; ++k) {
-      near = frozenTouchesMelt_[neighbours[k]] != 0;
-    }
-    frozenNearMelt_[i] = near ? 1 : 0;
-    skipped += near ? 0 : 1;
-  }
+  for (std::size_t i = 0; i < count; ++i) skipped += frozenNearMelt_[i] == 0 ? 1 : 0;
   return skipped;
 }
 
