@@ -327,6 +327,19 @@ TEST(DamBreak2D, DeltaSPHSurgeFrontFollowsMartinMoyce) {
   expectSurgeSpeedWithinTwelvePercent(result);
 }
 
+// The run to T = 3.4 at a/dx = 10, 20 and 40 with `numerics`, printed with its passes and time.
+void printThreeResolutions(const Numerics& numerics) {
+  for (const int columns : {10, 20, 40}) {
+    const auto start = std::chrono::steady_clock::now();
+    const auto result = runDamBreak(columns, 3.4, numerics);
+    const std::chrono::duration<double> seconds = std::chrono::steady_clock::now() - start;
+    print(columns, result, numerics);
+    std::printf("    %llu pressure passes, %zu searches, %.2f s\n",
+                static_cast<unsigned long long>(result.pressurePasses), result.searches,
+                seconds.count());
+  }
+}
+
 // Three resolutions, for the issue note (minutes on one thread): run with
 // --gtest_also_run_disabled_tests --gtest_filter='*Resolutions*'.
 TEST(DamBreak2D, DISABLED_SurgeFrontAtThreeResolutions) {
@@ -346,14 +359,7 @@ TEST(DamBreak2D, DISABLED_SurgeFrontAtThreeResolutions) {
   for (const Numerics& numerics : {Numerics{"riemann", false, 0}, Numerics{"riemann", true, 0},
                                    Numerics{"deltaSPH", false, Real(0.02)}, normalApproach,
                                    deltaSPHNormalApproach, dualCriteria}) {
-    for (const int columns : {10, 20, 40}) {
-      const auto start = std::chrono::steady_clock::now();
-      const auto result = runDamBreak(columns, 3.4, numerics);
-      const std::chrono::duration<double> seconds = std::chrono::steady_clock::now() - start;
-      print(columns, result, numerics);
-      std::printf("    %llu pressure passes, %.2f s\n",
-                  static_cast<unsigned long long>(result.pressurePasses), seconds.count());
-    }
+    printThreeResolutions(numerics);
   }
 }
 
@@ -368,15 +374,7 @@ TEST(DamBreak2D, DISABLED_SupportRadiusAgainstCost) {
     dualCriteria.normalApproach = true;
     dualCriteria.dualCriteria = true;
     dualCriteria.supportRatio = ratio;
-    for (const int columns : {10, 20, 40}) {
-      const auto start = std::chrono::steady_clock::now();
-      const auto result = runDamBreak(columns, 3.4, dualCriteria);
-      const std::chrono::duration<double> seconds = std::chrono::steady_clock::now() - start;
-      print(columns, result, dualCriteria);
-      std::printf("    %llu pressure passes, %zu searches, %.2f s\n",
-                  static_cast<unsigned long long>(result.pressurePasses), result.searches,
-                  seconds.count());
-    }
+    printThreeResolutions(dualCriteria);
   }
 }
 
