@@ -259,12 +259,8 @@ void WeaklyCompressibleFlow::computeRatesFor() {
   // would be wrong. Nothing reads them: the kicks refresh the halo's velocity and density from
   // the owners (syncHalo), and the search its every field.
   const std::size_t owned = fluid_.ownedSize();
-  // Shared out dynamically: the frozen metal skipped lies in runs of the cell order, so equal
-  // static shares leave a thread idle (conicalMold's whole run 7 % faster on 2 threads); each
-  // particle's rates are its own, so the bits are the same either way.
   auto ratesWith = [&](auto separation) {
-#pragma omp parallel for schedule(dynamic, 64)
-    for (std::size_t i = 0; i < owned; ++i) {
+    auto ratesOf = [&](std::size_t i) {
       if (frozen && frozen[i] != 0 && !nearMelt[i]) {
         if constexpr (wantsDensityRate) densityRate[i] = 0;
         if constexpr (wantsAcceleration) acceleration[i] = Vector::Zero();
@@ -274,7 +270,7 @@ void WeaklyCompressibleFlow::computeRatesFor() {
         if (colourGradient) {
           colourGradient[i] = Vector::Constant(std::numeric_limits<Real>::quiet_NaN());
         }
-        continue;
+        return;
       }
       const Vector xi = x[i];
       const Vector vi = v[i];
@@ -378,6 +374,17 @@ void WeaklyCompressibleFlow::computeRatesFor() {
       if constexpr (wantsDensityRate) densityRate[i] = rate;
       if constexpr (wantsAcceleration) acceleration[i] = accel;
       if (colourGradient) colourGradient[i] = colour;
+    };
+    // Where frozen metal is skipped it lies in runs of the cell order, and equal static shares
+    // leave a thread idle: shared out dynamically then (conicalMold's whole run 7 % faster on 2
+    // threads), statically where nothing is skipped. Each particle's rates are its own: the same
+    // bits either way.
+    if (skipped > 0) {
+#pragma omp parallel for schedule(dynamic, 64)
+      for (std::size_t i = 0; i < owned; ++i) ratesOf(i);
+    } else {
+#pragma omp parallel for schedule(static)
+      for (std::size_t i = 0; i < owned; ++i) ratesOf(i);
     }
   };
   if (periodic.anyPeriodic()) {
@@ -479,34 +486,51 @@ std::uint64_t WeaklyCompressibleFlow::markFrozenNearMelt() {
   for (std::size_t w = 0; w < walls_.size(); ++w) {
     if (loadMeasured_[w]) bodyPairs.push_back(&wallPairs(w));
   }
-  // Marked outwards from the sources (the melt, and the metal a body touches), each marking its
-  // neighbours, in place of every particle searching its row for one: only the rows of the melt
-  // and of its first hop are read, not those of the frozen metal away from it to their ends
-  // (measured: 6.2 % of conicalMold's run on one thread, 2.4 % after). The pair lists are
-  // symmetric (j lies in i's row when i lies in j's), so the marks are the same; the halo's
-  // rows hold the rank's own particles, so an owned particle's marks are complete.
+  // Each hop is taken from the smaller side. Where the melt is the smaller part, it marks its
+  // neighbours (scattered: only the melt's rows are read, not every frozen row to its end;
+  // conicalMold, mostly frozen: 6.2 % of the run on one thread to 2.4 %); where the frozen metal
+  // is, each frozen particle looks for the melt in its own row (gathered: a melt particle reads
+  // nothing; crossDitchPress's pour, mostly melt: flow rates 61 s scattered, 60 s so). The pair
+  // lists are symmetric (j lies in i's row when i lies in j's), so both give the same marks; the
+  // halo's rows hold the rank's own particles, so an owned particle's marks are complete.
   auto mark = [](std::uint8_t& flag) {
     std::atomic_ref<std::uint8_t>(flag).store(1, std::memory_order_relaxed);
   };
+  // the next hop's marks in `to` from the marked `from` (sources: marked, not spreading)
+  auto spread = [&](const std::vector<std::uint8_t>& from, std::vector<std::uint8_t>& to,
+                    auto isSource) {
+    std::size_t marked = 0;
+#pragma omp parallel for schedule(static) reduction(+ : marked)
+    for (std::size_t i = 0; i < count; ++i) marked += from[i] != 0 ? 1 : 0;
+    if (2 * marked < count) {
 #pragma omp parallel for schedule(dynamic, 256)
-  for (std::size_t i = 0; i < count; ++i) {
-    const bool melt = frozen[i] == 0;
-    bool source = melt;
-    for (const NeighbourList* pairs : bodyPairs) {
-      source = source || (i < pairs->particleCount() && !pairs->of(i).empty());
+      for (std::size_t i = 0; i < count; ++i) {
+        if (from[i] == 0 && !isSource(i)) continue;
+        mark(to[i]);
+        if (from[i] == 0) continue;
+        for (std::uint64_t k = begins[i]; k < ends[i]; ++k) mark(to[neighbours[k]]);
+      }
+    } else {
+#pragma omp parallel for schedule(static)
+      for (std::size_t i = 0; i < count; ++i) {
+        bool near = from[i] != 0 || isSource(i);
+        for (std::uint64_t k = begins[i]; k < ends[i] && !near; ++k)
+          near = from[neighbours[k]] != 0;
+        to[i] = near ? 1 : 0;
+      }
     }
-    if (!source) continue;
-    mark(frozenTouchesMelt_[i]);
-    if (!melt) continue;
-    for (std::uint64_t k = begins[i]; k < ends[i]; ++k) mark(frozenTouchesMelt_[neighbours[k]]);
-  }
+  };
+  meltNow_.resize(count);
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < count; ++i) meltNow_[i] = frozen[i] == 0 ? 1 : 0;
+  spread(meltNow_, frozenTouchesMelt_, [&](std::size_t i) {
+    for (const NeighbourList* pairs : bodyPairs) {
+      if (i < pairs->particleCount() && !pairs->of(i).empty()) return true;
+    }
+    return false;
+  });
   neighbourhood_.syncHalo(fluid_, frozenTouchesMelt_);  // the second hop reads the neighbours
-#pragma omp parallel for schedule(dynamic, 256)
-  for (std::size_t i = 0; i < count; ++i) {
-    if (frozenTouchesMelt_[i] == 0) continue;
-    mark(frozenNearMelt_[i]);
-    for (std::uint64_t k = begins[i]; k < ends[i]; ++k) mark(frozenNearMelt_[neighbours[k]]);
-  }
+  spread(frozenTouchesMelt_, frozenNearMelt_, [](std::size_t) { return false; });
   std::uint64_t skipped = 0;
 #pragma omp parallel for schedule(static) reduction(+ : skipped)
   for (std::size_t i = 0; i < count; ++i) skipped += frozenNearMelt_[i] == 0 ? 1 : 0;
