@@ -310,7 +310,7 @@ class WeaklyCompressibleFlow {
   // where the models that asked for the colour gradient want it, and m / rho for its sum
   std::vector<std::vector<Vector>*> colourGradientBuffers_;
   std::vector<Real> pairVolume_;
-  std::vector<std::uint8_t> meltNow_, frozenTouchesMelt_, frozenNearMelt_;  // markFrozenNearMelt
+  std::vector<std::uint8_t> frozenTouchesMelt_, frozenNearMelt_;  // markFrozenNearMelt
   FlowTimings timings_;
   FlowWork work_;
   ImplicitViscosity implicitViscosity_;

@@ -496,41 +496,38 @@ std::uint64_t WeaklyCompressibleFlow::markFrozenNearMelt() {
   auto mark = [](std::uint8_t& flag) {
     std::atomic_ref<std::uint8_t>(flag).store(1, std::memory_order_relaxed);
   };
-  // the next hop's marks in `to` from the marked `from` (sources: marked, not spreading)
-  auto spread = [&](const std::vector<std::uint8_t>& from, std::vector<std::uint8_t>& to,
-                    auto isSource) {
+  // the next hop's marks in `to` from the particles `from` marks (sources: marked, not spreading)
+  auto spread = [&](auto from, std::vector<std::uint8_t>& to, auto isSource) {
     std::size_t marked = 0;
 #pragma omp parallel for schedule(static) reduction(+ : marked)
-    for (std::size_t i = 0; i < count; ++i) marked += from[i] != 0 ? 1 : 0;
+    for (std::size_t i = 0; i < count; ++i) marked += from(i) ? 1 : 0;
     if (2 * marked < count) {
 #pragma omp parallel for schedule(dynamic, 256)
       for (std::size_t i = 0; i < count; ++i) {
-        if (from[i] == 0 && !isSource(i)) continue;
+        if (!from(i) && !isSource(i)) continue;
         mark(to[i]);
-        if (from[i] == 0) continue;
+        if (!from(i)) continue;
         for (std::uint64_t k = begins[i]; k < ends[i]; ++k) mark(to[neighbours[k]]);
       }
     } else {
 #pragma omp parallel for schedule(static)
       for (std::size_t i = 0; i < count; ++i) {
-        bool near = from[i] != 0 || isSource(i);
-        for (std::uint64_t k = begins[i]; k < ends[i] && !near; ++k)
-          near = from[neighbours[k]] != 0;
+        bool near = from(i) || isSource(i);
+        for (std::uint64_t k = begins[i]; k < ends[i] && !near; ++k) near = from(neighbours[k]);
         to[i] = near ? 1 : 0;
       }
     }
   };
-  meltNow_.resize(count);
-#pragma omp parallel for schedule(static)
-  for (std::size_t i = 0; i < count; ++i) meltNow_[i] = frozen[i] == 0 ? 1 : 0;
-  spread(meltNow_, frozenTouchesMelt_, [&](std::size_t i) {
-    for (const NeighbourList* pairs : bodyPairs) {
-      if (i < pairs->particleCount() && !pairs->of(i).empty()) return true;
-    }
-    return false;
-  });
+  spread([&](std::size_t i) { return frozen[i] == 0; }, frozenTouchesMelt_,
+         [&](std::size_t i) {
+           for (const NeighbourList* pairs : bodyPairs) {
+             if (i < pairs->particleCount() && !pairs->of(i).empty()) return true;
+           }
+           return false;
+         });
   neighbourhood_.syncHalo(fluid_, frozenTouchesMelt_);  // the second hop reads the neighbours
-  spread(frozenTouchesMelt_, frozenNearMelt_, [](std::size_t) { return false; });
+  spread([&](std::size_t i) { return frozenTouchesMelt_[i] != 0; }, frozenNearMelt_,
+         [](std::size_t) { return false; });
   std::uint64_t skipped = 0;
 #pragma omp parallel for schedule(static) reduction(+ : skipped)
   for (std::size_t i = 0; i < count; ++i) skipped += frozenNearMelt_[i] == 0 ? 1 : 0;
