@@ -198,8 +198,10 @@ std::pair<Vector, Vector> boundingBox(const std::vector<Vector>& positions) {
   constexpr Real big = std::numeric_limits<Real>::max();
   Real lo0 = big, lo1 = big, lo2 = big, hi0 = -big, hi1 = -big, hi2 = -big;
   const std::size_t count = positions.size();
-#pragma omp parallel for if (count > parallelThreshold) reduction(min : lo0, lo1, lo2) \
-    reduction(max : hi0, hi1, hi2)
+#pragma omp parallel for if (count > parallelThreshold) reduction(min              \
+                                                                  : lo0, lo1, lo2) \
+    reduction(max                                                                  \
+              : hi0, hi1, hi2)
   for (std::size_t i = 0; i < count; ++i) {
     const Vector& x = positions[i];
     lo0 = std::min(lo0, x[0]), lo1 = std::min(lo1, x[1]), lo2 = std::min(lo2, x[2]);
@@ -237,6 +239,7 @@ void NeighbourList::build(const std::vector<Vector>& positionsA,
                           const std::vector<Vector>& positionsB, const CellGrid& gridB,
                           bool sameCloud) {
   if (gridB.cellCount() == 0) throw Error("NeighbourList: the cell grid has not been built");
+  ++changes_;
   if (positionsB.size() != gridB.particleCount()) {
     throw Error("NeighbourList: the grid holds " + std::to_string(gridB.particleCount()) +
                 " particles but the cloud has " + std::to_string(positionsB.size()) +
@@ -281,6 +284,7 @@ void NeighbourList::filterFrom(const NeighbourList& wide, const std::vector<Vect
                                const std::vector<Vector>& positionsB, Real radius,
                                const PeriodicBox& periodic, const std::uint8_t* movedA,
                                const std::uint8_t* movedB) {
+  ++changes_;
   const std::size_t count = positionsA.size();
   if (wide.particleCount() != count) {
     throw Error("NeighbourList: the wide list holds " + std::to_string(wide.particleCount()) +

@@ -74,6 +74,9 @@ class NeighbourList {
                   const std::uint8_t* movedA = nullptr, const std::uint8_t* movedB = nullptr);
 
   std::size_t particleCount() const { return offsets_.size() - 1; }
+  // How many times the list was built or filtered: a row read at two equal counts holds the
+  // same pairs in the same order (a model that keeps what it computed from rows checks it).
+  std::uint64_t changes() const { return changes_; }
   std::size_t pairCount() const { return pairCount_; }
 
   const std::vector<std::uint64_t>& offsets() const { return offsets_; }
@@ -98,9 +101,10 @@ class NeighbourList {
   std::vector<std::uint64_t> ends_;
   std::vector<std::uint32_t> neighbours_;
   std::size_t pairCount_ = 0;
-  bool filteredRooms_ = false;  // the rows lie in a wide list's ranges (filterFrom)
+  std::uint64_t changes_ = 0;
+  bool filteredRooms_ = false;             // the rows lie in a wide list's ranges (filterFrom)
   std::vector<std::uint8_t> changedRows_;  // filterFrom's rows to filter again, within a cloud
-  std::vector<std::uint32_t> counts_;                     // per particle of A
+  std::vector<std::uint32_t> counts_;      // per particle of A
   std::vector<std::vector<std::uint32_t>> blockStorage_;  // per block of i, only grows
   std::vector<std::size_t> blockUsed_;                    // entries of blockStorage_ in use
   std::vector<std::size_t> blockBegin_;                   // first i of each block

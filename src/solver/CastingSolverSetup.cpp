@@ -324,13 +324,30 @@ void CastingSolver::setUpHeat() {
   context.comm = comm_;
   models_.energy = std::make_unique<EnergyEquation>(context, heatSetup_.heatTransfer);
   if (models_.energy->needsExposedArea()) {
+    // The areas a surface loss reads. Where those are all of walls (kept lattices, whose area
+    // needs no gate), only they are computed: crossDitchPress's molds lose heat to the air, its
+    // metal does not, and the metal's rows were a sixth of the pass (the other clouds cover, as
+    // before, so the molds' areas are the same bits). A gated cloud's area reads the fullness
+    // of every exposed neighbour: then every heat cloud is computed, as before.
+    const auto& heatClouds = models_.energy->context().clouds;
+    auto isWall = [&](const ParticleCloud* cloud) {
+      return std::find(models_.walls.begin(), models_.walls.end(), cloud) != models_.walls.end();
+    };
+    bool onlyWallsRead = true;
+    for (std::size_t c = 0; c < heatClouds.size(); ++c) {
+      if (models_.energy->readsExposedAreaOf(c) && !isWall(heatClouds[c].cloud)) {
+        onlyWallsRead = false;
+      }
+    }
     std::vector<ParticleCloud*> exposed;
     std::vector<const ParticleCloud*> covering;
     exposedAreaRestored_ = models_.energy->restarted();
-    for (const HeatCloud& heat : models_.energy->context().clouds) {
-      exposedAreaRestored_ = exposedAreaRestored_ && heat.cloud->hasScalarField(field::exposedArea);
-      exposed.push_back(heat.cloud);
-      covering.push_back(heat.cloud);
+    for (std::size_t c = 0; c < heatClouds.size(); ++c) {
+      covering.push_back(heatClouds[c].cloud);
+      if (onlyWallsRead && !models_.energy->readsExposedAreaOf(c)) continue;
+      exposedAreaRestored_ =
+          exposedAreaRestored_ && heatClouds[c].cloud->hasScalarField(field::exposedArea);
+      exposed.push_back(heatClouds[c].cloud);
     }
     for (const ParticleCloud* wall : models_.walls) {
       if (std::find(covering.begin(), covering.end(), wall) == covering.end()) {

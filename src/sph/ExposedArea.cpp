@@ -177,6 +177,41 @@ void ExposedArea::findCoarsePairs() {
   }
 }
 
+// Per covering cloud, which particles changed position or volume since the last pass, bit for
+// bit (held frozen metal and a mold at rest keep theirs exactly), and the present ones kept.
+void ExposedArea::markChanged() {
+  coveringState_.resize(covering_.size());
+  for (std::size_t c = 0; c < covering_.size(); ++c) {
+    const std::vector<Vector>& x = covering_[c]->positions();
+    const std::vector<Real>& volume = coveringVolume_[c];
+    CoveringState& state = coveringState_[c];
+    const std::size_t count = x.size();
+    if (state.positions.size() != count || state.volumes.size() != count) {
+      state.positions = x;
+      state.volumes = volume;
+      state.changed.assign(count, 1);
+      state.anyChanged = true;
+      continue;
+    }
+    state.changed.resize(count);
+    Vector* lastX = state.positions.data();
+    Real* lastVolume = state.volumes.data();
+    std::uint8_t* changed = state.changed.data();
+    int any = 0;
+#pragma omp parallel for schedule(static) reduction(| : any)
+    for (std::size_t i = 0; i < count; ++i) {
+      const bool moved = x[i] != lastX[i] || !(volume[i] == lastVolume[i]);
+      changed[i] = moved ? 1 : 0;
+      if (moved) {
+        lastX[i] = x[i];
+        lastVolume[i] = volume[i];
+        any = 1;
+      }
+    }
+    state.anyChanged = any != 0;
+  }
+}
+
 void ExposedArea::compute() {
   if (dimension_ == 2) {
     computeIn<2>();
@@ -232,7 +267,25 @@ void ExposedArea::computeIn() {
     }
   }
   const Real momentScale = Real(-1) / (Real(Dim) * fullLatticeMoment_);
-  std::vector<std::vector<Real>> gradientArea(exposed_.size());
+  gradientArea_.resize(exposed_.size());
+  std::vector<std::vector<Real>>& gradientArea = gradientArea_;
+  // Which exposed clouds may keep rows: walls (their area is their row's own sums), covering
+  // (their changes are tracked), with few enough covering clouds for a row's bit mask.
+  latticeRows_.resize(exposed_.size());
+  std::vector<int> selfCovering(exposed_.size(), -1);
+  bool anyKept = false;
+  for (std::size_t e = 0; e < exposed_.size(); ++e) {
+    const auto self = std::find(covering_.begin(), covering_.end(), exposed_[e]);
+    const bool lattice =
+        std::find(lattices_.begin(), lattices_.end(), exposed_[e]) != lattices_.end();
+    if (lattice && self != covering_.end() && covering_.size() <= 32) {
+      selfCovering[e] = static_cast<int>(self - covering_.begin());
+      anyKept = true;
+    } else {
+      latticeRows_[e].valid = false;
+    }
+  }
+  if (anyKept) markChanged();
   auto passWith = [&](auto separation) {
     for (std::size_t e = 0; e < exposed_.size(); ++e) {
       ParticleCloud* cloud = exposed_[e];
@@ -250,8 +303,46 @@ void ExposedArea::computeIn() {
       const Real* depth = coarse && cloud->hasScalarField(field::wallDistance)
                               ? cloud->scalarField(field::wallDistance).data()
                               : nullptr;
+      // A kept lattice's rows: a row stays when neither it nor any particle it sums changed,
+      // and no list it reads was rebuilt or filtered with it in it, then or now (its pairs
+      // then are its pairs now, in the same order: the same bits as a new sum).
+      LatticeRows& rows = latticeRows_[e];
+      const bool keeping = selfCovering[e] >= 0;
+      const bool cached = keeping && rows.valid && rows.size == x.size();
+      std::vector<std::uint8_t> listChanged(covering_.size(), 1);
+      for (std::size_t c = 0; c < covering_.size() && cached; ++c) {
+        listChanged[c] = lists[c]->changes() != rows.listChanges[c] ? 1 : 0;
+      }
+      if (keeping) rows.neighbourIn.resize(x.size(), 0);
+      const CoveringState* selfState =
+          keeping ? &coveringState_[static_cast<std::size_t>(selfCovering[e])] : nullptr;
+      auto rowStays = [&](std::size_t i, bool coarseRow) {
+        if (!cached || selfState->changed[i] || (coarseRow && selfState->anyChanged)) return false;
+        for (std::size_t c = 0; c < covering_.size(); ++c) {
+          const auto row = lists[c]->of(i);
+          if (listChanged[c]) {
+            if (!row.empty() || (rows.neighbourIn[i] >> c & 1u)) return false;
+            continue;
+          }
+          if (!coveringState_[c].anyChanged) continue;
+          const std::uint8_t* changed = coveringState_[c].changed.data();
+          for (const std::uint32_t j : row) {
+            if (changed[j]) return false;
+          }
+        }
+        return true;
+      };
 #pragma omp parallel for schedule(static)
       for (std::size_t i = 0; i < x.size(); ++i) {
+        if (keeping) {
+          const bool stays = rowStays(i, coarse && coarse->rowStart[i + 1] > coarse->rowStart[i]);
+          std::uint32_t neighbourIn = 0;
+          for (std::size_t c = 0; c < covering_.size(); ++c) {
+            if (!lists[c]->of(i).empty()) neighbourIn |= 1u << c;
+          }
+          rows.neighbourIn[i] = neighbourIn;
+          if (stays) continue;
+        }
         Real s = volume[i] * selfKernel;
         Real moment = 0;
         Vector gradient = Vector::Zero();
@@ -294,6 +385,14 @@ void ExposedArea::computeIn() {
         } else {
           const Real q = Real(1) - volume[i] * ownKernelAtZero;
           area[i] = areaFactor * exposureWeight(Real(1) - s, q) * std::pow(volume[i], areaExponent);
+        }
+      }
+      if (keeping) {
+        rows.valid = true;
+        rows.size = x.size();
+        rows.listChanges.resize(covering_.size());
+        for (std::size_t c = 0; c < covering_.size(); ++c) {
+          rows.listChanges[c] = lists[c]->changes();
         }
       }
     }

@@ -122,8 +122,27 @@ class ExposedArea {
   std::vector<std::uint64_t> coarseLayouts_;       // the clouds' layoutVersion at coarsePairs_'s
   std::vector<std::vector<Real>> coveringVolume_;  // V of each covering cloud, every pass
   std::vector<std::vector<Real>> fullness_;        // c_i of each exposed cloud, every pass
-  Real gateFrom_ = 0, gateTo_ = 1;                 // the interior gate's ramp in cbar
-  Real fullLatticeMoment_ = 1;                     // c_full
+  std::vector<std::vector<Real>> gradientArea_;    // the ungated A_i of each exposed cloud
+  // Rows of a lattice (an exposed wall: its area is its own row's sums, no gate) that nothing
+  // changed since the last pass keep what they hold: a mold at rest away from the metal, most
+  // of crossDitchPress's 34,792 mold rows, read the same sums every heat step (markChanged).
+  struct CoveringState {
+    std::vector<Vector> positions;      // at the last pass
+    std::vector<Real> volumes;          // at the last pass
+    std::vector<std::uint8_t> changed;  // per particle: position or volume since then
+    bool anyChanged = true;
+  };
+  struct LatticeRows {
+    bool valid = false;                      // every row computed at least once
+    std::size_t size = 0;                    // the cloud's particles then
+    std::vector<std::uint64_t> listChanges;  // per covering cloud: the list's changes() then
+    std::vector<std::uint32_t> neighbourIn;  // per row: bit c where it had pairs in cloud c
+  };
+  void markChanged();
+  std::vector<CoveringState> coveringState_;
+  std::vector<LatticeRows> latticeRows_;  // per exposed cloud (used for lattices only)
+  Real gateFrom_ = 0, gateTo_ = 1;        // the interior gate's ramp in cbar
+  Real fullLatticeMoment_ = 1;            // c_full
   const Neighbourhood& neighbourhood_;
 };
 

@@ -27,6 +27,9 @@ class AtmosphereTransfer : public HeatTransferModel {
 
   const char* name() const override { return "atmosphere"; }
   bool readsExposedArea() const override { return true; }
+  bool readsExposedAreaOf(std::size_t cloud) const override {
+    return coefficientOfCloud_[cloud] != 0 && !context_.clouds[cloud].fixedTemperature;
+  }
   std::string description() const override;
   void addEnergyRates() override;
   std::vector<double> powerLeaving() const override { return powerLeaving_; }

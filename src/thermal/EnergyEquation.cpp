@@ -1,5 +1,6 @@
 #include "thermal/EnergyEquation.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -228,6 +229,11 @@ double EnergyEquation::stableDeltaT(std::string& limiter) const {
     }
   }
   return shortest;
+}
+
+bool EnergyEquation::readsExposedAreaOf(std::size_t c) const {
+  return std::any_of(paths_.begin(), paths_.end(),
+                     [c](const auto& path) { return path->readsExposedAreaOf(c); });
 }
 
 std::vector<std::string> EnergyEquation::descriptions() const {

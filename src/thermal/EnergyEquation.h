@@ -60,6 +60,9 @@ class EnergyEquation {
   // True when a path reads the exposed area A_i (the solver computes it before computeRates),
   // and the form heatTransfer's `exposedArea` asks for.
   bool needsExposedArea() const { return needsExposedArea_; }
+  // Whether a path reads the exposed area of heat cloud c (context().clouds[c]): a surface
+  // loss with a coefficient for its material, the cloud not held.
+  bool readsExposedAreaOf(std::size_t c) const;
   ExposedAreaForm exposedAreaForm() const { return exposedAreaForm_; }
   const HeatTransferContext& context() const { return context_; }
   double stableDeltaT(std::string& limiter) const;

@@ -31,6 +31,9 @@ class RadiationTransfer : public HeatTransferModel {
 
   const char* name() const override { return "radiation"; }
   bool readsExposedArea() const override { return true; }
+  bool readsExposedAreaOf(std::size_t cloud) const override {
+    return emissivityOfCloud_[cloud] != 0 && !context_.clouds[cloud].fixedTemperature;
+  }
   std::string description() const override;
   void addEnergyRates() override;
   std::vector<double> powerLeaving() const override { return powerLeaving_; }

@@ -4,13 +4,18 @@
 // -beta sigma A (T^4 - T_a^4), so its mean temperature checks the sum of A_i.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <functional>
+#include <memory>
 #include <numbers>
 #include <random>
 
 #include "ThermalTestCases.h"
 #include "particles/FieldNames.h"
+#include "particles/Neighbourhood.h"
+#include "sph/ExposedArea.h"
 
 namespace sphcast::testing {
 namespace {
@@ -130,6 +135,72 @@ TEST(SurfaceHeatLossTest, ExposedAreaOfADisorderedCubeStaysAtItsSurface) {
 TEST(SurfaceHeatLossTest, InteriorGateLetsEveryLayerOfAFlatFaceThrough) {
   const Real dx = Real(1e-3);
   EXPECT_NEAR(ExposedArea::deepestAreaLayerFullness(3, 3 * dx, dx), 0.892, 0.001);
+}
+
+// A wall keeps the rows that nothing changed (ExposedArea.h): after a metal particle above it
+// changed its volume, a corner of the metal moved, and the metal left, its areas are those a
+// new ExposedArea computes on the same state, bit for bit, and the rows the metal reached did
+// change.
+TEST(SurfaceHeatLossTest, ExposedAreaOfAWallKeepsOnlyTheRowsNothingChanged) {
+  const Real dx = Real(1e-3);
+  ParticleCloud wall = latticeBlock("wall", Vector(0, 0, 0), 16, 16, 4, dx, 3, Real(400));
+  ParticleCloud metal =
+      latticeBlock("metal", Vector(4 * dx, 4 * dx, 4 * dx), 6, 6, 3, dx, 3, Real(900));
+  auto& mass = metal.addScalarField(field::mass);
+  auto& rho = metal.addScalarField(field::rho);
+  std::fill(mass.begin(), mass.end(), Real(2.5e-6));
+  std::fill(rho.begin(), rho.end(), Real(2500));
+  const PeriodicBox open;
+  Neighbourhood neighbourhood(3 * dx, open, Real(0.9) * dx);  // a skin: lists filtered, kept
+  neighbourhood.addCloud(wall, Neighbourhood::Motion::fixed);
+  // rigid: its lists are left alone where it did not move (a moving cloud's are filtered at
+  // every update), so that a change of volume alone reaches the rows through their neighbours
+  neighbourhood.addCloud(metal, Neighbourhood::Motion::rigid);
+  auto areaOn = [&]() {
+    return std::make_unique<ExposedArea>(ExposedAreaForm::gradient, 3, 3 * dx, dx,
+                                         std::vector<ParticleCloud*>{&wall},
+                                         std::vector<const ParticleCloud*>{&wall, &metal},
+                                         neighbourhood, std::vector<const ParticleCloud*>{&wall});
+  };
+  const auto kept = areaOn();
+  neighbourhood.update(CloudOrder::keep);
+  kept->compute();
+  std::vector<Real> before = wall.scalarField(field::exposedArea);
+  // each change of the metal, then the kept object's areas against a new object's
+  const std::vector<std::function<void()>> changes{
+      [] {},  // nothing moved
+      [&] {   // a particle's density changed, nothing moved: the lists stay as they are
+        metal.scalarField(field::rho)[40] = Real(2450);
+      },
+      [&] {  // a corner of the metal shifted along x, within the skin: the lists filtered
+        for (std::size_t i = 0; i < 10; ++i) metal.positions()[i][0] += Real(0.2) * dx;
+      },
+      [&] {  // the metal lifted out of the wall's reach
+        for (Vector& x : metal.positions()) x[2] += 10 * dx;
+      }};
+  for (std::size_t k = 0; k < changes.size(); ++k) {
+    changes[k]();
+    neighbourhood.update(CloudOrder::keep);
+    kept->compute();
+    const std::vector<Real> keptArea = wall.scalarField(field::exposedArea);
+    const std::vector<Real> keptGranularity = wall.scalarField(field::granularity);
+    areaOn()->compute();
+    const auto& fresh = wall.scalarField(field::exposedArea);
+    const auto& freshGranularity = wall.scalarField(field::granularity);
+    std::size_t changed = 0;
+    for (std::size_t i = 0; i < wall.size(); ++i) {
+      ASSERT_EQ(keptArea[i], fresh[i]) << "change " << k << ", wall particle " << i;
+      ASSERT_EQ(keptGranularity[i], freshGranularity[i]) << "change " << k << ", particle " << i;
+      if (fresh[i] != before[i]) ++changed;
+    }
+    if (k == 0) {
+      EXPECT_EQ(changed, 0u);
+    } else {
+      EXPECT_GT(changed, k == 1 ? 5u : 50u) << "change " << k << ": no area changed";
+      EXPECT_LT(changed, wall.size() / 2) << "change " << k;
+    }
+    before = fresh;
+  }
 }
 
 // A plate periodic in x and y (8 x 8 particles), `layers` thick in z: two flat faces of area
