@@ -7,7 +7,7 @@
 # the reference's feeding draws (4.8 % and 4.9 %), the sink's mean distance from the reference's
 # funnel, r = 0 to 40 mm, below 1 mm (0.64 mm; it does not fall with dx), the last particles to
 # freeze within a quarter of the top's radius of the axis and a tenth of the height of the top
-# there; the cooling mode's flow steps are of its own maxCo (0.625, not controlDict's 0.25).
+# there; the cooling mode's flow steps are of its own maxCo (1, not controlDict's 0.25).
 # With the cavitation floor at 0 instead of -5,000 Pa the melt feeds by gravity alone and
 # fails: 2.9 % lost, the sink 0.92 mm off.
 . "$SPHCAST_TEST_TOOLS"
@@ -26,12 +26,12 @@ awk '/flow rates of frozen metal with no melt within two neighbour hops:/ {
     fail "no sensible account of the skipped flow rates: $(grep -A3 'Work skipped' log.sphCastFoam)"
 awk '/the cooling mode: / { found = 1; if ($15 + 0 < 50 * $4) exit 1 } END { if (!found) exit 1 }' \
     log.sphCastFoam || fail "no sensible account of the cooling mode: $(grep 'the cooling mode' log.sphCastFoam)"
-# the cooling mode's flow steps take its own maxCo (0.625), not controlDict's (0.25): at most
-# 0.625 dx / c = 5.625e-05 s at c = 50 m/s and dx = 4.5 mm (less by the melt's |U| / c, below
-# 1 % in the mode, where |U| < movingSpeed = 0.5 m/s), on every log line of the mode
+# the cooling mode's flow steps take its own maxCo (1), not controlDict's (0.25): at most
+# dx / c = 9e-05 s at c = 50 m/s and dx = 4.5 mm (less by the melt's |U| / c, 2 % in the mode,
+# where |U| < movingSpeed = 1 m/s), on every log line of the mode
 awk '/cooling: heat steps of/ { n++; step = $0; sub(/.*\(the last /, "", step); sub(/ s\).*/, "", step); step += 0
-                                if (step < 5.625e-5 * 0.99 || step > 5.625e-5 * 1.000001) bad = step }
+                                if (step < 9e-5 * 0.975 || step > 9e-5 * 1.000001) bad = step }
      END { if (bad != "") print "a flow step of " bad " s"; exit (n == 0 || bad != "") }' \
-    log.sphCastFoam || fail "the cooling mode's flow steps are not 0.625 dx / c"
+    log.sphCastFoam || fail "the cooling mode's flow steps are not dx / c"
 "$python" compareWithReference --check > /dev/null || fail "the cone against the reference"
 pass "conicalMold solidifies, feeds its shrinkage and leaves its sink as the reference does"
