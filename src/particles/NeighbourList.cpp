@@ -198,10 +198,8 @@ std::pair<Vector, Vector> boundingBox(const std::vector<Vector>& positions) {
   constexpr Real big = std::numeric_limits<Real>::max();
   Real lo0 = big, lo1 = big, lo2 = big, hi0 = -big, hi1 = -big, hi2 = -big;
   const std::size_t count = positions.size();
-#pragma omp parallel for if (count > parallelThreshold) reduction(min              \
-                                                                  : lo0, lo1, lo2) \
-    reduction(max                                                                  \
-              : hi0, hi1, hi2)
+#pragma omp parallel for if (count > parallelThreshold) reduction(min : lo0, lo1, lo2) \
+    reduction(max : hi0, hi1, hi2)
   for (std::size_t i = 0; i < count; ++i) {
     const Vector& x = positions[i];
     lo0 = std::min(lo0, x[0]), lo1 = std::min(lo1, x[1]), lo2 = std::min(lo2, x[2]);

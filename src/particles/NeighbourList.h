@@ -101,10 +101,10 @@ class NeighbourList {
   std::vector<std::uint64_t> ends_;
   std::vector<std::uint32_t> neighbours_;
   std::size_t pairCount_ = 0;
-  std::uint64_t changes_ = 0;
-  bool filteredRooms_ = false;             // the rows lie in a wide list's ranges (filterFrom)
+  std::uint64_t changes_ = 0;  // builds and filters so far
+  bool filteredRooms_ = false;  // the rows lie in a wide list's ranges (filterFrom)
   std::vector<std::uint8_t> changedRows_;  // filterFrom's rows to filter again, within a cloud
-  std::vector<std::uint32_t> counts_;      // per particle of A
+  std::vector<std::uint32_t> counts_;                     // per particle of A
   std::vector<std::vector<std::uint32_t>> blockStorage_;  // per block of i, only grows
   std::vector<std::size_t> blockUsed_;                    // entries of blockStorage_ in use
   std::vector<std::size_t> blockBegin_;                   // first i of each block

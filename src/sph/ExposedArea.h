@@ -125,7 +125,7 @@ class ExposedArea {
   std::vector<std::vector<Real>> gradientArea_;    // the ungated A_i of each exposed cloud
   // Rows of a lattice (an exposed wall: its area is its own row's sums, no gate) that nothing
   // changed since the last pass keep what they hold: a mold at rest away from the metal, most
-  // of crossDitchPress's 34,792 mold rows, read the same sums every heat step (markChanged).
+  // of crossDitchPress's mold rows, reads the same sums every heat step (markChanged).
   struct CoveringState {
     std::vector<Vector> positions;      // at the last pass
     std::vector<Real> volumes;          // at the last pass
