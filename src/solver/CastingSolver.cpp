@@ -162,12 +162,12 @@ void CastingSolver::spillMetalOutside(bool heatKickPending) {
           << (spill.first.empty() ? "" : " (the first, " + spill.first + ")") << "; spilled in all "
           << models_.fluid->attributes().at("spilledParticles") << " particles, "
           << models_.fluid->attributes().at("spilledMass") << " kg, " << 100 * fraction
-          << " % of the metal";
+          << " % of its mass";
   if (fraction > limit) {
     message << ", above healthChecks maxSpilledFraction " << 100 * limit
             << " %: the mold leaks, or the case spills more than it allows";
     spillStop_ = message.str();
-  } else if (comm_.master() && monitor_.warnings().shouldPrint("metal spilled", fraction)) {
+  } else if (comm_.master() && monitor_.warnings().shouldPrint("fluid spilled", fraction)) {
     warning("time " + time_.timeName() + ": " + message.str());
   }
 }

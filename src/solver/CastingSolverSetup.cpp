@@ -261,9 +261,10 @@ void CastingSolver::setUpFlow() {
   const Eigen::IOFormat plain(Eigen::StreamPrecision, Eigen::DontAlignCols, " ", " ");
   info() << "    domain (" << domain_.lower.transpose().format(plain) << ") ("
          << domain_.upper.transpose().format(plain)
-         << "): metal outside it is spilled (removed, its mass and heat booked; the run stops "
-         << "when more than " << 100 * monitor_.healthSettings().maxSpilledFraction
-         << " % of the metal has spilled), any other particle outside it, or one not finite, "
+         << "): fluid of cloud '" << models_.fluid->name()
+         << "' outside it is spilled (removed, its mass and heat booked; the run stops when more "
+         << "than " << 100 * monitor_.healthSettings().maxSpilledFraction
+         << " % of it has spilled), any other particle outside it, or one not finite, "
          << "stops the run\n"
          << "    health checks: density deviation warned above "
          << 100 * monitor_.healthSettings().warnDensityDeviation << " %, stops above "

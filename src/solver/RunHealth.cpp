@@ -51,7 +51,8 @@ HealthSettings HealthSettings::read(const Dictionary& controlDict) {
     domain.upper = box.get<Vector>("upper");
     if (!(domain.lower.array() < domain.upper.array()).all()) {
       throw DictionaryError(box.location("upper"),
-                            "'upper' must lie above 'lower' in every direction in " + box.name());
+                            "'upper' must lie above 'lower' in every direction in " + box.name() +
+                                " (in a 2D case along z too: e.g. -1 and 1)");
     }
     s.domain = domain;
   }
