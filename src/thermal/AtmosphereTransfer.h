@@ -26,7 +26,6 @@ class AtmosphereTransfer : public HeatTransferModel {
   AtmosphereTransfer(const HeatTransferContext& context, const Dictionary& dict);
 
   const char* name() const override { return "atmosphere"; }
-  bool readsExposedArea() const override { return true; }
   bool readsExposedAreaOf(std::size_t cloud) const override {
     return coefficientOfCloud_[cloud] != 0 && !context_.clouds[cloud].fixedTemperature;
   }

@@ -83,9 +83,8 @@ class HeatTransferModel {
   // The longest step this path stays stable and accurate with (s), for the state of the last
   // addEnergyRates().
   virtual double stableDeltaT() const { return std::numeric_limits<double>::infinity(); }
-  // Whether the path reads the exposed area A_i (sph/ExposedArea.h), which is then computed,
-  // and of which heat cloud (by index into the context's clouds).
-  virtual bool readsExposedArea() const { return false; }
+  // Whether the path reads the exposed area A_i (sph/ExposedArea.h) of a heat cloud (by index
+  // into the context's clouds): the areas are computed where some path reads them.
   virtual bool readsExposedAreaOf(std::size_t /*cloud*/) const { return false; }
 };
 

@@ -86,7 +86,9 @@ std::vector<std::unique_ptr<HeatTransferModel>> buildHeatTransferPaths(
   for (const std::string& name : heatTransferPaths().names()) {
     if (!switchedOn(heatTransfer, name)) continue;
     paths.push_back(heatTransferPaths().build(name, context, heatTransfer));
-    needsExposedArea = needsExposedArea || paths.back()->readsExposedArea();
+    for (std::size_t c = 0; c < context.clouds.size(); ++c) {
+      needsExposedArea = needsExposedArea || paths.back()->readsExposedAreaOf(c);
+    }
   }
   return paths;
 }

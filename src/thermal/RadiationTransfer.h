@@ -30,7 +30,6 @@ class RadiationTransfer : public HeatTransferModel {
   RadiationTransfer(const HeatTransferContext& context, const Dictionary& dict);
 
   const char* name() const override { return "radiation"; }
-  bool readsExposedArea() const override { return true; }
   bool readsExposedAreaOf(std::size_t cloud) const override {
     return emissivityOfCloud_[cloud] != 0 && !context_.clouds[cloud].fixedTemperature;
   }
