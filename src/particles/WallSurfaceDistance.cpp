@@ -265,4 +265,32 @@ WallSurfaceDistance wallSurfaceDistance(const Vector& x, std::size_t i,
   return nearestPlane(x, feet, spacing, within);
 }
 
+WallGap wallGapAcross(const Vector& x, std::size_t i, const std::vector<WallSurfaceView>& walls,
+                      const PeriodicBox& periodic, Real spacing, Real reach) {
+  WallGap gap;
+  const WallSurfaceDistance nearest = wallSurfaceDistance(x, i, walls, periodic, spacing);
+  if (!nearest.found || !(nearest.distance < reach)) return gap;
+  constexpr Real facing = Real(-0.7071);  // cos 135 degrees
+  Real across = std::numeric_limits<Real>::infinity();
+  for (const WallSurfaceView& wall : walls) {
+    for (const std::uint32_t k : wall.neighboursOfFluid->of(i)) {
+      forEachFoot(wall, k, spacing, [&](const Foot& foot) {
+        if (!(foot.normal.dot(nearest.normal) < facing)) return;
+        const FootPlane plane = footPlane(x, wall, k, foot, periodic);
+        if (!(plane.distance > 0)) return;
+        // 1 within the patch's radius along the plane, a smoothstep down to 0 at 1.5 radii
+        const Real past =
+            Real(2) * (std::sqrt(std::max(plane.alongSquared, Real(0))) / foot.radius - Real(1));
+        const Real t = std::clamp(past, Real(0), Real(1));
+        const Real cover = Real(1) - t * t * (Real(3) - Real(2) * t);
+        if (!(cover > 0)) return;
+        gap.cover = std::max(gap.cover, cover);
+        across = std::min(across, plane.distance);
+      });
+    }
+  }
+  gap.width = std::max(nearest.distance, Real(0)) + across;
+  return gap;
+}
+
 }  // namespace sphcast

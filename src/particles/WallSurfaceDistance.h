@@ -2,6 +2,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <span>
 #include <vector>
 
@@ -108,5 +109,20 @@ WallSurfaceDistance wallSurfaceDistance(const Vector& x, std::size_t i,
                                         const std::vector<WallSurfaceView>& walls,
                                         const PeriodicBox& periodic, Real spacing,
                                         Real near = Real(0.5));
+
+// The gap between facing walls at fluid particle i (at x), among its wall neighbours: its width,
+// i's distance in front of its nearest wall surface (wallSurfaceDistance, normal n) plus its
+// distance in front of the nearest foot facing that wall (its normal within 45 degrees of -n);
+// infinity where no such foot is in front of i, or the nearest wall is a support radius `reach`
+// or more away. `cover`: how fully the facing wall stands over i, 1 over its feet's patches
+// (within a patch's radius of a foot, along its plane), fading to 0 at one and a half radii:
+// past the facing wall's end (a punch's edge) the gap ends smoothly. For the surface tension's
+// meniscus in a gap narrower than the kernel (surface/ContinuumSurfaceForce.h).
+struct WallGap {
+  Real width = std::numeric_limits<Real>::infinity();
+  Real cover = 0;
+};
+WallGap wallGapAcross(const Vector& x, std::size_t i, const std::vector<WallSurfaceView>& walls,
+                      const PeriodicBox& periodic, Real spacing, Real reach);
 
 }  // namespace sphcast

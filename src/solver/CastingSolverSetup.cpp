@@ -260,8 +260,8 @@ void CastingSolver::setUpFlow() {
   }
   const Eigen::IOFormat plain(Eigen::StreamPrecision, Eigen::DontAlignCols, " ", " ");
   info() << "    domain (" << domain_.lower.transpose().format(plain) << ") ("
-         << domain_.upper.transpose().format(plain)
-         << "): fluid of cloud '" << models_.fluid->name()
+         << domain_.upper.transpose().format(plain) << "): fluid of cloud '"
+         << models_.fluid->name()
          << "' outside it is spilled (removed, its mass and heat booked; the run stops when more "
          << "than " << 100 * monitor_.healthSettings().maxSpilledFraction
          << " % of it has spilled), any other particle outside it, or one not finite, "

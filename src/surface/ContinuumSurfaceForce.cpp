@@ -158,6 +158,10 @@ std::string ContinuumSurfaceForce::summary(double soundSpeed) const {
     text << "\n    at the walls: contact angle " << std::acos(cosTheta_) * 180 / std::numbers::pi
          << " degrees, the surface's normal turned towards it within h = "
          << settings_.supportRadius << " m";
+    if (settings_.gapMeniscus) {
+      text << "; in gaps between facing walls narrower than 2 h the meniscus's curvature "
+              "-2 cos(theta) / w, in full up to h (gapMeniscus on)";
+    }
   }
   return text.str();
 }
@@ -391,6 +395,17 @@ void ContinuumSurfaceForce::computeCurvature() {
   // sphere's. Unbounded, the holes a ring-built drop's cut base left read 4 / dx and threw
   // particles out.
   const Real largest = tangential / settings_.supportRadius;
+  // A gap between facing walls narrower than 2 h (both walls within the kernel's reach): its
+  // meniscus, of radius w / (2 |cos theta|) (1.15 dx in a 2 dx slot at 150 degrees), is tighter
+  // than the kernel resolves, so the surface there takes Young-Laplace's curvature
+  // -2 cos(theta) / w (one principal curvature: a slot; a round hole's is twice that), in full
+  // up to w = h, blended into the kernel's own over h < w < 2 h. Without it a non-wetting melt
+  // entered a 2 dx slot at half its entry pressure (doc/validation.md §2.2).
+  const Real h = settings_.supportRadius;
+  const Real dx = settings_.spacing;
+  const bool gaps = settings_.gapMeniscus && !walls_.empty();
+  const std::vector<WallSurfaceView> views =
+      gaps ? wallSurfaceViews(fluid_, walls_, neighbourhood_) : std::vector<WallSurfaceView>();
   auto smoothing = [&](auto separation) {
 #pragma omp parallel for schedule(dynamic, 256)
     for (std::size_t i = 0; i < n; ++i) {
@@ -406,7 +421,17 @@ void ContinuumSurfaceForce::computeCurvature() {
       }
       // a particle with few surface particles near it takes a share of their curvature: the
       // force fades to 0 as it moves away from the surface instead of switching off
-      const Real kappa = std::clamp(sum / std::max(weight, fewestWeight), -largest, largest);
+      Real kappa = std::clamp(sum / std::max(weight, fewestWeight), -largest, largest);
+      if (gaps) {
+        // in full up to w = h, fading to none at 2 h, where the facing wall leaves the
+        // neighbours (a gap under a spacing holds no more than a row: its curvature is a
+        // spacing's)
+        const WallGap gap = wallGapAcross(x[i], i, views, periodic, dx, h);
+        const Real inGap = gap.cover * (Real(1) - smoothstep(gap.width / h - Real(1)));
+        if (inGap > 0) {
+          kappa += inGap * (-Real(2) * cosTheta_ / std::max(gap.width, dx) - kappa);
+        }
+      }
       kappa_[i] = kappa * smoothstep(gradient_[i].norm() / smallest - Real(1));
     }
   };

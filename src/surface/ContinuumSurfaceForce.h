@@ -63,7 +63,16 @@ class SurfaceDepthProfile {
 //   (SurfaceDepthProfile, c_i = sum_j V_j W_ij over fluid and walls, over a lattice's bulk sum),
 //   whose curvature is kappa_i (d - 1) / ((d - 1) + kappa_i z_i). Then smoothed over the surface
 //   particles (Shepard), and carried to every particle within h of them, fading as fewer are
-//   near: the force acts wherever g is not 0 near the surface, as the pressure's does.
+//   near: the force acts wherever g is not 0 near the surface, as the pressure's does;
+// - a gap between facing walls narrower than 2 h (`gapMeniscus on`; off by default): its
+//   meniscus is tighter than the kernel resolves (the curvature above is bounded by (d - 1) /
+//   h), so near the surface in the gap the curvature is Young-Laplace's for a slot of width w,
+//   -2 cos(theta) / w (w: the distances to the nearest wall surface and to the facing one, at
+//   least dx), in full up to w = h, blended into the kernel's over h < w < 2 h and past the
+//   facing wall's end. A round hole has two such curvatures: it is read as a slot, with half
+//   its entry pressure. Not the default: in crossDitchPress it holds the pressed plate's rim,
+//   but the metal's force on the resting punch then jitters by 15 to 21 % of its weight in the
+//   acoustic steps (doc/physics.md §10.1.2).
 // Read on a drop of rings at Laplace's pressure (ContinuumSurfaceForceTest): curvature within
 // 0.3 % of (d - 1) / R, 1 to 1.5 % from particle to particle; what is left of the force after
 // the pressure's, 1 % RMS. A lattice's staircase reads more curvature, on the mean over its surface

@@ -24,6 +24,10 @@ struct SurfaceTensionSettings {
   // the wall is like air).
   std::optional<Real> cosContactAngle;
   std::optional<Real> solidTension;
+  // continuumSurfaceForce: in a gap between facing walls narrower than 2 h, whose meniscus the
+  // kernel cannot resolve, the surface takes Young-Laplace's curvature -2 cos(theta) / w
+  // (`gapMeniscus on`; off by default: ContinuumSurfaceForce.h)
+  bool gapMeniscus = false;
   // surfaceEnergy: eps of eq. (9), m; 0: h
   Real wallSmoothing = 0;
   // surfaceEnergy: r0 of the granularity kernel (GranularityKernel), in spacings

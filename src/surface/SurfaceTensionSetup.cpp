@@ -37,11 +37,14 @@ SurfaceTensionSetup readSurfaceTensionSetup(const CaseDescription& description) 
   const bool energy = setup.model == "surfaceEnergy";
   // each model's keys: a key of the other model is a mistake, not something to ignore (with
   // none, any model's key may wait there)
-  if (energy || setup.model == "none") {
+  if (energy) {
     dict.checkKeys(
         {"model", "energyFactor", "contactAngle", "solidTension", "wallSmoothing", "coreRadius"});
+  } else if (setup.model == "none") {
+    dict.checkKeys({"model", "energyFactor", "contactAngle", "solidTension", "wallSmoothing",
+                    "coreRadius", "gapMeniscus"});
   } else {
-    dict.checkKeys({"model", "contactAngle"});
+    dict.checkKeys({"model", "contactAngle", "gapMeniscus"});
   }
   if (setup.model == "none") return setup;
   if (!description.hasFlow()) {
@@ -76,6 +79,7 @@ SurfaceTensionSetup readSurfaceTensionSetup(const CaseDescription& description) 
                           "give 'contactAngle' or 'solidTension' in " + dict.name() +
                               ", not both (cos theta = -solidTension / Gamma_g)");
   }
+  settings.gapMeniscus = dict.getChoiceOrDefault("gapMeniscus", {"on", "off"}, "off") == "on";
   if (dict.found("contactAngle")) {
     const double degrees = dict.get<double>("contactAngle", dimensionless);
     if (!(degrees >= 0 && degrees <= 180)) {

@@ -15,6 +15,8 @@ namespace sphcast {
 //       model         continuumSurfaceForce;  // the default; none | continuumSurfaceForce |
 //                                             // surfaceEnergy (the paper's §3)
 //       contactAngle  150;    // degrees, in [0, 180], at every wall; 180 by default
+//       gapMeniscus   on;     // continuumSurfaceForce: Young-Laplace's curvature in gaps
+//                             // narrower than the kernel (off by default: the kernel's)
 //   }
 //
 // sigma (Gamma_g(T)) is the fluid material's surfaceTension (constant/physicalProperties).

@@ -174,10 +174,13 @@ Study gapStudy() {
             add("degrees", po::value<double>()->default_value(150, "150"),
                 "the contact angle of every wall");
             add("slip", po::bool_switch(), "slip walls (wallSlip slip) instead of no-slip");
+            add("gap-meniscus", po::bool_switch(),
+                "Young-Laplace's curvature in a slot narrower than the kernel (gapMeniscus on)");
           },
           [](const po::variables_map& values) {
             CapillaryOptions options;
             options.slipWalls = get<bool>(values, "slip");
+            options.gapMeniscus = get<bool>(values, "gap-meniscus");
             const int gap = get<int>(values, "gap");
             const double times = get<double>(values, "capillary-times");
             const double degrees = get<double>(values, "degrees");

@@ -491,6 +491,7 @@ GapResult gapEntry(int gap, double ratio, double capillaryTimes, double degrees,
       std::max(10 * std::sqrt(2 * g * pool * dx), std::sqrt(1000.0 * entry / rho)));
   SurfaceTensionSettings tension = tensionSettings(2, h, dx, sigma);
   tension.cosContactAngle = static_cast<Real>(cosine);
+  tension.gapMeniscus = options.gapMeniscus;
   CapillaryRun<ContinuumSurfaceForce> run(flow, tension, fluid, {&wall});
   const double end = capillaryTimes * std::sqrt(rho * std::pow(gap * dx, 3) / sigma);
   const auto start = std::chrono::steady_clock::now();

@@ -19,6 +19,7 @@ struct CapillaryOptions {
   bool latticeStart = false;   // static drop: lattice particles instead of rings
   double soundSpeedScale = 1;  // static and oscillating drops: a factor on the speed of sound
   bool slipWalls = false;      // sessile drops and the gap: wallSlip slip instead of no-slip
+  bool gapMeniscus = false;    // the gap: Young-Laplace's curvature in a sub-kernel gap
   double startDegrees = 0;     // 2D sessile drop on a flat wall: start as a cap of this angle
                                // and the half disk's area (0: the half disk)
   bool trace = false;          // print as it runs
