@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 
+#include "core/Smoothstep.h"
 #include "particles/FieldNames.h"
 
 namespace sphcast {
@@ -279,10 +280,8 @@ WallGap wallGapAcross(const Vector& x, std::size_t i, const std::vector<WallSurf
         const FootPlane plane = footPlane(x, wall, k, foot, periodic);
         if (!(plane.distance > 0)) return;
         // 1 within the patch's radius along the plane, a smoothstep down to 0 at 1.5 radii
-        const Real past =
-            Real(2) * (std::sqrt(std::max(plane.alongSquared, Real(0))) / foot.radius - Real(1));
-        const Real t = std::clamp(past, Real(0), Real(1));
-        const Real cover = Real(1) - t * t * (Real(3) - Real(2) * t);
+        const Real along = std::sqrt(std::max(plane.alongSquared, Real(0)));
+        const Real cover = Real(1) - smoothstep(Real(2) * (along / foot.radius - Real(1)));
         if (!(cover > 0)) return;
         gap.cover = std::max(gap.cover, cover);
         across = std::min(across, plane.distance);

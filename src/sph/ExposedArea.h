@@ -5,6 +5,7 @@
 #include <memory>
 #include <vector>
 
+#include "core/Smoothstep.h"
 #include "particles/GradedPairs.h"
 #include "particles/Neighbourhood.h"
 #include "particles/ParticleCloud.h"
@@ -148,10 +149,7 @@ class ExposedArea {
 
 // The interior gate: 1 for cbar <= from, 0 for cbar >= to, a smoothstep between.
 inline Real interiorGate(Real meanFullness, Real from, Real to) {
-  if (meanFullness <= from) return Real(1);
-  if (meanFullness >= to) return Real(0);
-  const Real u = (meanFullness - from) / (to - from);
-  return Real(1) - u * u * (Real(3) - Real(2) * u);
+  return Real(1) - smoothstep((meanFullness - from) / (to - from));
 }
 
 // g(p, q)/R_d of eq. (10).

@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "core/Error.h"
+#include "core/Smoothstep.h"
 #include "particles/FieldNames.h"
 #include "particles/WallSurfaceDistance.h"
 #include "particles/WendlandKernel.h"
@@ -58,12 +59,6 @@ double planarProfile(const WendlandC2Kernel<Dim>& kernel, double h, double t) {
 Real planarProfileAtSurface(int dimension, Real h) {
   return static_cast<Real>(dimension == 2 ? planarProfile(WendlandC2Kernel<2>(h), h, 0.0)
                                           : planarProfile(WendlandC2Kernel<3>(h), h, 0.0));
-}
-
-Real smoothstep(Real t) {
-  if (!(t > 0)) return 0;
-  if (t >= 1) return 1;
-  return t * t * (Real(3) - Real(2) * t);
 }
 
 }  // namespace
