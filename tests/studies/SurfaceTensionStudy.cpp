@@ -3,12 +3,13 @@
 // reach). Each steps drops as the solver steps them (the cases of tests/unit/surface/
 // CapillaryCases.h and SurfaceEnergyCases.h, which the unit tests check at their defaults) and
 // prints what it read:
-//   static-drop, oscillating-drop, sessile, gap: the continuum surface force (--model
-//     pairwiseForce: the pairwise force, surface/PairwiseForce.h, the sessile drops' surface
-//     still read by the continuum surface force's detection): a static drop's pressure against
-//     Laplace's and its currents (§2.2), an oscillating drop's period and decay against Lamb's,
-//     a sessile drop's contact angle on a flat wall, a cylinder (--cylinder) or a 3D floor
-//     (--3d), and a non-wetting pool's entry into a gap;
+//   static-drop, oscillating-drop, mode-curvature, sessile, gap: the continuum surface force
+//     (--model pairwiseForce: the pairwise force, surface/PairwiseForce.h, the sessile drops'
+//     surface still read by the continuum surface force's detection): a static drop's pressure
+//     against Laplace's and its currents (§2.2), an oscillating drop's period and decay against
+//     Lamb's, the curvature it reads on that mode's shape (no dynamics; the continuum surface
+//     force's), a sessile drop's contact angle on a flat wall, a cylinder (--cylinder) or a 3D
+//     floor (--3d), and a non-wetting pool's entry into a gap;
 //   energy-static-drop, energy-oscillating-drop, energy-contact-angle: the surface-energy model
 //     (§2.3): a static drop's (or a periodic slab's, --slab) pressure and tension, the n = 2
 //     period at each resolution, and the angle a drop settling on a wall reaches (it does not
@@ -98,6 +99,8 @@ Study oscillatingDropStudy() {
         add("periods", po::value<double>()->default_value(3, "3"), "how long, in Lamb's periods");
         add("sound-speed-scale", po::value<double>()->default_value(1, "1"),
             "a factor on the speed of sound");
+        add("amplitude", po::value<double>()->default_value(0.05, "0.05"),
+            "a0: the surface moves a0 R in 2D, 2 a0 R in 3D");
         declareModel(add);
         add("trace", po::bool_switch(), "print the moment's extremes and zero crossings");
       },
@@ -105,12 +108,37 @@ Study oscillatingDropStudy() {
         CapillaryOptions options;
         options.model = forceModel(values);
         options.soundSpeedScale = get<double>(values, "sound-speed-scale");
+        options.amplitude = get<double>(values, "amplitude");
         options.trace = get<bool>(values, "trace");
         const int dimension = get<int>(values, "dimension"), across = get<int>(values, "across");
         std::cout << dimension << "D drop, " << across << " across: "
                   << testing::oscillatingDrop(dimension, across, get<double>(values, "periods"),
                                               options)
                   << std::endl;
+        return 0;
+      }};
+}
+
+Study modeCurvatureStudy() {
+  return {
+      "mode-curvature",
+      "the curvature read on a drop displaced into the n = 2 mode, against the exact",
+      [](po::options_description_easy_init add) {
+        add("dimension", po::value<int>()->default_value(3), "2 or 3");
+        add("across", po::value<std::string>()->default_value("20,30,60"),
+            "particles across the diameter, a drop each");
+        add("epsilon", po::value<std::string>()->default_value("0.005,0.02,0.1"),
+            "the mode's amplitude over R, a drop each");
+      },
+      [](const po::variables_map& values) {
+        const int dimension = get<int>(values, "dimension");
+        for (const double across : numberList(get<std::string>(values, "across"), "across")) {
+          for (const double epsilon : numberList(get<std::string>(values, "epsilon"), "epsilon")) {
+            std::cout << dimension << "D drop, " << across << " across, epsilon " << epsilon << ": "
+                      << testing::modeCurvature(dimension, static_cast<int>(across), epsilon)
+                      << std::endl;
+          }
+        }
         return 0;
       }};
 }
@@ -332,6 +360,6 @@ int main(int argc, char* argv[]) {
   using namespace sphcast::studies;
   return runStudy(
       argc, argv, "the surface-tension studies of doc/validation.md §2",
-      {staticDropStudy(), oscillatingDropStudy(), sessileStudy(), gapStudy(),
+      {staticDropStudy(), oscillatingDropStudy(), modeCurvatureStudy(), sessileStudy(), gapStudy(),
        energyStaticDropStudy(), energyOscillatingDropStudy(), energyContactAngleStudy()});
 }

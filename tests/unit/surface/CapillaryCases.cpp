@@ -130,7 +130,7 @@ OscillationResult oscillatingDropWith(int dimension, int across, double periods,
   const double omega = std::sqrt((dimension == 2 ? 6 : 8) * sigma / (rho * R * R * R));
   result.lambPeriod = 2 * std::numbers::pi / omega;
   result.viscousDecay = (dimension == 2 ? 4 : 5) * nu / (R * R);
-  const double a0 = 0.05;
+  const double a0 = options.amplitude;
   const Real A = static_cast<Real>(a0 * omega);
   FlowSettings flow;
   flow.dimension = dimension;
@@ -429,6 +429,57 @@ OscillationResult oscillatingDrop(int dimension, int across, double periods,
 std::ostream& operator<<(std::ostream& out, const OscillationResult& r) {
   return out << r.particles << " particles: period / Lamb's " << r.period / r.lambPeriod
              << ", decay / the viscous " << r.decay / r.viscousDecay << ", " << r.seconds << " s";
+}
+
+ModeCurvatureResult modeCurvature(int dimension, int across, double epsilon) {
+  const Real dx = 0.001, rho = 1000, sigma = 0.07;
+  ParticleCloud fluid = ringFluid(dimension, dx, across / 2, rho, 1e-3);
+  ModeCurvatureResult result;
+  result.particles = fluid.size();
+  const double n = static_cast<double>(fluid.size());
+  const double R = dimension == 2 ? std::sqrt(n * dx * dx / std::numbers::pi)
+                                  : std::cbrt(3 * n * dx * dx * dx / (4 * std::numbers::pi));
+  // the mode's shape at a point's direction: 2D cos(2 phi), 3D P2(cos theta)
+  auto mode = [&](const Vector& x) {
+    if (dimension == 2) return std::cos(2 * std::atan2(double(x[1]), double(x[0])));
+    const double c = x[2] / x.norm();
+    return 0.5 * (3 * c * c - 1);
+  };
+  // the mode's potential flow as a displacement (divergence-free: the particles keep their
+  // volumes): the surface r = R (1 + epsilon mode)
+  const Real e = static_cast<Real>(epsilon);
+  for (Vector& x : fluid.positions()) {
+    x += dimension == 2 ? Vector(e * x[0], -e * x[1], 0)
+                        : Vector(-e / 2 * x[0], -e / 2 * x[1], e * x[2]);
+  }
+  FlowSettings flow;
+  flow.dimension = dimension;
+  flow.supportRadius = 3 * dx;
+  flow.soundSpeed = 5;
+  CapillaryRun<ContinuumSurfaceForce> run(flow, tensionSettings(dimension, 3 * dx, dx, sigma),
+                                          fluid, {});
+  run.tension.addAcceleration();
+  // kappa = kappa_0 + kappa_mode * mode, least squares over the surface particles
+  const auto& kappa = fluid.scalarField(field::curvature);
+  Eigen::Matrix2d normal = Eigen::Matrix2d::Zero();
+  Eigen::Vector2d right = Eigen::Vector2d::Zero();
+  for (std::size_t i = 0; i < fluid.size(); ++i) {
+    if (!run.tension.onSurface()[i]) continue;
+    const Eigen::Vector2d row(1, mode(fluid.positions()[i]));
+    normal += row * row.transpose();
+    right += row * static_cast<double>(kappa[i]);
+  }
+  const Eigen::Vector2d fit = normal.ldlt().solve(right);
+  result.meanCurvature = fit[0] * R / (dimension - 1);
+  // r = R (1 + epsilon mode): kappa_mode = (n - 1)(n + 2) epsilon / R in 3D (n = 2: 4),
+  // (n^2 - 1) epsilon / R in 2D (3)
+  result.modeCurvature = fit[1] / ((dimension == 2 ? 3 : 4) * epsilon / R);
+  return result;
+}
+
+std::ostream& operator<<(std::ostream& out, const ModeCurvatureResult& r) {
+  return out << r.particles << " particles: mean curvature R / (d - 1) " << r.meanCurvature
+             << ", the mode's curvature / the exact " << r.modeCurvature;
 }
 
 SessileResult sessileDrop(double degrees, int layers, double capillaryTimes, double bond,

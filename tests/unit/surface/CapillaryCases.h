@@ -18,6 +18,7 @@ struct CapillaryOptions {
   SurfaceForceModel model = SurfaceForceModel::continuumSurfaceForce;
   bool latticeStart = false;   // static drop: lattice particles instead of rings
   double soundSpeedScale = 1;  // static and oscillating drops: a factor on the speed of sound
+  double amplitude = 0.05;     // oscillating drop: a0, the mode's amplitude over R
   bool slipWalls = false;      // sessile drops and the gap: wallSlip slip instead of no-slip
   bool gapMeniscus = false;    // the gap: Young-Laplace's curvature in a sub-kernel gap
   double startDegrees = 0;     // 2D sessile drop on a flat wall: start as a cap of this angle
@@ -40,7 +41,8 @@ StaticDropResult staticDrop(int dimension, int across, double capillaryTimes, do
 
 // The n = 2 oscillation of a free drop of rings (no gravity), water-like (rho 1000 kg/m^3,
 // sigma 0.07 N/m, nu 8e-6 m^2/s, R = 1 cm: Ohnesorge 0.01), started at Laplace's pressure with
-// the mode's potential flow (2D: u = A (x, -y); 3D: u = A (-x, -y, 2 z)), a0 = 0.05 R; the
+// the mode's potential flow (2D: u = A (x, -y); 3D: u = A (-x, -y, 2 z)), A = a0 omega (a0 =
+// options.amplitude, 0.05: the surface moves 0.05 R in 2D, 0.1 R in 3D); the
 // period from the zero crossings of the second moment about its mean, against Lamb (1932):
 //   2D: omega^2 = 6 sigma / (rho R^3),   3D: omega^2 = 8 sigma / (rho R^3),
 // and the amplitude's decay rate from its successive extremes, against the viscous one
@@ -54,6 +56,20 @@ OscillationResult oscillatingDrop(int dimension, int across, double periods,
                                   const CapillaryOptions& options = {});
 
 std::ostream& operator<<(std::ostream& out, const OscillationResult& r);
+
+// The curvature the continuum surface force reads on the n = 2 mode, without dynamics: a drop of
+// rings (R/dx = across / 2) displaced by the mode's potential flow to r = R (1 + epsilon P),
+// P = cos(2 phi) in 2D, P2(cos theta) in 3D, then kappa = kappa_0 + kappa_P P fitted over its
+// surface particles: kappa_0 against (d - 1) / R and kappa_P against the exact 3 epsilon / R (2D)
+// or 4 epsilon / R (3D). The mode's stiffness, and Lamb's omega^2, go as kappa_P.
+struct ModeCurvatureResult {
+  std::size_t particles = 0;
+  double meanCurvature = 0, modeCurvature = 0;
+};
+
+ModeCurvatureResult modeCurvature(int dimension, int across, double epsilon);
+
+std::ostream& operator<<(std::ostream& out, const ModeCurvatureResult& r);
 
 // A 2D drop on a flat wall (its surface y = 0, three layers below) held by a little gravity
 // (Bond number rho g A / sigma = 0.2, A the drop's area: the cap stays nearly circular),
