@@ -71,8 +71,8 @@ class SurfaceDepthProfile {
 //   least dx), in full up to w = h, blended into the kernel's over h < w < 2 h and past the
 //   facing wall's end. A round hole has two such curvatures: it is read as a slot, with half
 //   its entry pressure. Not the default: in crossDitchPress it holds the pressed plate's rim,
-//   but the metal's force on the resting punch then jitters by 15 to 21 % of its weight in the
-//   acoustic steps (doc/physics.md §10.1.2).
+//   but the pressed melt comes to rest later and the run takes twice as long (doc/physics.md
+//   §10.1.2).
 // Read on a drop of rings at Laplace's pressure (ContinuumSurfaceForceTest): curvature within
 // 0.3 % of (d - 1) / R, 1 to 1.5 % from particle to particle; what is left of the force after
 // the pressure's, 1 % RMS. A lattice's staircase reads more curvature, on the mean over its surface

@@ -27,9 +27,13 @@ history=postProcessing/dynamicBodies/0/upperMold.dat
 # at the end stop (1/0); the end stop is 20.25 - 2 x 4 = 12.25 mm down
 awk '!/^#/ && $1 < 0.1999 && $4 != 0 { bad = 1 } END { exit bad }' "$history" ||
     fail "the punch moved before its release at 0.2 s"
-awk '!/^#/ { z = $4; v = $7; fz = $10; stop = $14 }
-     END { printf "travel %.5f m, velocity %.2g m/s, metal force %.3f N\n", z, v, fz
-           exit !(z < -0.005 && z > -0.01225 && stop == 0 && v > -0.01 && v < 0.01 && fz > 7.0 && fz < 8.7) }' \
+# The metal's force on the resting punch is read as its mean over the last 0.1 s: in the
+# acoustic steps it jitters about the punch's weight with a standard deviation of 0.8 N (5.0 to
+# 9.7 N from 0.3 to 0.6 s, 2026-12-07), so one step's value is a sample of that jitter.
+awk '!/^#/ { z = $4; v = $7; stop = $14; if ($1 >= 0.4999) { n++; sum += $10 } }
+     END { fz = n > 0 ? sum / n : 0
+           printf "travel %.5f m, velocity %.2g m/s, metal force %.3f N (the mean of %d steps from 0.5 s)\n", z, v, fz, n
+           exit !(z < -0.005 && z > -0.01225 && stop == 0 && v > -0.01 && v < 0.01 && n > 0 && fz > 7.0 && fz < 8.7) }' \
     "$history" > press.txt || fail "the punch does not rest on the metal at 0.6 s: $(cat press.txt)"
 pass "pour and press: the punch rests on the metal above its stop, $(cat press.txt)"
 
