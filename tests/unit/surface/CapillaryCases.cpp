@@ -77,10 +77,7 @@ StaticDropResult staticDropWith(int dimension, int across, double capillaryTimes
   }
   centre /= static_cast<Real>(x.size());
   drift /= static_cast<Real>(x.size());
-  const double n = static_cast<double>(x.size());
-  const double volumeRadius = dimension == 2
-                                  ? std::sqrt(n * dx * dx / std::numbers::pi)
-                                  : std::cbrt(3 * n * dx * dx * dx / (4 * std::numbers::pi));
+  const double volumeRadius = dropRadius(dimension, x.size(), dx);
   double pressure = 0, inner = 0, speedSum = 0;
   for (std::size_t i = 0; i < x.size(); ++i) {
     const double speed = (U[i] - drift).norm();
@@ -91,7 +88,7 @@ StaticDropResult staticDropWith(int dimension, int across, double capillaryTimes
       inner += 1;
     }
   }
-  result.meanSpeed = speedSum / n / capillarySpeed;
+  result.meanSpeed = speedSum / static_cast<double>(x.size()) / capillarySpeed;
   if constexpr (std::is_same_v<Tension, ContinuumSurfaceForce>) {
     const auto& kappa = fluid.scalarField(field::curvature);
     double kw = 0, w = 0, ps = 0;
@@ -124,9 +121,7 @@ OscillationResult oscillatingDropWith(int dimension, int across, double periods,
   ParticleCloud fluid = ringFluid(dimension, dx, across / 2, rho, rho * nu);
   OscillationResult result;
   result.particles = fluid.size();
-  const double n = static_cast<double>(fluid.size());
-  const double R = dimension == 2 ? std::sqrt(n * dx * dx / std::numbers::pi)
-                                  : std::cbrt(3 * n * dx * dx * dx / (4 * std::numbers::pi));
+  const double R = dropRadius(dimension, fluid.size(), dx);
   const double omega = std::sqrt((dimension == 2 ? 6 : 8) * sigma / (rho * R * R * R));
   result.lambPeriod = 2 * std::numbers::pi / omega;
   result.viscousDecay = (dimension == 2 ? 4 : 5) * nu / (R * R);
@@ -436,9 +431,7 @@ ModeCurvatureResult modeCurvature(int dimension, int across, double epsilon) {
   ParticleCloud fluid = ringFluid(dimension, dx, across / 2, rho, 1e-3);
   ModeCurvatureResult result;
   result.particles = fluid.size();
-  const double n = static_cast<double>(fluid.size());
-  const double R = dimension == 2 ? std::sqrt(n * dx * dx / std::numbers::pi)
-                                  : std::cbrt(3 * n * dx * dx * dx / (4 * std::numbers::pi));
+  const double R = dropRadius(dimension, fluid.size(), dx);
   // the mode's shape at a point's direction: 2D cos(2 phi), 3D P2(cos theta)
   auto mode = [&](const Vector& x) {
     if (dimension == 2) return std::cos(2 * std::atan2(double(x[1]), double(x[0])));

@@ -291,9 +291,7 @@ struct EquilibriumResult {
 EquilibriumResult laplaceEquilibrium(int dimension, int layers) {
   const Real dx = 0.001, rho = 1000, sigma = 0.07, c = 5;
   ParticleCloud fluid = testing::ringFluid(dimension, dx, layers, rho, 1e-3);
-  const double n = static_cast<double>(fluid.size());
-  const double radius = dimension == 2 ? std::sqrt(n * dx * dx / std::numbers::pi)
-                                       : std::cbrt(3 * n * dx * dx * dx / (4 * std::numbers::pi));
+  const double radius = testing::dropRadius(dimension, fluid.size(), dx);
   const double laplace = sigma * (dimension - 1) / radius;
   for (Real& density : fluid.scalarField(field::rho)) {
     density = rho + static_cast<Real>(laplace / (c * c));

@@ -79,9 +79,7 @@ DropletResult oscillatingDroplet(const DropletSetup& setup) {
   DropletResult result;
   result.particles = fluid.size();
   // the radius of the droplet the particles make (their area or volume)
-  const double count = static_cast<double>(fluid.size());
-  result.radius = d == 2 ? std::sqrt(count * dx * dx / std::numbers::pi)
-                         : std::cbrt(3 * count * std::pow(dx, 3) / (4 * std::numbers::pi));
+  result.radius = dropRadius(d, fluid.size(), dx);
   const double R = result.radius;
   result.lambPeriod = 2 * std::numbers::pi /
                       (d == 2 ? std::sqrt(n * (n * n - 1) * sigma / (rho * R * R * R))
@@ -214,9 +212,7 @@ StaticDropletResult staticDroplet(const StaticDropletSetup& setup) {
       rho * nu);
   StaticDropletResult result;
   result.particles = fluid.size();
-  const double count = static_cast<double>(fluid.size());
-  result.radius = d == 2 ? std::sqrt(count * dx * dx / std::numbers::pi)
-                         : std::cbrt(3 * count * std::pow(dx, 3) / (4 * std::numbers::pi));
+  result.radius = dropRadius(d, fluid.size(), dx);
   result.laplace = (d - 1) * sigma / result.radius;
   result.capillaryVelocity = sigma / (rho * nu);
   const Real factor = SurfaceEnergyTension::calibratedEnergyFactor(d, h, dx, core);

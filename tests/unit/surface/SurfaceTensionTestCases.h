@@ -111,6 +111,14 @@ inline ParticleCloud latticeFluid(int dimension, Real dx, const Vector& lower, c
   return fluidAtRest(dimension, dx, positions, rho, mu);
 }
 
+// The radius of the disk (2D) or ball (3D) that `count` particles of dx^d each fill: a drop's
+// radius from its volume.
+inline double dropRadius(int dimension, std::size_t count, double dx) {
+  const double n = static_cast<double>(count);
+  return dimension == 2 ? std::sqrt(n * dx * dx / std::numbers::pi)
+                        : std::cbrt(3 * n * dx * dx * dx / (4 * std::numbers::pi));
+}
+
 // A drop of radius R = layers dx centred on the origin, built of rings (2D) or shells (3D) of
 // radius (k + 1/2) dx, k < layers, each with as many evenly spread particles as it has spacings
 // of circumference (2D) or squared spacings of area (3D, on a Fibonacci spiral): a round drop
