@@ -44,6 +44,7 @@ void writeOccupancy(const VoxelOccupancy& occupancy, const std::filesystem::path
   writer->SetFileName((file.string() + ".tmp").c_str());
   writer->SetInputData(image);
   writer->SetDataModeToAppended();
+  writer->EncodeAppendedDataOn();  // base64: well-formed XML, which every ParaView opens
   writer->SetCompressorTypeToZLib();
   if (writer->Write() != 1) throw Error("could not write " + file.string());
   std::filesystem::rename(file.string() + ".tmp", file);

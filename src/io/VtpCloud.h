@@ -11,8 +11,9 @@ namespace sphcast {
 // folder (doc/design.md §2). One vertex cell per particle; every field in full precision (Real as
 // Float64, or Float32 in a single-precision build; ids as Int64): scalar fields as 1-component
 // point data, vector fields as 3-component point data, id fields as Int64 point data; cloud
-// attributes as field data of one Float64 value each. Appended raw binary data, zlib-compressed,
-// UInt64 block headers.
+// attributes as field data of one Float64 value each. Appended data, zlib-compressed, UInt64
+// block headers, base64-encoded (well-formed XML: every ParaView and XML parser opens it; a file
+// written raw by an earlier sphCast still reads).
 
 // Writes the cloud to file through "<file>.tmp" and an atomic rename, so a run killed while
 // writing leaves either the old file or the new one. Throws an Error naming the file on failure.

@@ -1,5 +1,5 @@
-// Write and read speed of a time folder's cloud file (.vtp: appended raw binary, zlib, UInt64
-// headers, written atomically with fsync). The cloud is a metal cloud as the solver writes it:
+// Write and read speed of a time folder's cloud file (.vtp: appended data, zlib, UInt64 headers,
+// base64, written atomically with fsync). The cloud is a metal cloud as the solver writes it:
 // positions, 2 vector fields, 4 scalar fields and 1 id field, in full precision.
 // Bytes/s counts the cloud's in-memory payload; the file size is reported as fileMB.
 #include <benchmark/benchmark.h>

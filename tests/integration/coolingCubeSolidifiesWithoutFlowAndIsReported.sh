@@ -9,7 +9,8 @@
 #   by the surface's cooling reaching it); the solidification map at the centre particles is the
 #   thermocouple's within 0.5 % (0.003 %). compareWithLumped --check.
 # - castReport.md has the three analyses' sections, the maps their fields, the plots are drawn
-#   where gnuplot is installed; -latestTime keeps the time series' other rows.
+#   where gnuplot is installed; -latestTime keeps the time series' other rows; every file VTK
+#   wrote (clouds, maps, the cavities' voxels, the .pvd indices) is well-formed XML.
 # - Bad entries (an unknown type, a thermocouple outside the casting, a -time that matches
 #   nothing) stop with file, line and key, and leave postProcessing/ as it was; so do a
 #   solidification without a flow that names no cloud, or asks for the cooling mode.
@@ -27,6 +28,7 @@ done
 grep -q "^At time 40: 0 enclosed cavities" "$report" || fail "cavities found in a solid cube"
 maps=$(ls postProcessing/solidification/*/body.vtp) || fail "no solidification map"
 [ -f postProcessing/solidification/solidification.pvd ] || fail "no .pvd beside the maps"
+expectWellFormedXml "$PWD"     # the time folders' clouds, the maps, the cavities' voxels
 "$python" - "$maps" <<'PY' || fail "the maps' fields"
 import sys, vtk
 reader = vtk.vtkXMLPolyDataReader()

@@ -14,6 +14,32 @@ trap 'rm -rf "$scratch"' EXIT
 fail() { echo "FAIL: $*" >&2; exit 1; }
 pass() { echo "PASS: $*"; }
 
+# expectWellFormedXml DIR...: every VTK XML file under the folders (.vtp, .pvtp, .vti, .pvd)
+# parses with Python's strict XML parser (expat, as Debian's ParaView reads them), at least one
+# of each of .vtp and .pvd; prints how many were read.
+expectWellFormedXml() {
+    python3 - "$@" <<'PY' || fail "a file VTK wrote is not well-formed XML"
+import os, sys
+import xml.etree.ElementTree as ElementTree
+counts = {}
+for top in sys.argv[1:]:
+    for folder, _, files in os.walk(top):
+        for name in files:
+            extension = os.path.splitext(name)[1]
+            if extension not in (".vtp", ".pvtp", ".vti", ".pvd"):
+                continue
+            path = os.path.join(folder, name)
+            try:
+                ElementTree.parse(path)
+            except ElementTree.ParseError as error:
+                sys.exit("%s: %s" % (path, error))
+            counts[extension] = counts.get(extension, 0) + 1
+print("well-formed XML: " + ", ".join("%d %s" % (n, e) for e, n in sorted(counts.items())))
+if ".vtp" not in counts or ".pvd" not in counts:
+    sys.exit("no .vtp or no .pvd under " + " ".join(sys.argv[1:]))
+PY
+}
+
 # makeFreeFallCase DIR SPACING ENDTIME WRITEINTERVAL: a block thrown upwards, gravity only.
 makeFreeFallCase() {
     local dir=$1 spacing=$2 endTime=$3 writeInterval=$4

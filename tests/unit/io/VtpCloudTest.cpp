@@ -14,6 +14,11 @@
 #include <string>
 #include <vector>
 
+#include <vtkNew.h>
+#include <vtkPolyData.h>
+#include <vtkXMLPolyDataReader.h>
+#include <vtkXMLPolyDataWriter.h>
+
 #include "core/Error.h"
 #include "particles/FieldNames.h"
 
@@ -201,7 +206,7 @@ TEST_F(VtpCloudTest, CloudWithoutFieldsRoundTrips) {
   EXPECT_TRUE(readCloudVtp(file, "air").identicalTo(cloud));
 }
 
-TEST_F(VtpCloudTest, FileIsAppendedRawZlibWithUInt64Headers) {
+TEST_F(VtpCloudTest, FileIsWellFormedXmlWithBase64AppendedZlibData) {
   const fs::path file = folder_ / "metal.vtp";
   writeCloudVtp(randomCloud(100, 2), file);
   const std::string content = testing::readWholeFile(file);
@@ -212,7 +217,15 @@ TEST_F(VtpCloudTest, FileIsAppendedRawZlibWithUInt64Headers) {
   EXPECT_NE(header.find("format=\"appended\""), std::string::npos);
   EXPECT_EQ(header.find("format=\"binary\""), std::string::npos);
   EXPECT_EQ(header.find("format=\"ascii\""), std::string::npos);
-  EXPECT_NE(content.find("encoding=\"raw\""), std::string::npos);
+  EXPECT_NE(content.find("encoding=\"base64\""), std::string::npos);
+  // well-formed: nothing after the header but base64's characters, the closing tags, blanks
+  const std::size_t data = content.find('_', content.find("<AppendedData")) + 1;
+  const std::size_t end = content.find("</AppendedData>");
+  ASSERT_NE(end, std::string::npos);
+  const std::string encoded = content.substr(data, end - data);
+  EXPECT_EQ(encoded.find_first_not_of(
+                "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/= \n"),
+            std::string::npos);
   const std::string realType = sizeof(Real) == 8 ? "Float64" : "Float32";
   EXPECT_NE(header.find("type=\"" + realType + "\" Name=\"U\" NumberOfComponents=\"3\""),
             std::string::npos);
@@ -220,6 +233,27 @@ TEST_F(VtpCloudTest, FileIsAppendedRawZlibWithUInt64Headers) {
   EXPECT_NE(header.find("type=\"Float64\" Name=\"spacing\" NumberOfTuples=\"1\""),
             std::string::npos);
   EXPECT_NE(header.find("NumberOfVerts=\"100\""), std::string::npos);
+}
+
+// Time folders written before issue #51 hold raw appended data: a restart from them still reads.
+TEST_F(VtpCloudTest, AFileWithRawAppendedDataStillReads) {
+  const fs::path file = folder_ / "metal.vtp";
+  const ParticleCloud cloud = randomCloud(300, 5);
+  writeCloudVtp(cloud, file);
+  vtkNew<vtkXMLPolyDataReader> reader;
+  reader->SetFileName(file.c_str());
+  reader->Update();
+  const fs::path raw = folder_ / "raw.vtp";
+  vtkNew<vtkXMLPolyDataWriter> writer;
+  writer->SetInputData(reader->GetOutput());
+  writer->SetFileName(raw.c_str());
+  writer->SetDataModeToAppended();
+  writer->EncodeAppendedDataOff();
+  writer->SetCompressorTypeToZLib();
+  writer->SetHeaderTypeToUInt64();
+  ASSERT_EQ(writer->Write(), 1);
+  ASSERT_NE(testing::readWholeFile(raw).find("encoding=\"raw\""), std::string::npos);
+  EXPECT_TRUE(readCloudVtp(raw, "metal").identicalTo(cloud));
 }
 
 TEST_F(VtpCloudTest, WriteLeavesNoTemporaryFile) {
