@@ -51,7 +51,9 @@ void DomainDecomposition::decompose() {
     points.insert(points.end(), x.begin(), x.begin() + static_cast<long>(cloud.ownedSize()));
     weights.insert(weights.end(), cloud.ownedSize(), entry.weight);
   }
-  bisection_ = RecursiveBisection::build(comm_, points, weights, comm_.size(), dimension_);
+  RecursiveBisection::AxisCuts cuts{settings_.counts, settings_.order};
+  bisection_ = RecursiveBisection::build(comm_, points, weights, comm_.size(), dimension_,
+                                         settings_.method == "hierarchical" ? &cuts : nullptr);
 }
 
 void DomainDecomposition::redistribute(std::size_t c) {
@@ -139,8 +141,8 @@ std::string DomainDecomposition::describe() const {
   comm_.sum(counts);
   std::ostringstream text;
   text.precision(3);
-  text << comm_.size() << " subdomains by recursive bisection (" << bisection_.describe()
-       << "); halos " << counts[1] << " particles, "
+  text << comm_.size() << " subdomains by " << describeMethod(settings_) << " ("
+       << bisection_.describe() << "); halos " << counts[1] << " particles, "
        << (counts[0] > 0 ? 100.0 * static_cast<double>(counts[1]) / static_cast<double>(counts[0])
                          : 0.0)
        << " % of the " << counts[0] << " owned; imbalance " << imbalance();

@@ -13,7 +13,8 @@
 namespace sphcast {
 
 // A run decomposed over the ranks of a communicator (doc/design.md §5, "Parallel runs"): space
-// cut into one subdomain per rank by recursive bisection of every cloud's weighted particles;
+// cut into one subdomain per rank by recursive bisection of every cloud's weighted particles (or
+// by hierarchical cuts, as decomposeParDict says);
 // each rank holds the particles of its subdomain, followed by a halo of copies of the other
 // ranks' particles within the neighbour search's reach (h plus the lists' skin; a graded mold's
 // coarsest support plus the skin), so that a pair loop over its own particles finds exactly the

@@ -84,7 +84,7 @@ RecursiveBisection::RecursiveBisection() {
 RecursiveBisection RecursiveBisection::build(const Communicator& comm,
                                              const std::vector<Vector>& points,
                                              const std::vector<std::int64_t>& weights, int parts,
-                                             int dimension) {
+                                             int dimension, const AxisCuts* cuts) {
   if (parts < 1) throw Error("recursive bisection: the number of subdomains must be >= 1");
   if (weights.size() != points.size()) {
     throw Error("recursive bisection: one weight per point expected");
@@ -92,8 +92,12 @@ RecursiveBisection RecursiveBisection::build(const Communicator& comm,
   if (std::any_of(weights.begin(), weights.end(), [](std::int64_t w) { return w < 0; })) {
     throw Error("recursive bisection: a weight is negative");
   }
+  if (cuts != nullptr && cuts->counts[0] * cuts->counts[1] * cuts->counts[2] != parts) {
+    throw Error("hierarchical cuts: the counts along x, y and z must multiply to the subdomains");
+  }
   RecursiveBisection result;
   result.nodes_[0].partCount = parts;
+  if (cuts != nullptr) result.nodes_[0].counts = cuts->counts;
   std::vector<std::vector<std::size_t>> members(1);
   members[0].resize(points.size());
   for (std::size_t i = 0; i < points.size(); ++i) members[0][i] = i;
@@ -141,7 +145,17 @@ RecursiveBisection RecursiveBisection::build(const Communicator& comm,
           axis[s] = a;
         }
       }
-      const int lowerParts = node.partCount / 2;
+      if (cuts != nullptr) {  // the first axis of the order still to be cut
+        for (int a : cuts->order) {
+          if (node.counts[a] > 1) {
+            axis[s] = a;
+            break;
+          }
+        }
+      }
+      const int lowerParts =
+          cuts != nullptr ? node.counts[axis[s]] / 2 * (node.partCount / node.counts[axis[s]])
+                          : node.partCount / 2;
       target[s] = total[s] / node.partCount * lowerParts +
                   total[s] % node.partCount * lowerParts / node.partCount;
       if (empty || total[s] == 0) {  // nothing to share: cut the region (or the box) in its middle
@@ -225,7 +239,11 @@ RecursiveBisection RecursiveBisection::build(const Communicator& comm,
       lower.region.upper[axis[s]] = cut;
       upper.region.lower[axis[s]] = cut;
       lower.firstPart = result.nodes_[n].firstPart;
-      lower.partCount = result.nodes_[n].partCount / 2;
+      lower.counts = upper.counts = result.nodes_[n].counts;
+      lower.counts[axis[s]] = result.nodes_[n].counts[axis[s]] / 2;
+      upper.counts[axis[s]] = result.nodes_[n].counts[axis[s]] - lower.counts[axis[s]];
+      lower.partCount = cuts != nullptr ? lower.counts[0] * lower.counts[1] * lower.counts[2]
+                                        : result.nodes_[n].partCount / 2;
       upper.firstPart = lower.firstPart + lower.partCount;
       upper.partCount = result.nodes_[n].partCount - lower.partCount;
       result.nodes_[n].axis = axis[s];

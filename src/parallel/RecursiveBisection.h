@@ -29,19 +29,30 @@ struct Region {
 // log2(parts) levels), and subdomains are boxes, so that a halo is the particles within a
 // distance of a neighbour's box.
 //
+// Hierarchical cuts (OpenFOAM's hierarchical decomposition) are the same tree with its axes
+// prescribed: n[0] slabs along order[0], each cut into n[1] along order[1], then n[2] along
+// order[2], every cut at its own particles' weight quantile (a node of k slabs along an axis
+// gives floor(k/2) of them to its lower side).
+//
 // The weights are integers, so that every sum over the ranks is exact: the cuts then depend only
 // on the whole set of particles and weights, never on how the ranks held them, and a restart
 // onto any number of ranks decomposes the same state the same way.
 class RecursiveBisection {
  public:
+  struct AxisCuts {
+    std::array<int, 3> counts{1, 1, 1};  // subdomains along x, y, z; their product is the parts
+    std::array<int, 3> order{0, 1, 2};   // the axes in the order cut
+  };
+
   // One subdomain: everything.
   RecursiveBisection();
 
   // Collective over comm: points and weights (each >= 0) are this rank's share of the set.
-  // dimension 2 never cuts z. Throws Error for parts < 1 or a negative weight.
+  // dimension 2 never cuts z. With `cuts`, the axes are its (hierarchical cuts). Throws Error
+  // for parts < 1, a negative weight, or cuts whose counts do not multiply to parts.
   static RecursiveBisection build(const Communicator& comm, const std::vector<Vector>& points,
                                   const std::vector<std::int64_t>& weights, int parts,
-                                  int dimension);
+                                  int dimension, const AxisCuts* cuts = nullptr);
 
   int parts() const { return static_cast<int>(leaves_.size()); }
   // The subdomain of x: below a cut is x[axis] < cut, exactly as build() counted.
@@ -67,6 +78,7 @@ class RecursiveBisection {
   struct Node {
     Region region;
     int firstPart = 0, partCount = 1;
+    std::array<int, 3> counts{1, 1, 1};  // hierarchical cuts: the subdomains left per axis
     int axis = -1;  // -1: a leaf
     double cut = 0;
     int lower = -1, upper = -1;  // children

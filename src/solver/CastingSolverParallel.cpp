@@ -50,7 +50,8 @@ void CastingSolver::checkParallelSupport() const {
 void CastingSolver::decompose() {
   DecompositionSettings decomposeParDict;
   try {
-    decomposeParDict = readDecompositionSettings(caseFolder_, comm_.size());
+    decomposeParDict =
+        readDecompositionSettings(caseFolder_, comm_.size(), description_.dimension());
   } catch (const Error& error) {
     throw CollectiveError(error.what());  // every rank read the same file
   }
@@ -138,6 +139,8 @@ void CastingSolver::decompose() {
   models_.decomposition->distribute(decomposed);
   models_.neighbourhood->setHaloSync(models_.decomposition.get());
   info() << "Decomposition: " << models_.decomposition->describe() << '\n';
+  if (!decomposeParDict.note.empty())
+    info() << "  (decomposeParDict: " << decomposeParDict.note << ")\n";
 }
 
 void CastingSolver::searchNeighbours(CloudOrder order, bool rebuild) {

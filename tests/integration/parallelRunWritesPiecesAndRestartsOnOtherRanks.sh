@@ -4,7 +4,9 @@
 # setCastFields. Each written time holds water.pvtp with a piece per rank, which the .pvd lists;
 # castPostProcess reads them, and its cloud summary (count, centroid, mean velocity, extent)
 # equals the serial run's within 1e-9 m or m/s at every time; the front function object within
-# 1e-10 m. A run stopped at 0.1 on 2 ranks goes on from there on 4. A decomposeParDict for
+# 1e-10 m; every file written is well-formed XML. The 2 ranks read a decomposeParDict copied
+# from OpenFOAM (method scotch, run as recursive bisection), the 4 hierarchical cuts. A run
+# stopped at 0.1 on 2 ranks goes on from there on 4. A decomposeParDict for
 # another number of ranks is refused with its file and line, on every rank, without a hang.
 # conicalMold at 6 mm on 2 ranks solidifies at the serial run's time, with its time series.
 # (The particle-by-particle comparison with the serial run, on 1, 2 and 4 ranks and across
@@ -13,14 +15,43 @@
 export OMP_NUM_THREADS=1 OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 mpirun=(timeout 300 mpirun --oversubscribe)
 preprocessTutorialCase validation/damBreak2D "$scratch/serial"
-for ranks in 2 4; do
-    cp -r "$scratch/serial" "$scratch/np$ranks"
-    cat > "$scratch/np$ranks/system/decomposeParDict" <<DICT
-FoamFile { version 2.0; format ascii; class dictionary; object decomposeParDict; }
-numberOfSubdomains $ranks;
-method recursiveBisection;
+# 2 ranks: OpenFOAM's own damBreak decomposeParDict as a user copies it, with method scotch (a
+# partitioner of a mesh's cells, run as recursive bisection); 4 ranks: hierarchical cuts
+for ranks in 2 4; do cp -r "$scratch/serial" "$scratch/np$ranks"; done
+cat > "$scratch/np2/system/decomposeParDict" <<'DICT'
+FoamFile
+{
+    version     2.0;
+    format      ascii;
+    class       dictionary;
+    object      decomposeParDict;
+}
+numberOfSubdomains 2;
+method          scotch;
+simpleCoeffs
+{
+    n               (2 1 1);
+    delta           0.001;
+}
+hierarchicalCoeffs
+{
+    n               (1 1 1);
+    delta           0.001;
+    order           xyz;
+}
+manualCoeffs
+{
+    dataFile        "";
+}
+distributed     no;
+roots           ( );
 DICT
-done
+cat > "$scratch/np4/system/decomposeParDict" <<'DICT'
+FoamFile { version 2.0; format ascii; class dictionary; object decomposeParDict; }
+numberOfSubdomains 4;
+method hierarchical;
+hierarchicalCoeffs { n (2 2 1); order yxz; }
+DICT
 cp -r "$scratch/np2" "$scratch/restart"
 sphCastFoam > log.sphCastFoam 2>&1 || fail "serial: $(tail -5 log.sphCastFoam)"
 castPostProcess > log.castPostProcess 2>&1 || fail "serial castPostProcess"
@@ -28,8 +59,11 @@ for ranks in 2 4; do
     cd "$scratch/np$ranks"
     "${mpirun[@]}" -np $ranks sphCastFoam -parallel > log.sphCastFoam 2>&1 ||
         fail "-np $ranks: $(tail -8 log.sphCastFoam)"
-    grep -q "^Decomposition: $ranks subdomains by recursive bisection" log.sphCastFoam ||
-        fail "-np $ranks: no decomposition line"
+    method=("recursive bisection (" "hierarchical cuts n (2 2 1), order yxz (y < ")
+    grep -qF "Decomposition: $ranks subdomains by ${method[ranks / 4]}" log.sphCastFoam ||
+        fail "-np $ranks: no decomposition line: $(grep -A1 '^Decomposition' log.sphCastFoam)"
+    [ $ranks = 4 ] || grep -qF "(decomposeParDict: method scotch (a partitioner of a mesh's cells): recursive bisection" log.sphCastFoam ||
+        fail "-np 2: the log does not say how scotch ran: $(grep -A1 '^Decomposition' log.sphCastFoam)"
     # the surge carries the water across the cuts: space is cut again as it goes (8 times on
     # 2 ranks), every cloud redistributed, and the results stay the serial run's
     grep -q "^Decomposition at the end: [1-9][0-9]* re-balances" log.sphCastFoam ||
@@ -49,6 +83,8 @@ for ranks in 2 4; do
                  END { if (n != 6) exit 1 }' ||
         fail "-np $ranks: cloud summary off the serial one: $(tail -2 postProcessing/cloudSummary/water.csv)"
 done
+# every file VTK wrote (the pieces, the .pvtp and .pvd indices) opens in a strict XML parser
+expectWellFormedXml "$scratch/serial" "$scratch/np2" "$scratch/np4"
 python3 - "$scratch/serial" "$scratch/np2" "$scratch/np4" <<'PY' || fail "front function object"
 import os, sys
 from functionObjectSeries import read_series

@@ -202,6 +202,34 @@ TEST(RecursiveBisectionTest, MoreSubdomainsThanPointsLeavesSomeEmpty) {
   EXPECT_EQ(rcb.parts(), 8);
 }
 
+// OpenFOAM's hierarchical decomposition, n (3 2 1) in order yxz: the set is cut first into two
+// slabs along y, each slab into three along x, and never along z (its longest axis here is x,
+// which plain bisection would cut first); every part gets its share as bisection's do, and the
+// distributed build equals the serial one.
+TEST(RecursiveBisectionTest, HierarchicalCutsFollowTheirOrderAndBalanceEachSlab) {
+  const Communicator world = Communicator::world();
+  const PointSet all = lShapedSet(0.2);
+  const PointSet mine = share(all, world);
+  const RecursiveBisection::AxisCuts cuts{{3, 2, 1}, {1, 0, 2}};
+  const auto hierarchical =
+      RecursiveBisection::build(world, mine.points, mine.weights, 6, 3, &cuts);
+  const auto serial =
+      RecursiveBisection::build(Communicator::self(), all.points, all.weights, 6, 3, &cuts);
+  EXPECT_TRUE(sameRegions(hierarchical, serial)) << hierarchical.describe();
+  ASSERT_EQ(hierarchical.parts(), 6);
+  const double cutY = hierarchical.region(0).upper[1];
+  for (int p = 0; p < 6; ++p) {
+    const Region& box = hierarchical.region(p);
+    EXPECT_TRUE(std::isinf(box.lower[2]) && std::isinf(box.upper[2])) << "part " << p << " cut z";
+    // parts 0-2 below the one y cut, 3-5 above it: the y cut is the same plane for all
+    EXPECT_EQ(p < 3 ? box.upper[1] : box.lower[1], cutY) << "part " << p;
+  }
+  EXPECT_EQ(hierarchical.describe().substr(0, 2), "y ") << hierarchical.describe();
+  EXPECT_LT(hierarchical.imbalance(), 1.01) << hierarchical.describe();
+  // counts that do not multiply to the parts
+  EXPECT_THROW(RecursiveBisection::build(world, mine.points, mine.weights, 4, 3, &cuts), Error);
+}
+
 TEST(RecursiveBisectionTest, BadArgumentsAreErrors) {
   const Communicator world = Communicator::world();
   const std::vector<Vector> points{Vector(0, 0, 0)};
