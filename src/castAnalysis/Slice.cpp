@@ -13,6 +13,7 @@
 #include <cstdio>
 #include <limits>
 
+#include "castAnalysis/PlaneInterpolation.h"
 #include "core/Error.h"
 #include "core/Log.h"
 #include "io/VtpCloud.h"
@@ -40,7 +41,7 @@ std::array<unsigned char, 3> colourOf(double f) {
 Slice::Slice(const std::string& name, const Dictionary& dict, const AnalysisContext& context)
     : CastAnalysis(name, dict, context,
                    {"point", "normal", "thickness", "field", "range", "clouds", "times", "show",
-                    "pixel"}) {
+                    "pixel", "style"}) {
   point_ = dict.get<Vector>("point");
   normal_ = dict.get<Vector>("normal");
   if (!(normal_.norm() > 0)) {
@@ -72,6 +73,7 @@ Slice::Slice(const std::string& name, const Dictionary& dict, const AnalysisCont
                               dict.name());
   }
   pixel_ = dict.getOrDefault<Real>("pixel", 0);
+  particles_ = dict.getChoiceOrDefault("style", {"field", "particles"}, "field") == "particles";
   // up: +z projected into the plane (+y when the plane is normal to z)
   Vector up = Vector::UnitZ() - normal_.dot(Vector::UnitZ()) * normal_;
   if (up.norm() < 1e-6) up = Vector::UnitY() - normal_.dot(Vector::UnitY()) * normal_;
@@ -97,6 +99,7 @@ void Slice::draw(const WrittenTime& time) {
     Real u, v, depth, radius;
     std::array<unsigned char, 3> colour;
   };
+  constexpr std::array<unsigned char, 3> grey{150, 150, 150}, outline{60, 60, 60};
   std::vector<Dot> dots;
   const auto out = folder() / time.folder.name;
   std::filesystem::create_directories(out);
@@ -148,7 +151,6 @@ void Slice::draw(const WrittenTime& time) {
   }
   if (!(high > low)) high = low + 1;
   if (finest == std::numeric_limits<Real>::max()) finest = context_.supportRadius / 3;
-  const Real pixel = pixel_ > 0 ? pixel_ : finest / 10;
   for (const auto& [cloud, inside] : sliced) {
     const auto spacing = cloud->attributes().find("spacing");
     const Real radius =
@@ -157,8 +159,7 @@ void Slice::draw(const WrittenTime& time) {
     for (const std::size_t i : inside) {
       const Vector d = cloud->positions()[i] - point_;
       const auto colour =
-          coloured ? colourOf((double(cloud->scalarField(field_)[i]) - low) / (high - low))
-                   : std::array<unsigned char, 3>{150, 150, 150};
+          coloured ? colourOf((double(cloud->scalarField(field_)[i]) - low) / (high - low)) : grey;
       dots.push_back({d.dot(right_), d.dot(up_), std::abs(d.dot(normal_)), radius, colour});
     }
   }
@@ -167,13 +168,19 @@ void Slice::draw(const WrittenTime& time) {
             " m of the plane at time " + time.folder.name);
     return;
   }
+  // the picture's extent: the sliced particles' discs, or, drawn as a field, their kernels' reach
+  const Real support = context_.supportRadius > 0 ? context_.supportRadius : 3 * finest;
   Real uMin = dots[0].u, uMax = uMin, vMin = dots[0].v, vMax = vMin;
   for (const Dot& dot : dots) {
-    uMin = std::min(uMin, dot.u - dot.radius);
-    uMax = std::max(uMax, dot.u + dot.radius);
-    vMin = std::min(vMin, dot.v - dot.radius);
-    vMax = std::max(vMax, dot.v + dot.radius);
+    const Real reach = particles_ ? dot.radius : Real(0.5) * finest;
+    uMin = std::min(uMin, dot.u - reach);
+    uMax = std::max(uMax, dot.u + reach);
+    vMin = std::min(vMin, dot.v - reach);
+    vMax = std::max(vMax, dot.v + reach);
   }
+  // a tenth of the finest spacing, finer where that leaves the picture under 800 pixels across
+  const Real pixel =
+      pixel_ > 0 ? pixel_ : std::min(finest / 10, std::max(uMax - uMin, vMax - vMin) / 800);
   const int bar = 16, margin = 4;
   const int width = int(std::ceil((uMax - uMin) / pixel)) + 2 * margin;
   const int height = int(std::ceil((vMax - vMin) / pixel)) + 2 * margin + bar + margin;
@@ -192,16 +199,48 @@ void Slice::draw(const WrittenTime& time) {
     p[1] = c[1];
     p[2] = c[2];
   };
-  // farthest from the plane first: the nearest particles end on top
-  std::sort(dots.begin(), dots.end(), [](const Dot& a, const Dot& b) { return a.depth > b.depth; });
   const int base = bar + 2 * margin;  // rows below the picture: the colour bar
-  for (const Dot& dot : dots) {
-    const Real cx = (dot.u - uMin) / pixel + margin, cy = (dot.v - vMin) / pixel + base;
-    const Real r = dot.radius / pixel;
-    for (int y = std::max(0, int(cy - r)); y <= std::min(height - 1, int(cy + r) + 1); ++y) {
-      for (int x = std::max(0, int(cx - r)); x <= std::min(width - 1, int(cx + r) + 1); ++x) {
-        const Real dx = x + Real(0.5) - cx, dy = y + Real(0.5) - cy;
-        if (dx * dx + dy * dy <= r * r) put(x, y, dot.colour);
+  if (particles_) {
+    // farthest from the plane first: the nearest particles end on top
+    std::sort(dots.begin(), dots.end(),
+              [](const Dot& a, const Dot& b) { return a.depth > b.depth; });
+    for (const Dot& dot : dots) {
+      const Real cx = (dot.u - uMin) / pixel + margin, cy = (dot.v - vMin) / pixel + base;
+      const Real r = dot.radius / pixel;
+      for (int y = std::max(0, int(cy - r)); y <= std::min(height - 1, int(cy + r) + 1); ++y) {
+        for (int x = std::max(0, int(cx - r)); x <= std::min(width - 1, int(cx + r) + 1); ++x) {
+          const Real dx = x + Real(0.5) - cx, dy = y + Real(0.5) - cy;
+          if (dx * dx + dy * dy <= r * r) put(x, y, dot.colour);
+        }
+      }
+    }
+  } else {
+    // the field interpolated onto the plane's pixels, each body to where its kernel sum is 1/2,
+    // its outline a pixel wide in dark grey (the casting against the mold and the air)
+    PlaneGrid grid;
+    grid.right = right_;
+    grid.up = up_;
+    grid.normal = normal_;
+    grid.pixel = pixel;
+    grid.width = width - 2 * margin;
+    grid.height = height - base - margin;
+    grid.origin = point_ + (uMin + Real(0.5) * pixel) * right_ + (vMin + Real(0.5) * pixel) * up_;
+    PlaneInterpolation plane(grid, context_.dimension);
+    for (std::size_t k = 0; k < sliced.size(); ++k) {
+      plane.add(*sliced[k].first, int(k), field_, support);
+    }
+    for (int y = 0; y < grid.height; ++y) {
+      for (int x = 0; x < grid.width; ++x) {
+        const int owner = plane.owner(x, y);
+        if (owner < 0) continue;
+        const bool edge = x == 0 || y == 0 || x == grid.width - 1 || y == grid.height - 1 ||
+                          plane.owner(x - 1, y) != owner || plane.owner(x + 1, y) != owner ||
+                          plane.owner(x, y - 1) != owner || plane.owner(x, y + 1) != owner;
+        const double value = plane.value(x, y);
+        put(x + margin, y + base,
+            edge                ? outline
+            : std::isnan(value) ? grey
+                                : colourOf((value - low) / (high - low)));
       }
     }
   }
@@ -218,9 +257,13 @@ void Slice::draw(const WrittenTime& time) {
   drawn_.push_back(name_ + "/" + time.folder.name + "/" + field_ + ".png");
   drawnTimes_.push_back(time.folder.value);
   captions_.push_back("time " + time.folder.name + ": " + field_ + " from " + formatNumber(low, 4) +
-                      " (blue) to " + formatNumber(high, 4) + " (red), grey: clouds without it; " +
-                      std::to_string(width) + " x " + std::to_string(height) + " pixels of " +
-                      formatNumber(pixel * 1e3, 4) + " mm");
+                      " (blue) to " + formatNumber(high, 4) + " (red), grey: clouds without it" +
+                      (particles_ ? "; the particles within " + formatNumber(thickness_ * 5e2, 4) +
+                                        " mm of the plane"
+                                  : "; interpolated onto the plane, each body out to its surface "
+                                    "(kernel sum 1/2), outlined") +
+                      "; " + std::to_string(width) + " x " + std::to_string(height) +
+                      " pixels of " + formatNumber(pixel * 1e3, 4) + " mm");
   info() << "    " << name_ << ": wrote " << png.string() << '\n';
 }
 

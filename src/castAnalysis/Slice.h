@@ -22,15 +22,21 @@ namespace sphcast {
 //       times       latest;                      // optional: latest | all (the selected times)
 //       show        (0.25 0.3 0.4);              // optional, with times all: the written times
 //                                                // nearest these in the report, besides the last
-//       pixel       0.0003;                      // optional, m: a tenth of the finest spacing
+//       pixel       0.0003;                      // optional, m: a tenth of the finest
+//                                                // spacing, or less for 800 pixels across
+//       style       field;                       // optional: field | particles
 //   }
 //
 // Writes postProcessing/<name>/<time>/<cloud>.vtp (the sliced particles with all their fields)
-// and <time>/<field>.png: each particle a disc of 0.45 of its spacing, nearest the plane on top,
-// seen along -normal with "up" the plane's direction closest to +z (+y for a plane normal to z),
-// coloured blue (low) - cyan - green - yellow - red (high), with a colour bar along the bottom.
-// Drawn pixel by pixel into a VTK image and written with VTK's PNG writer: no rendering, no
-// display, no gnuplot needed. The report shows the latest time's picture, after those of `show`
+// and <time>/<field>.png, seen along -normal with "up" the plane's direction closest to +z (+y
+// for a plane normal to z), coloured blue (low) - cyan - green - yellow - red (high), with a
+// colour bar along the bottom. style field: the field on the plane itself, interpolated from the
+// particles within a kernel's reach (PlaneInterpolation.h), each body (metal, mold) out to where
+// its kernel sum falls through 1/2, its free surface, and outlined in dark grey: the casting as
+// a continuous body. style particles: each particle within half the thickness a disc of 0.45 of
+// its spacing, nearest the plane on top (to look at the particles themselves). Drawn pixel by
+// pixel into a VTK image and written with VTK's PNG writer: no rendering, no display, no gnuplot
+// needed. The report shows the latest time's picture, after those of `show`
 // (a press's or a filling's stages, as the paper's Fig. 17).
 class Slice : public CastAnalysis {
  public:
@@ -44,6 +50,7 @@ class Slice : public CastAnalysis {
 
   Vector point_, normal_, right_, up_;
   Real thickness_ = 0, pixel_ = 0;
+  bool particles_ = false;  // style particles: discs, not the interpolated field
   std::string field_;
   bool fixedRange_ = false;
   double low_ = 0, high_ = 1;

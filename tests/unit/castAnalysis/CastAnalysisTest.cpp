@@ -11,6 +11,7 @@
 
 #include "castAnalysis/CastAnalysis.h"
 #include "castAnalysis/CoolingCurve.h"
+#include "castAnalysis/PlaneInterpolation.h"
 #include "castAnalysis/TemperatureGradient.h"
 #include "castAnalysis/TimeSeries.h"
 #include "castAnalysis/VoxelOccupancy.h"
@@ -164,6 +165,103 @@ TEST(ShrinkageCavities, PlantedVoidMeasuredWithinFivePercent) {
                   double((voids[0].centroid - centre).norm() / dx));
       EXPECT_NEAR(voids[0].volume / planted, 1, 0.05) << dimension << "D";
       EXPECT_LT((voids[0].centroid - centre).norm(), 0.25 * dx) << dimension << "D";
+    }
+  }
+}
+
+// A slice's picture (PlaneInterpolation): a metal block with T = 900 + 10^4 x (10 K a spacing)
+// and a mold block without T beside it in y, on a plane through them. Inside the metal, further
+// than h from its faces, T is read within 0.2 K (Shepard's error for a linear field is its
+// first moment, a small fraction of a spacing on a full lattice; a wrong weight or volume would
+// be off by kelvins). The metal's free surface, where its kernel sum falls through 1/2, lies
+// within a quarter spacing of the lattice's outer cell faces, x = n dx; the mold shows as no
+// field and meets the metal at their common face, y = n dx, within a quarter spacing. The mold
+// moved half a spacing away shows no air between (the seam a lattice's staircase leaves against
+// a sloping wall), moved two spacings away a gap of two spacings within a quarter spacing.
+TEST(PlaneInterpolation, ABlocksFieldAndSurfaceOnAPlaneThroughIt) {
+  for (const int dimension : {2, 3}) {
+    const int n = 16;
+    const Real dx = 0.001, h = 3 * dx, pixel = dx / 8;
+    ParticleCloud metal = latticeBlock(n, dx, dimension);
+    auto& T = metal.addScalarField(field::T);
+    for (std::size_t i = 0; i < metal.size(); ++i) T[i] = 900 + 1e4 * metal.positions()[i].x();
+    const ParticleCloud block = latticeBlock(n, dx, dimension);
+    ParticleCloud mold("mold");
+    mold.resize(block.size());
+    auto& volume = mold.addScalarField(field::volume);
+    for (std::size_t i = 0; i < block.size(); ++i) {
+      mold.positions()[i] = block.positions()[i] + Vector(0, n * dx, 0);
+      volume[i] = dimension == 3 ? dx * dx * dx : dx * dx;
+    }
+    PlaneGrid grid;
+    grid.right = Vector::UnitX();
+    grid.up = Vector::UnitY();
+    grid.normal = Vector::UnitZ();
+    grid.pixel = pixel;
+    grid.origin = Vector(-2 * dx + pixel / 2, -2 * dx + pixel / 2,
+                         dimension == 3 ? Real(n / 2) * dx : Real(0));
+    grid.width = int(std::lround((n + 4) * dx / pixel));
+    grid.height = int(std::lround((2 * n + 4) * dx / pixel));
+    PlaneInterpolation plane(grid, dimension);
+    plane.add(metal, 0, "T", h);
+    plane.add(mold, 1, "T", h);
+    double worst = 0;
+    for (int y = 0; y < grid.height; ++y) {
+      for (int x = 0; x < grid.width; ++x) {
+        const Vector at = grid.centre(x, y);
+        if (at.x() > h && at.x() < n * dx - h && at.y() > h && at.y() < n * dx - h) {
+          ASSERT_EQ(plane.owner(x, y), 0) << dimension << "D at " << at.transpose();
+          worst = std::max(worst, std::abs(plane.value(x, y) - (900 + 1e4 * double(at.x()))));
+        }
+      }
+    }
+    EXPECT_LT(worst, 0.2) << dimension << "D: T inside the metal";
+    // along the row through the metal's middle: its surface at x = n dx
+    const int row = int((n * dx / 2 - grid.origin.y()) / pixel);
+    int last = -1;
+    for (int x = 0; x < grid.width; ++x) {
+      if (plane.owner(x, row) == 0) last = x;
+    }
+    ASSERT_GE(last, 0);
+    EXPECT_NEAR(double(grid.centre(last, row).x()), n * dx, 0.25 * dx) << dimension << "D";
+    EXPECT_EQ(plane.owner(grid.width - 1, row), -1) << dimension << "D: air beyond the metal";
+    // up the column through the middle: metal, then mold (no T) from y = n dx to 2 n dx
+    const int column = int((n * dx / 2 - grid.origin.x()) / pixel);
+    int firstMold = -1, lastMold = -1;
+    for (int y = 0; y < grid.height; ++y) {
+      if (plane.owner(column, y) != 1) continue;
+      if (firstMold < 0) firstMold = y;
+      lastMold = y;
+      EXPECT_TRUE(std::isnan(plane.value(column, y))) << dimension << "D: a mold without T";
+    }
+    ASSERT_GE(firstMold, 0);
+    EXPECT_EQ(plane.owner(column, firstMold - 1), 0) << dimension << "D: the mold on the metal";
+    EXPECT_NEAR(double(grid.centre(column, firstMold).y()), n * dx, 0.25 * dx) << dimension << "D";
+    EXPECT_NEAR(double(grid.centre(column, lastMold).y()), 2 * n * dx, 0.25 * dx)
+        << dimension << "D";
+    std::printf("%dD: T inside within %.3g K, surface at %+.3f dx, interface at %+.3f dx\n",
+                dimension, worst, double((grid.centre(last, row).x() - n * dx) / dx),
+                double((grid.centre(column, firstMold).y() - n * dx) / dx));
+    // the mold moved away by half a spacing (a lattice's staircase against a sloping wall): no
+    // air shows between them; by two spacings (a real gap): air over one to two spacings
+    for (const Real gap : {Real(0.5) * dx, 2 * dx}) {
+      ParticleCloud apart = mold;
+      for (Vector& x : apart.positions()) x.y() += gap;
+      PlaneInterpolation seam(grid, dimension);
+      seam.add(metal, 0, "T", h);
+      seam.add(apart, 1, "T", h);
+      int air = 0;
+      for (int y = 0; y < grid.height; ++y) {
+        const double at = double(grid.centre(column, y).y());
+        if (at > n * dx / 2 && at < n * dx * 1.5 && seam.owner(column, y) < 0) ++air;
+      }
+      std::printf("%dD: a gap of %.1f dx shows %.2f dx of air\n", dimension, double(gap / dx),
+                  double(air * pixel / dx));
+      if (gap < dx) {
+        EXPECT_EQ(air, 0) << dimension << "D: a seam of half a spacing shows";
+      } else {
+        EXPECT_NEAR(double(air * pixel), double(gap), 0.25 * dx) << dimension << "D: the gap";
+      }
     }
   }
 }
