@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "castAnalysis/BodyMotion.h"
+#include "castAnalysis/CastingView.h"
 #include "castAnalysis/CloudSummaryAnalysis.h"
 #include "castAnalysis/HotSpots.h"
 #include "castAnalysis/ShrinkageCavities.h"
@@ -133,6 +134,7 @@ CastAnalysisTypes& castAnalysisTypes() {
     registry.add<SolidificationMaps>("solidificationMaps");
     registry.add<ShrinkageCavities>("shrinkageCavities");
     registry.add<Slice>("slice");
+    registry.add<CastingView>("view");
     registry.add<HotSpots>("hotSpots");
     registry.add<BodyMotion>("bodyMotion");
     return registry;

@@ -22,18 +22,18 @@ std::string quoted(const std::string& text) {
 }
 
 // A path inside the shell's single quotes.
-std::string shellQuoted(const std::string& text) {
-  std::string out = "'";
-  for (char c : text) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return out + "'";
-}
-
 bool gnuplotFound() {
   static const bool found = std::system("command -v gnuplot > /dev/null 2>&1") == 0;
   return found;
 }
 
 }  // namespace
+
+std::string shellQuoted(const std::string& text) {
+  std::string out = "'";
+  for (char c : text) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return out + "'";
+}
 
 bool drawPlot(const Plot& plot, const std::filesystem::path& png) {
   std::ostringstream script;

@@ -32,4 +32,8 @@ struct Plot {
 // Returns true when the PNG was drawn.
 bool drawPlot(const Plot& plot, const std::filesystem::path& png);
 
+// text in single quotes for sh, its own single quotes escaped: for the commands castPostProcess
+// runs (gnuplot, ffmpeg)
+std::string shellQuoted(const std::string& text);
+
 }  // namespace sphcast

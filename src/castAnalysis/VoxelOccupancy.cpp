@@ -40,11 +40,11 @@ double VoxelOccupancy::voxelVolume() const {
   return dimension_ == 2 ? double(voxel_) * voxel_ : double(voxel_) * voxel_ * voxel_;
 }
 
-void VoxelOccupancy::add(const ParticleCloud& cloud, int channel) {
+template <class Accumulate>
+void VoxelOccupancy::forEachVoxelNear(const ParticleCloud& cloud, Accumulate&& accumulate) const {
   const std::vector<Real> volume = particleVolumes(cloud, dimension_);
   const WendlandC2Kernel<3> kernel3(h_);
   const WendlandC2Kernel<2> kernel2(h_);
-  auto& c = channel_[channel];
   const int reach = static_cast<int>(std::ceil(h_ / voxel_));
   for (std::size_t j = 0; j < cloud.size(); ++j) {
     const Vector& x = cloud.positions()[j];
@@ -57,16 +57,27 @@ void VoxelOccupancy::add(const ParticleCloud& cloud, int channel) {
     for (int k = from[2]; k <= to[2]; ++k) {
       for (int jj = from[1]; jj <= to[1]; ++jj) {
         for (int i = from[0]; i <= to[0]; ++i) {
-          const std::size_t n = index(i, jj, k);
           const Vector at = origin_ + voxel_ * Vector(Real(i), Real(jj), Real(k));
           const Real r = dimension_ == 2 ? (at - x).head<2>().norm() : (at - x).norm();
           if (r >= h_) continue;
           const Real w = dimension_ == 2 ? kernel2.value(r) : kernel3.value(r);
-          c[n] += static_cast<float>(volume[j] * w);
+          accumulate(j, index(i, jj, k), volume[j] * w);
         }
       }
     }
   }
+}
+
+void VoxelOccupancy::add(const ParticleCloud& cloud, int channel) {
+  auto& c = channel_[channel];
+  forEachVoxelNear(cloud, [&](std::size_t, std::size_t n, Real vw) { c[n] += float(vw); });
+}
+
+void VoxelOccupancy::addField(const ParticleCloud& cloud, const std::string& field) {
+  const auto& f = cloud.scalarField(field);
+  fieldSum_.resize(size(), 0.0f);
+  forEachVoxelNear(
+      cloud, [&](std::size_t j, std::size_t n, Real vw) { fieldSum_[n] += float(vw * f[j]); });
 }
 
 std::vector<EnclosedVoid> enclosedVoids(const VoxelOccupancy& occupancy, double threshold) {

@@ -2,6 +2,7 @@
 
 #include <array>
 #include <cstddef>
+#include <string>
 #include <vector>
 
 #include "core/Real.h"
@@ -26,6 +27,10 @@ class VoxelOccupancy {
 
   // Adds the cloud's particles into `channel` (0 or 1: e.g. the metal and the molds).
   void add(const ParticleCloud& cloud, int channel);
+  // Adds sum_j V_j f_j W into fieldSum(), for a field of the cloud added into a channel: that
+  // channel's c divides it into the interpolated field (Shepard), f = fieldSum / c.
+  void addField(const ParticleCloud& cloud, const std::string& field);
+  const std::vector<float>& fieldSum() const { return fieldSum_; }
 
   std::array<int, 3> counts() const { return counts_; }
   std::size_t size() const { return channel_[0].size(); }
@@ -46,6 +51,11 @@ class VoxelOccupancy {
   int dimension_;
   std::array<int, 3> counts_{1, 1, 1};
   std::array<std::vector<float>, 2> channel_;
+  std::vector<float> fieldSum_;
+
+  // accumulate(j, voxel, V_j W) for every voxel within h of each particle j
+  template <class Accumulate>
+  void forEachVoxelNear(const ParticleCloud& cloud, Accumulate&& accumulate) const;
 };
 
 // The enclosed voids of an occupancy: voxels whose two channels together are below `threshold`

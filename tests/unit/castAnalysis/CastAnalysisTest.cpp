@@ -471,6 +471,17 @@ TEST(CastAnalysis, BadEntriesNameFileLineAndKey) {
   expectError(maps, "a 1;", "system/castPostProcessDict:1:", "is not an analysis");
   expectError(maps, "a { type thermocouples; cloud metal; }",
               "system/castPostProcessDict:1:", "either 'locations'");
+  // a view: its clip, its size, and a 2D case, whose picture is a slice
+  expectError(maps, "a { type view; cloud metal; field T;\n clip ((0 0 0) (0 0 0)); }",
+              "system/castPostProcessDict:2:", "non-zero normal");
+  expectError(maps, "a { type view; cloud metal; field T; size (10 10); }",
+              "system/castPostProcessDict:1:", "64 to 8192");
+  expectError(maps, "a { type view; cloud metal; field T; show (1); }",
+              "system/castPostProcessDict:1:", "'show' needs 'times all'");
+  maps.context.dimension = 2;
+  expectError(maps, "a { type view; cloud metal; field T; }",
+              "system/castPostProcessDict:1:", "a 2D case's picture is a slice");
+  maps.context.dimension = 3;
   // a thermocouple outside the casting, at its line
   auto analyses = maps.read(
       "a { type thermocouples; cloud metal;\n locations { in (0.03 0.03 0.03);\n out (1 0 0); "
