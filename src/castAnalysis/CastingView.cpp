@@ -8,11 +8,11 @@
 #include <vtkFlyingEdges3D.h>
 #include <vtkImageData.h>
 #include <vtkLookupTable.h>
-#include <vtkMassProperties.h>
 #include <vtkNew.h>
 #include <vtkPNGWriter.h>
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
+#include <vtkPolyDataConnectivityFilter.h>
 #include <vtkPolyDataMapper.h>
 #include <vtkProperty.h>
 #include <vtkRenderWindow.h>
@@ -21,7 +21,6 @@
 #include <vtkSphereSource.h>
 #include <vtkTextActor.h>
 #include <vtkTextProperty.h>
-#include <vtkTriangleFilter.h>
 #include <vtkWindowToImageFilter.h>
 #include <Eigen/Geometry>
 
@@ -189,14 +188,7 @@ void CastingView::build(const WrittenTime& time) {
   contour->ComputeNormalsOn();
   contour->InterpolateAttributesOn();
   contour->Update();
-  frame.surface = contour->GetOutput();
-  // the reconstruction's check: the closed surface's volume against the particles'
-  vtkNew<vtkTriangleFilter> triangles;
-  triangles->SetInputData(frame.surface);
-  vtkNew<vtkMassProperties> mass;
-  mass->SetInputConnection(triangles->GetOutputPort());
-  mass->Update();
-  frame.enclosed = frame.surface->GetNumberOfPoints() > 0 ? mass->GetVolume() : 0;
+  splitCavities(contour->GetOutput(), frame);
   const std::vector<Real> volume = particleVolumes(*cloud, 3);
   for (std::size_t j = 0; j < cloud->size(); ++j) {
     if (!clipped_ || (cloud->positions()[j] - clipPoint_).dot(clipNormal_) < 0) {
@@ -215,6 +207,60 @@ void CastingView::build(const WrittenTime& time) {
     }
   }
   frames_.push_back(std::move(frame));
+}
+
+// The contour's closed parts: each part's signed volume (the divergence theorem over its
+// triangles, oriented alike by flying edges) has the casting's sign for a body of metal and the
+// opposite one for a void inside the metal.
+void CastingView::splitCavities(vtkPolyData* contour, Frame& frame) {
+  vtkNew<vtkPolyDataConnectivityFilter> regions;
+  regions->SetInputData(contour);
+  regions->SetExtractionModeToAllRegions();
+  regions->ColorRegionsOn();
+  regions->Update();
+  vtkPolyData* labelled = regions->GetOutput();
+  const int count = regions->GetNumberOfExtractedRegions();
+  vtkDataArray* region = labelled->GetPointData()->GetArray("RegionId");
+  std::vector<double> volume(std::size_t(std::max(count, 0)), 0.0);
+  vtkPoints* points = labelled->GetPoints();
+  for (vtkIdType c = 0; region != nullptr && c < labelled->GetNumberOfCells(); ++c) {
+    const vtkIdType* ids = nullptr;
+    vtkIdType n = 0;
+    labelled->GetCellPoints(c, n, ids);
+    if (n != 3) continue;
+    Eigen::Vector3d x[3];
+    for (int k = 0; k < 3; ++k) points->GetPoint(ids[k], x[k].data());
+    volume[std::size_t(region->GetTuple1(ids[0]))] += x[0].dot(x[1].cross(x[2])) / 6;
+  }
+  const auto largest = std::max_element(
+      volume.begin(), volume.end(), [](double a, double b) { return std::abs(a) < std::abs(b); });
+  vtkNew<vtkPolyDataConnectivityFilter> bodies, voids;
+  for (auto* filter : {bodies.Get(), voids.Get()}) {
+    filter->SetInputData(contour);
+    filter->SetExtractionModeToSpecifiedRegions();
+  }
+  bool anyVoid = false;
+  for (int r = 0; r < count; ++r) {
+    const bool isVoid = largest != volume.end() && volume[std::size_t(r)] * *largest < 0;
+    (isVoid ? voids.Get() : bodies.Get())->AddSpecifiedRegion(r);
+    if (isVoid) {
+      anyVoid = true;
+      frame.cavityVolumes.push_back(std::abs(volume[std::size_t(r)]));
+    }
+  }
+  std::sort(frame.cavityVolumes.rbegin(), frame.cavityVolumes.rend());
+  // the metal's volume, the voids' walls subtracting: the reconstruction's check against the
+  // particles' own
+  double total = 0;
+  for (const double v : volume) total += v;
+  frame.enclosed = std::abs(total);
+  bodies->Update();
+  frame.surface = bodies->GetOutput();
+  frame.cavities = vtkSmartPointer<vtkPolyData>::New();
+  if (anyVoid) {
+    voids->Update();
+    frame.cavities = voids->GetOutput();
+  }
 }
 
 bool CastingView::render() {
@@ -254,6 +300,11 @@ bool CastingView::render() {
   vtkNew<vtkActor> casting;
   casting->SetMapper(mapper);
   casting->GetProperty()->SetSpecular(0.15);
+  vtkNew<vtkPolyDataMapper> voidMapper;
+  voidMapper->ScalarVisibilityOff();
+  vtkNew<vtkActor> voids;  // the enclosed voids in magenta, the casting translucent around them
+  voids->SetMapper(voidMapper);
+  voids->GetProperty()->SetColor(0.85, 0.0, 0.85);
   vtkNew<vtkSphereSource> ball;
   ball->SetThetaResolution(24);
   ball->SetPhiResolution(16);
@@ -280,6 +331,7 @@ bool CastingView::render() {
   title->SetDisplayPosition(12, size_[1] - 34);
   vtkNew<vtkRenderer> renderer;
   renderer->SetBackground(1, 1, 1);
+  renderer->AddActor(voids);
   renderer->AddActor(casting);
   renderer->AddActor(marker);
   renderer->AddViewProp(bar);
@@ -304,6 +356,10 @@ bool CastingView::render() {
   for (std::size_t k = 0; k < frames_.size(); ++k) {
     const Frame& frame = frames_[k];
     mapper->SetInputData(frame.surface);
+    const bool anyVoid = frame.cavities->GetNumberOfCells() > 0;
+    voidMapper->SetInputData(frame.cavities);
+    voids->SetVisibility(anyVoid);
+    casting->GetProperty()->SetOpacity(anyVoid ? 0.35 : 1.0);
     marker->SetVisibility(frame.marked);
     if (frame.marked) {
       ball->SetCenter(double(frame.lastToFreeze.x()), double(frame.lastToFreeze.y()),
@@ -312,7 +368,7 @@ bool CastingView::render() {
     }
     title->SetInput(("time " + frame.timeName + " s: " + cloud_ + " by " + field_ +
                      (frame.marked ? "; black ball: last to freeze" : "") +
-                     (clipped_ ? "; cut open" : ""))
+                     (anyVoid ? "; magenta: enclosed voids" : "") + (clipped_ ? "; cut open" : ""))
                         .c_str());
     window->Render();
     grab->Modified();
@@ -387,6 +443,13 @@ ReportSection CastingView::finish() {
                         formatPoint(last.lastToFreeze) + ", t = " + formatNumber(last.lastTime, 4) +
                         " s";
   }
+  section.markdown += ". " + std::to_string(last.cavityVolumes.size()) + " void" +
+                      (last.cavityVolumes.size() == 1 ? "" : "s") + " enclosed in the metal";
+  for (std::size_t k = 0; k < last.cavityVolumes.size() && k < 5; ++k) {
+    section.markdown +=
+        (k == 0 ? " (magenta): " : ", ") + formatNumber(last.cavityVolumes[k] * 1e6, 3) + " cm^3";
+  }
+  if (last.cavityVolumes.size() > 5) section.markdown += ", ...";
   section.markdown += ".\n";
   if (!render()) {
     section.markdown +=

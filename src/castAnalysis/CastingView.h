@@ -19,8 +19,11 @@ namespace sphcast {
 //
 // on voxels of half a spacing (VoxelOccupancy.h), contoured by VTK's flying edges, and coloured by
 // a field interpolated onto it (sum_j V_j f_j W / c). A clip plane cuts the casting open: the
-// cut face shows the field inside, the cavities as holes. The last particle to reach the
-// solidus is marked with a black ball. Rendered by VTK, off-screen.
+// cut face shows the field inside. The voids enclosed in the metal (the surface's closed parts
+// whose orientation is the opposite of the casting's: their metal is outside them) are drawn in
+// magenta through the casting, then translucent: shrinkage cavities and gas pockets where they
+// are, with their volumes in the report. The last particle to reach the solidus is marked with
+// a black ball. Rendered by VTK, off-screen.
 //
 //   casting
 //   {
@@ -54,14 +57,17 @@ class CastingView : public CastAnalysis {
   struct Frame {
     std::string timeName;
     double time = 0;
-    vtkSmartPointer<vtkPolyData> surface;
-    double enclosed = 0, particleVolume = 0;  // m^3: the closed surface's, sum m / rho
+    vtkSmartPointer<vtkPolyData> surface;     // the casting's outer surface (and any droplets)
+    vtkSmartPointer<vtkPolyData> cavities;    // the walls of the voids enclosed in it
+    std::vector<double> cavityVolumes;        // m^3, largest first
+    double enclosed = 0, particleVolume = 0;  // m^3: the metal inside the surface, sum m / rho
     bool marked = false;                      // a last particle to freeze
     Vector lastToFreeze = Vector::Zero();
     double lastTime = 0;
     Real spacing = 0;
   };
   void build(const WrittenTime& time);
+  void splitCavities(vtkPolyData* contour, Frame& frame);
   // Renders every frame with one camera; false without a display.
   bool render();
   void animate();
