@@ -19,6 +19,7 @@
 #include "core/Log.h"
 #include "core/dictionary/SourceLocation.h"
 #include "io/VtpCloud.h"
+#include "particles/FieldNames.h"
 #include "post/CloudSummary.h"
 
 namespace sphcast {
@@ -118,6 +119,14 @@ std::string formatNumber(double value, int digits) {
   char text[64];
   std::snprintf(text, sizeof text, "%.*g", digits, value);
   return text;
+}
+
+std::string fieldUnit(const std::string& field) {
+  if (field == field::T) return " (K)";
+  if (field.ends_with("Time")) return " (s)";
+  if (field == field::p) return " (Pa)";
+  if (field == field::rho || field == field::restDensity) return " (kg/m^3)";
+  return "";
 }
 
 std::string formatPoint(const Vector& x) {

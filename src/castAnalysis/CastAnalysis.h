@@ -108,6 +108,9 @@ std::vector<std::unique_ptr<CastAnalysis>> readCastAnalyses(const Dictionary& di
 // as "(x y z) m" with 4 digits each.
 std::string formatNumber(double value, int digits);
 std::string formatPoint(const Vector& x);
+// " (K)" for T, " (s)" for a ...Time field, ...: the unit a picture's colour bar names ("" where
+// sphCast does not know it).
+std::string fieldUnit(const std::string& field);
 
 // The analyses by the type names castPostProcessDict gives them, each built from its name, its
 // sub-dictionary and the context; registered in CastAnalysis.cpp (castPostProcess -help lists

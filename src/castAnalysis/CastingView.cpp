@@ -42,15 +42,6 @@ namespace sphcast {
 
 namespace {
 
-// The unit a field's colour bar names, where sphCast knows it.
-std::string unitOf(const std::string& field) {
-  if (field == field::T) return " (K)";
-  if (field.ends_with("Time")) return " (s)";
-  if (field == field::p) return " (Pa)";
-  if (field == field::rho || field == field::restDensity) return " (kg/m^3)";
-  return "";
-}
-
 // VTK's X render window aborts the process where no display opens: look first.
 bool displayOpens() {
   const char* name = std::getenv("DISPLAY");
@@ -315,7 +306,7 @@ bool CastingView::render() {
   marker->GetProperty()->SetColor(0, 0, 0);
   vtkNew<vtkScalarBarActor> bar;
   bar->SetLookupTable(colours);
-  bar->SetTitle((field_ + unitOf(field_)).c_str());
+  bar->SetTitle((field_ + fieldUnit(field_)).c_str());
   bar->SetOrientationToHorizontal();
   bar->SetPosition(0.2, 0.02);
   bar->SetPosition2(0.6, 0.1);

@@ -1,9 +1,12 @@
 #include "castAnalysis/Slice.h"
 
+#include <vtkAutoInit.h>
 #include <vtkImageData.h>
 #include <vtkNew.h>
 #include <vtkPNGWriter.h>
 #include <vtkPointData.h>
+#include <vtkTextProperty.h>
+#include <vtkTextRenderer.h>
 #include <vtkUnsignedCharArray.h>
 #include <Eigen/Geometry>
 
@@ -17,6 +20,8 @@
 #include "core/Error.h"
 #include "core/Log.h"
 #include "io/VtpCloud.h"
+
+VTK_MODULE_INIT(vtkRenderingFreeType);  // the colour bar's labels: FreeType, no display
 
 namespace sphcast {
 
@@ -34,6 +39,36 @@ std::array<unsigned char, 3> colourOf(double f) {
     c[i] = static_cast<unsigned char>(std::lround((1 - w) * stops[k][i] + w * stops[k + 1][i]));
   }
   return c;
+}
+
+// Writes `text` in black into the RGB picture, its baseline row at y, starting at x (align 0),
+// centred on x (align 1) or ending at x (align 2); with VTK's FreeType text renderer, which
+// needs no display.
+void drawText(unsigned char* pixels, int width, int height, const std::string& text, int x, int y,
+              int align) {
+  vtkTextRenderer* renderer = vtkTextRenderer::GetInstance();
+  if (renderer == nullptr || text.empty()) return;
+  vtkNew<vtkTextProperty> style;
+  style->SetFontFamilyToArial();
+  style->SetFontSize(16);
+  style->SetColor(0, 0, 0);
+  vtkNew<vtkImageData> rendered;
+  int size[2] = {0, 0};
+  if (!renderer->RenderString(style, text, rendered, size, 72)) return;
+  const int left = x - (align == 1 ? size[0] / 2 : align == 2 ? size[0] : 0);
+  const auto* alpha = static_cast<const unsigned char*>(rendered->GetScalarPointer());
+  int dims[3];
+  rendered->GetDimensions(dims);
+  const int components = rendered->GetNumberOfScalarComponents();
+  for (int j = 0; j < size[1] && j < dims[1]; ++j) {
+    for (int i = 0; i < size[0] && i < dims[0]; ++i) {
+      const int px = left + i, py = y + j;
+      if (px < 0 || py < 0 || px >= width || py >= height) continue;
+      const double a = alpha[(std::size_t(j) * dims[0] + i) * components + components - 1] / 255.0;
+      unsigned char* p = pixels + (std::size_t(py) * width + px) * 3;
+      for (int c = 0; c < 3; ++c) p[c] = static_cast<unsigned char>(std::lround((1 - a) * p[c]));
+    }
+  }
 }
 
 }  // namespace
@@ -181,9 +216,9 @@ void Slice::draw(const WrittenTime& time) {
   // a tenth of the finest spacing, finer where that leaves the picture under 800 pixels across
   const Real pixel =
       pixel_ > 0 ? pixel_ : std::min(finest / 10, std::max(uMax - uMin, vMax - vMin) / 800);
-  const int bar = 16, margin = 4;
+  const int bar = 16, margin = 4, labels = 22;  // the colour bar, its labels below it
   const int width = int(std::ceil((uMax - uMin) / pixel)) + 2 * margin;
-  const int height = int(std::ceil((vMax - vMin) / pixel)) + 2 * margin + bar + margin;
+  const int height = int(std::ceil((vMax - vMin) / pixel)) + 2 * margin + bar + margin + labels;
   if (double(width) * height > 6e7) {
     throw Error("slice " + name_ + ": a picture of " + std::to_string(width) + " x " +
                 std::to_string(height) + " pixels; give a larger 'pixel'");
@@ -199,7 +234,7 @@ void Slice::draw(const WrittenTime& time) {
     p[1] = c[1];
     p[2] = c[2];
   };
-  const int base = bar + 2 * margin;  // rows below the picture: the colour bar
+  const int base = labels + bar + 2 * margin;  // rows below the picture: the colour bar
   if (particles_) {
     // farthest from the plane first: the nearest particles end on top
     std::sort(dots.begin(), dots.end(),
@@ -246,8 +281,11 @@ void Slice::draw(const WrittenTime& time) {
   }
   for (int x = margin; x < width - margin; ++x) {
     const auto c = colourOf(double(x - margin) / std::max(1, width - 2 * margin - 1));
-    for (int y = margin; y < margin + bar; ++y) put(x, y, c);
+    for (int y = margin + labels; y < margin + labels + bar; ++y) put(x, y, c);
   }
+  drawText(pixels, width, height, formatNumber(low, 4), margin, margin, 0);
+  drawText(pixels, width, height, field_ + fieldUnit(field_), width / 2, margin, 1);
+  drawText(pixels, width, height, formatNumber(high, 4), width - margin, margin, 2);
   vtkNew<vtkPNGWriter> writer;
   const auto png = out / (field_ + ".png");
   writer->SetFileName(png.string().c_str());

@@ -6,6 +6,7 @@
 #   within 8 % (the level 1/2 of the kernel sum rounds the casting's convex edges over about a
 #   kernel, an error of first order in the spacing: -6.5 % at 6 mm, -2.3 % at the tutorial's
 #   3 mm; a wrong kernel or particle volume would be tens of per cent off).
+# - A slice's picture is drawn without a display, its colour bar labelled (low, field, high).
 # - Under xvfb-run (Debian package xvfb) the casting cut open is drawn by solidusTime: a
 #   1000 x 750 PNG with the metal coloured from blue (first frozen, at the walls) to red (the
 #   last, at the top of the axis), the black ball at the last particle to freeze; by T a frame
@@ -22,12 +23,23 @@ cat > system/castPostProcessDict <<'DICT'
 FoamFile { version 2.0; format ascii; class dictionary; object castPostProcessDict; }
 casting { type view; cloud metal; field solidusTime; clip ((0 0 0) (0 1 0)); }
 cooling { type view; cloud metal; field T; clip ((0 0 0) (0 1 0)); times all; }
+section { type slice; point (0 0 0); normal (0 1 0); thickness 0.012; field T; }
 DICT
 report=postProcessing/castReport.md
 env -u DISPLAY castPostProcess > log.noDisplay 2>&1 || fail "castPostProcess without a display: $(tail -5 log.noDisplay)"
 grep -q "Not drawn: no X display" $report || fail "no note of the missing display in $report"
 grep -q "no X display, not drawn" log.noDisplay || fail "no warning of the missing display"
 [ ! -e postProcessing/casting/*/solidusTime.png ] 2>/dev/null || fail "a picture without a display"
+# the slice needs no display, its colour bar labelled (FreeType): dark text under the bar
+"$python" - postProcessing/section/*/T.png <<'PY' || fail "the slice's colour bar has no labels"
+import sys, vtk
+reader = vtk.vtkPNGReader(); reader.SetFileName(sys.argv[1]); reader.Update()
+image = reader.GetOutput(); width = image.GetDimensions()[0]
+pixels = image.GetPointData().GetScalars()
+dark = sum(1 for k in range(22 * width) if max(pixels.GetTuple3(k)[:3]) < 100)
+print("the slice: %d dark pixels in the label rows" % dark)
+sys.exit(0 if dark > 60 else 1)
+PY
 volumes=$(grep -A2 "^## casting" $report | sed -n 's/.* it encloses \([0-9.e+-]*\) cm^3; the particles on the kept side hold \([0-9.e+-]*\) cm^3.*/\1 \2/p')
 [ -n "$volumes" ] || fail "no volumes in the report: $(grep -A2 '^## casting' $report)"
 awk -v v="$volumes" 'BEGIN { split(v, a, " "); r = a[1] / a[2]; printf "surface %s cm^3, particles %s cm^3: %+.2f %%\n", a[1], a[2], 100 * (r - 1); exit !(r > 0.92 && r < 1.08) }' ||
