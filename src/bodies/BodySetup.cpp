@@ -3,6 +3,9 @@
 #include <cmath>
 #include <filesystem>
 #include <set>
+#include <tuple>
+#include <type_traits>
+#include <vector>
 
 #include "core/Error.h"
 
@@ -15,6 +18,7 @@ const Dimensions length{{0, 1, 0, 0, 0, 0, 0}};
 const Dimensions inertiaUnit{{1, 2, 0, 0, 0, 0, 0}};
 const Dimensions time{{0, 0, 1, 0, 0, 0, 0}};
 const Dimensions forceUnit{{1, 1, -2, 0, 0, 0, 0}};
+const Dimensions areaUnit{{0, 2, 0, 0, 0, 0, 0}};
 
 bool finite(const Vector& v) { return v.allFinite(); }
 
@@ -29,10 +33,38 @@ std::string wordOrVector(const Dictionary& body, const std::string& key,
   }
 }
 
+// A load table: not empty, finite, its times rising; an error at its line otherwise.
+template <class Value>
+void checkTable(const std::vector<std::tuple<double, Value>>& table, const SourceLocation& at,
+                const std::string& key, const std::string& name) {
+  if (table.empty()) {
+    throw DictionaryError(at, "'" + key + "' of body '" + name + "' is an empty table");
+  }
+  for (std::size_t p = 0; p < table.size(); ++p) {
+    const auto& [t, value] = table[p];
+    bool finiteValue = true;
+    if constexpr (std::is_same_v<Value, double>) {
+      finiteValue = std::isfinite(value);
+    } else {
+      finiteValue = value.allFinite();
+    }
+    if (!std::isfinite(t) || !finiteValue) {
+      throw DictionaryError(at, "'" + key + "' of body '" + name + "': point " + std::to_string(p) +
+                                    " is not finite");
+    }
+    if (p > 0 && !(t > std::get<0>(table[p - 1]))) {
+      throw DictionaryError(at, "'" + key + "' of body '" + name +
+                                    "': the times must rise; point " + std::to_string(p) +
+                                    " (t = " + std::to_string(t) + " s) does not follow point " +
+                                    std::to_string(p - 1));
+    }
+  }
+}
+
 RigidBodySettings readBody(const Dictionary& body, const std::string& name) {
   body.checkKeys({"cloud", "motion", "mass", "density", "centreOfMass", "momentOfInertia",
                   "translation", "rotation", "releaseTime", "endStop", "appliedForce",
-                  "displacement"});
+                  "appliedPressure", "pressedArea", "pressDirection", "displacement"});
   RigidBodySettings settings;
   settings.name = name;
   settings.cloud = body.getOrDefault<std::string>("cloud", name);
@@ -67,7 +99,8 @@ RigidBodySettings readBody(const Dictionary& body, const std::string& name) {
   }
   if (prescribed) {
     for (const char* dynamicOnly :
-         {"translation", "rotation", "releaseTime", "endStop", "appliedForce"}) {
+         {"translation", "rotation", "releaseTime", "endStop", "appliedForce", "appliedPressure",
+          "pressedArea", "pressDirection"}) {
       if (body.found(dynamicOnly)) {
         throw DictionaryError(body.location(dynamicOnly),
                               std::string("'") + dynamicOnly + "' of body '" + name +
@@ -76,24 +109,7 @@ RigidBodySettings readBody(const Dictionary& body, const std::string& name) {
       }
     }
     settings.displacement = body.get<std::vector<std::tuple<double, Vector>>>("displacement");
-    const SourceLocation at = body.location("displacement");
-    if (settings.displacement.empty()) {
-      throw DictionaryError(at, "'displacement' of body '" + name + "' is an empty table");
-    }
-    for (std::size_t p = 0; p < settings.displacement.size(); ++p) {
-      const auto& [t, d] = settings.displacement[p];
-      if (!std::isfinite(t) || !finite(d)) {
-        throw DictionaryError(at, "'displacement' of body '" + name + "': point " +
-                                      std::to_string(p) + " is not finite");
-      }
-      if (p > 0 && !(t > std::get<0>(settings.displacement[p - 1]))) {
-        throw DictionaryError(at, "'displacement' of body '" + name +
-                                      "': the times must rise; "
-                                      "point " +
-                                      std::to_string(p) + " (t = " + std::to_string(t) +
-                                      " s) does not follow point " + std::to_string(p - 1));
-      }
-    }
+    checkTable(settings.displacement, body.location("displacement"), "displacement", name);
     return settings;
   }
   if (body.found("displacement")) {
@@ -137,11 +153,63 @@ RigidBodySettings readBody(const Dictionary& body, const std::string& name) {
     }
     settings.endStop = stop;
   }
-  if (body.found("appliedForce")) {
-    settings.appliedForce = body.get<Vector>("appliedForce", forceUnit);
+  if (body.found("appliedForce")) {  // (Fx Fy Fz), or a table ((t (Fx Fy Fz)) ...)
+    const SourceLocation at = body.location("appliedForce");
+    try {
+      settings.appliedForce = body.get<Vector>("appliedForce", forceUnit);
+    } catch (const DictionaryError&) {
+      try {
+        settings.appliedForceTable =
+            body.get<std::vector<std::tuple<double, Vector>>>("appliedForce");
+      } catch (const DictionaryError&) {
+        throw DictionaryError(at, "'appliedForce' of body '" + name +
+                                      "' must be a force (Fx Fy Fz) in N, or a table of them "
+                                      "against time ((t0 (Fx Fy Fz)) (t1 (Fx Fy Fz)) ...)");
+      }
+      checkTable(settings.appliedForceTable, at, "appliedForce", name);
+    }
     if (!finite(settings.appliedForce)) {
-      throw DictionaryError(body.location("appliedForce"),
-                            "'appliedForce' of body '" + name + "' is not finite");
+      throw DictionaryError(at, "'appliedForce' of body '" + name + "' is not finite");
+    }
+  }
+  if (body.found("appliedPressure")) {  // p, or a table ((t p) ...), on pressedArea
+    const SourceLocation at = body.location("appliedPressure");
+    try {
+      settings.appliedPressure = {{0.0, body.get<double>("appliedPressure")}};
+    } catch (const DictionaryError&) {
+      try {
+        settings.appliedPressure =
+            body.get<std::vector<std::tuple<double, double>>>("appliedPressure");
+      } catch (const DictionaryError&) {
+        throw DictionaryError(at, "'appliedPressure' of body '" + name +
+                                      "' must be a pressure in Pa, or a table of them against "
+                                      "time ((t0 p0) (t1 p1) ...)");
+      }
+    }
+    checkTable(settings.appliedPressure, at, "appliedPressure", name);
+    if (!body.found("pressedArea") || !body.found("pressDirection")) {
+      throw DictionaryError(at, "'appliedPressure' of body '" + name +
+                                    "' acts on 'pressedArea' (m^2) along 'pressDirection' (the "
+                                    "direction it pushes the body): give both");
+    }
+    settings.pressedArea = body.get<double>("pressedArea", areaUnit);
+    if (!(settings.pressedArea > 0) || !std::isfinite(settings.pressedArea)) {
+      throw DictionaryError(body.location("pressedArea"),
+                            "'pressedArea' of body '" + name + "' must be a positive area (m^2)");
+    }
+    const Vector direction = body.get<Vector>("pressDirection");
+    if (!finite(direction) || !(direction.norm() > 0)) {
+      throw DictionaryError(body.location("pressDirection"),
+                            "'pressDirection' of body '" + name + "' must be a non-zero vector");
+    }
+    settings.pressDirection = direction.normalized();
+  } else {
+    for (const char* pressOnly : {"pressedArea", "pressDirection"}) {
+      if (body.found(pressOnly)) {
+        throw DictionaryError(
+            body.location(pressOnly),
+            std::string("'") + pressOnly + "' of body '" + name + "' is for 'appliedPressure'");
+      }
     }
   }
   return settings;

@@ -22,8 +22,14 @@ namespace sphcast {
 //       rotation        locked;          // free | locked
 //       releaseTime     0.2;             // s, optional: held where it is until then
 //       endStop         (0 0 -0.01875);  // optional: the centre's travel at which it stops
-//       appliedForce    (0 0 -50);       // N, optional: a press cylinder's
+//       appliedForce    (0 0 -50);       // N, optional: a press cylinder's; or against time,
+//                                        // ((0 (0 0 0)) (0.1 (0 0 -500)))
+//       appliedPressure ((0 0) (0.2 1e7)); // Pa, optional: a press's curve (or a constant),
+//       pressedArea     0.0195;          //   m^2, on this area
+//       pressDirection  (0 0 -1);        //   the way it pushes the body
 //   }
+// The loads' tables are linear between their points and held at their ends; the force and the
+// pressure's force add up.
 //   punch
 //   {
 //       motion          prescribed;      // dynamic (the default) | prescribed

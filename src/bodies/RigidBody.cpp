@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <limits>
+#include <type_traits>
 #include <vector>
 
 #include <Eigen/Eigenvalues>
@@ -38,7 +39,7 @@ RigidBody::RigidBody(RigidBodySettings settings, ParticleCloud& cloud, const Vec
   computeMassProperties();
   centre_ = startCentre_;
   // until the first loads (setLoadsAndKick with dt 0 at the start): gravity and the press
-  force_ = static_cast<Real>(mass_) * gravity_ + settings_.appliedForce;
+  force_ = static_cast<Real>(mass_) * gravity_ + settings_.appliedForceAt(0);
   // a driven body's acceleration is the table's: zero between its points
   if (!settings_.prescribed()) acceleration_ = constrained(force_ / static_cast<Real>(mass_));
 }
@@ -130,17 +131,40 @@ Vector RigidBody::constrained(const Vector& linear) const {
   return Vector::Zero();
 }
 
-Vector RigidBody::prescribedDisplacement(double time) const {
-  const auto& table = settings_.displacement;
+namespace {
+
+// A table's value at `time`: linear between its points, held at its ends.
+template <class Value>
+Value tableAt(const std::vector<std::tuple<double, Value>>& table, double time) {
   if (time <= std::get<0>(table.front())) return std::get<1>(table.front());
   if (time >= std::get<0>(table.back())) return std::get<1>(table.back());
   const auto after = std::upper_bound(
       table.begin(), table.end(), time,
-      [](double t, const std::tuple<double, Vector>& point) { return t < std::get<0>(point); });
+      [](double t, const std::tuple<double, Value>& point) { return t < std::get<0>(point); });
   const auto before = after - 1;
   const double t0 = std::get<0>(*before), t1 = std::get<0>(*after);
-  const Real weight = static_cast<Real>((time - t0) / (t1 - t0));
-  return (1 - weight) * std::get<1>(*before) + weight * std::get<1>(*after);
+  const double weight = (time - t0) / (t1 - t0);
+  if constexpr (std::is_same_v<Value, double>) {
+    return (1 - weight) * std::get<1>(*before) + weight * std::get<1>(*after);
+  } else {
+    const Real w = static_cast<Real>(weight);
+    return (1 - w) * std::get<1>(*before) + w * std::get<1>(*after);
+  }
+}
+
+}  // namespace
+
+Vector RigidBodySettings::appliedForceAt(double time) const {
+  Vector force = appliedForce;
+  if (!appliedForceTable.empty()) force += tableAt(appliedForceTable, time);
+  if (!appliedPressure.empty()) {
+    force += static_cast<Real>(tableAt(appliedPressure, time) * pressedArea) * pressDirection;
+  }
+  return force;
+}
+
+Vector RigidBody::prescribedDisplacement(double time) const {
+  return tableAt(settings_.displacement, time);
 }
 
 // x_k = x0_k + d + (R - I) r_k: with R = I exactly (no rotation) a particle moves by d alone,
@@ -246,7 +270,7 @@ void RigidBody::setLoadsAndKick(const Vector& fluidForce, const Vector& fluidTor
                                 double time) {
   const Real dt = static_cast<Real>(deltaT);
   fluidForce_ = fluidForce;
-  force_ = fluidForce + static_cast<Real>(mass_) * gravity_ + settings_.appliedForce;
+  force_ = fluidForce + static_cast<Real>(mass_) * gravity_ + settings_.appliedForceAt(time);
   torque_ = fluidTorque - centre_.cross(fluidForce);  // gravity and the applied force: at c
   if (settings_.prescribed()) {
     updateParticleVelocities(false);

@@ -49,7 +49,15 @@ struct RigidBodySettings {
   // it leaves when they pull it back).
   std::optional<Vector> endStop;
 
-  Vector appliedForce = Vector::Zero();  // N, at the centre (a press cylinder)
+  // A press's load at the centre: a constant force, a force against time (N, linear between the
+  // table's points, held at its ends), and a pressure against time (Pa) on pressedArea along
+  // pressDirection (a press's curve), together.
+  Vector appliedForce = Vector::Zero();
+  std::vector<std::tuple<double, Vector>> appliedForceTable;
+  std::vector<std::tuple<double, double>> appliedPressure;
+  double pressedArea = 0;                    // m^2
+  Vector pressDirection = -Vector::UnitZ();  // unit
+  Vector appliedForceAt(double time) const;  // N: the three together at `time`
 };
 
 // A mold cloud moving as one rigid body, the other half of the flow's moving walls

@@ -40,6 +40,18 @@ void logBody(const RigidBody& body, const RigidBodySettings& settings, const Par
   if (!settings.appliedForce.isZero(0)) {
     info() << ", applied force (" << settings.appliedForce.transpose().format(plain) << ") N";
   }
+  if (!settings.appliedForceTable.empty()) {
+    const auto& [t1, last] = settings.appliedForceTable.back();
+    info() << ", applied force against time (" << settings.appliedForceTable.size() << " points, ("
+           << last.transpose().format(plain) << ") N from t = " << t1 << " s)";
+  }
+  if (!settings.appliedPressure.empty()) {
+    const auto& [t1, last] = settings.appliedPressure.back();
+    info() << ", pressed at " << last << " Pa from t = " << t1 << " s ("
+           << settings.appliedPressure.size() << " points) on " << settings.pressedArea
+           << " m^2 along (" << settings.pressDirection.transpose().format(plain)
+           << "): " << last * settings.pressedArea << " N";
+  }
   info() << '\n';
 }
 

@@ -8,9 +8,13 @@
 #include <sstream>
 
 #include "BodyTestCases.h"
+#include "bodies/BodySetup.h"
 #include "bodies/RigidBody.h"
+#include "case/CaseDescription.h"
+#include "core/Error.h"
 #include "core/dictionary/Dictionary.h"
 #include "particles/FieldNames.h"
+#include "support/TemporaryCase.h"
 
 namespace sphcast {
 namespace {
@@ -163,6 +167,90 @@ TEST(RigidBody, PrescribedDisplacementIsFollowedAndItsSlopeIsTheVelocity) {
   stepWithoutFluid(body, 0.004, 40, time);  // 0.2 s: at rest at the table's end
   EXPECT_NEAR(body.displacement().z(), -0.01, 1e-15);
   EXPECT_NEAR(body.velocity().z(), 0, 1e-12);
+}
+
+// A press's curve: a force ramped from 0 to 1 mN over 0.1 s and held, and the same as a pressure
+// of 0 to 100 Pa on 10 mm^2: the kick-drift-kick integrates a force linear in time exactly in
+// the velocity (v = -F1 (0.05 + (t - 0.1)) / m at t > 0.1 s, to round-off), and its travel to
+// second order in dt (within 1e-3 of the exact cubic-then-parabolic path at dt = 1 ms); the two
+// forms give the same motion, and a constant force adds to a table.
+TEST(RigidBody, APressCurveMovesTheBodyByItsImpulse) {
+  const double force = 1e-3, ramp = 0.1, dt = 1e-3;
+  RigidBodySettings byForce = densityBody();
+  byForce.translation = RigidBodySettings::Translation::axis;
+  byForce.appliedForceTable = {{0.0, Vector::Zero()}, {ramp, Vector(0, 0, -force)}};
+  RigidBodySettings byPressure = densityBody();
+  byPressure.translation = RigidBodySettings::Translation::axis;
+  byPressure.appliedPressure = {{0.0, 0.0}, {ramp, 100.0}};
+  byPressure.pressedArea = 1e-5;
+  byPressure.pressDirection = Vector(0, 0, -1);
+  auto first = testing::boxBody(4, 4, 4, dx, Vector::Zero(), false);
+  auto second = testing::boxBody(4, 4, 4, dx, Vector::Zero(), false);
+  RigidBody pressed(byForce, first, Vector::Zero());
+  RigidBody pushed(byPressure, second, Vector::Zero());
+  double t1 = 0, t2 = 0;
+  stepWithoutFluid(pressed, dt, 250, t1);
+  stepWithoutFluid(pushed, dt, 250, t2);
+  const double m = pressed.mass(), t = t1;
+  const double v = -force * (ramp / 2 + (t - ramp)) / m;
+  const double x = -force * ramp * ramp / (6 * m) - force * ramp / (2 * m) * (t - ramp) -
+                   force * (t - ramp) * (t - ramp) / (2 * m);
+  EXPECT_NEAR(pressed.velocity().z(), v, 1e-9 * std::abs(v));
+  EXPECT_NEAR(pressed.displacement().z(), x, 1e-3 * std::abs(x));
+  EXPECT_NEAR(pushed.velocity().z(), pressed.velocity().z(), 1e-12 * std::abs(v));
+  EXPECT_NEAR(pushed.displacement().z(), pressed.displacement().z(), 1e-12 * std::abs(x));
+  RigidBodySettings both = byForce;
+  both.appliedForce = Vector(0, 0, -force);
+  EXPECT_LT((both.appliedForceAt(0.05) - Vector(0, 0, -1.5 * force)).norm(), 1e-15);
+  EXPECT_LT((both.appliedForceAt(7) - Vector(0, 0, -2 * force)).norm(), 1e-15);
+  EXPECT_LT((byPressure.appliedForceAt(-1)).norm(), 1e-15);  // held at the table's ends
+}
+
+// constant/dynamicBodies' loads as a press specifies them, and their mistakes at their lines.
+TEST(RigidBody, LoadCurvesAreReadAndTheirMistakesNamed) {
+  const testing::TemporaryCase folder;
+  auto read = [&](const std::string& body) {
+    folder.write("constant/dynamicBodies", "punch\n{\n" + body + "}\n");
+    return readBodySetup(CaseDescription(CaseFolder(folder.root())));
+  };
+  auto error = [&](const std::string& body) -> std::string {
+    try {
+      read(body);
+    } catch (const Error& e) {
+      return e.what();
+    }
+    return "";
+  };
+  const BodySetup setup = read(
+      "density 7850;\nappliedForce ((0 (0 0 0)) (0.1 (0 0 -500)));\n"
+      "appliedPressure ((0 0) (0.2 1e7));\npressedArea 0.0195;\npressDirection (0 0 -2);\n");
+  ASSERT_EQ(setup.bodies.size(), 1u);
+  const RigidBodySettings& punch = setup.bodies[0];
+  ASSERT_EQ(punch.appliedForceTable.size(), 2u);
+  ASSERT_EQ(punch.appliedPressure.size(), 2u);
+  EXPECT_DOUBLE_EQ(punch.pressedArea, 0.0195);
+  EXPECT_LT((punch.pressDirection - Vector(0, 0, -1)).norm(), 1e-15);
+  EXPECT_NEAR(punch.appliedForceAt(0.2).z(), -500 - 1e7 * 0.0195, 1e-6);
+  EXPECT_EQ(read("density 7850;\nappliedPressure 2e6;\npressedArea 0.01;\n"
+                 "pressDirection (0 0 -1);\n")
+                .bodies[0]
+                .appliedForceAt(3)
+                .z(),
+            Real(-2e4));
+  const std::string noArea = error("density 7850;\nappliedPressure 1e6;\n");
+  EXPECT_NE(noArea.find("dynamicBodies:4"), std::string::npos) << noArea;
+  EXPECT_NE(noArea.find("pressedArea"), std::string::npos) << noArea;
+  const std::string falling =
+      error("density 7850;\nappliedForce ((0 (0 0 0)) (0.2 (0 0 -1)) (0.1 (0 0 -2)));\n");
+  EXPECT_NE(falling.find("dynamicBodies:4"), std::string::npos) << falling;
+  EXPECT_NE(falling.find("the times must rise"), std::string::npos) << falling;
+  const std::string form = error("density 7850;\nappliedForce (0 0);\n");
+  EXPECT_NE(form.find("((t0 (Fx Fy Fz))"), std::string::npos) << form;
+  const std::string stray = error("density 7850;\npressedArea 0.01;\n");
+  EXPECT_NE(stray.find("is for 'appliedPressure'"), std::string::npos) << stray;
+  const std::string zeroArea =
+      error("density 7850;\nappliedPressure 1e6;\npressedArea 0;\npressDirection (0 0 -1);\n");
+  EXPECT_NE(zeroArea.find("positive area"), std::string::npos) << zeroArea;
 }
 
 TEST(RigidBody, TorqueFreeSpinConservesAngularMomentumAndTurnsTheParticles) {
