@@ -108,15 +108,26 @@ ReportSection BodyMotion::finish() {
   std::ostringstream csv;
   csv.precision(10);
   csv << "time,travelX,travelY,travelZ,velocityX,velocityY,velocityZ,fluidForceX,fluidForceY,"
-         "fluidForceZ,forceX,forceY,forceZ,atEndStop,travel,velocity,fluidForce\n";
+         "fluidForceZ,forceX,forceY,forceZ,atEndStop,travel,velocity,fluidForce,appliedForce\n";
   double stopTime = -1, largestForce = 0, largestForceTime = 0;
+  double largestLoad = 0, largestLoadTime = 0;  // the press's (histories since issue #53)
   for (const auto& row : rows) {
     if (row.size() < 14) continue;
     const Vector travel(row[1], row[2], row[3]), velocity(row[4], row[5], row[6]),
         fluidForce(row[7], row[8], row[9]);
     for (std::size_t c = 0; c < 14; ++c) csv << (c ? "," : "") << row[c];
     csv << ',' << travel.dot(direction) << ',' << velocity.dot(direction) << ','
-        << fluidForce.dot(direction) << '\n';
+        << fluidForce.dot(direction) << ',';
+    if (row.size() >= 17) {
+      const Vector applied(row[14], row[15], row[16]);
+      csv << applied.dot(direction) << '\n';
+      if (applied.norm() > largestLoad) {
+        largestLoad = applied.norm();
+        largestLoadTime = row[0];
+      }
+    } else {
+      csv << "nan\n";
+    }
     if (row[13] != 0 && stopTime < 0) stopTime = row[0];
     if (fluidForce.norm() > largestForce) {
       largestForce = fluidForce.norm();
@@ -137,6 +148,10 @@ ReportSection BodyMotion::finish() {
              file,
              {{17, "force of the metal"}},
              {}};
+  if (largestLoad > 0) {
+    force.title = "body " + body_ + ": the metal's force and the press's load along its travel";
+    force.series.push_back({18, "the press's load"});
+  }
   const std::string travelPng = name_ + "/" + body_ + "Travel.png";
   const std::string forcePng = name_ + "/" + body_ + "Force.png";
   std::ostringstream text;
@@ -149,7 +164,12 @@ ReportSection BodyMotion::finish() {
     text << ", never at an end stop";
   }
   text << "; the largest force of the metal " << largestForce << " N at t = " << largestForceTime
-       << " s (" << name_ << "/" << body_ << ".csv).\n";
+       << " s";
+  if (largestLoad > 0) {
+    text << "; the press's largest load " << largestLoad << " N at t = " << largestLoadTime
+         << " s, " << Vector(last[14], last[15], last[16]).norm() << " N at the end";
+  }
+  text << " (" << name_ << "/" << body_ << ".csv).\n";
   if (gap_) text << '\n' << gapReport(rows, direction);
   section.markdown = text.str();
   if (drawPlot(travel, context_.caseRoot / "postProcessing" / travelPng)) {

@@ -15,9 +15,11 @@ namespace sphcast {
 //   press { type bodyMotion; body upperMold; }
 //
 // Writes postProcessing/<name>/<body>.csv (time, travel x y z, velocity x y z, the metal's force
-// x y z, the total force x y z, at the end stop) and two plots: the travel and the velocity
-// along the body's main direction of travel, and the metal's force along it. The report gives
-// the final travel, when the body first reached its end stop, and the largest force.
+// x y z, the total force x y z, at the end stop, then along the travel: travel, velocity, the
+// metal's force, the press's load) and two plots: the travel and the velocity along the body's
+// main direction of travel, and the metal's force along it (with the press's load where it has
+// one). The report gives the final travel, when the body first reached its end stop, the largest
+// force, and the press's largest and final load.
 //
 // With `gap`, a press's casting under a flat punch, at the last time selected:
 //

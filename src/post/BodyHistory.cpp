@@ -35,14 +35,15 @@ void BodyHistory::sample(double time) {
     std::ofstream& file = openOutput(
         body->settings().name + ".dat",
         "# time displacement(x y z) m  velocity(x y z) m/s  fluidForce(x y z) N  force(x y z) N  "
-        "atEndStop\n");
-    char row[512];
+        "atEndStop  appliedForce(x y z) N\n");
+    char row[640];
     const Vector d = body->displacement(), v = body->velocity(), f = body->fluidForce(),
-                 total = body->force();
+                 total = body->force(), applied = body->settings().appliedForceAt(time);
     std::snprintf(row, sizeof row,
-                  "%.10g %.10g %.10g  %.10g %.10g %.10g  %.10g %.10g %.10g  %.10g %.10g %.10g  %d",
+                  "%.10g %.10g %.10g  %.10g %.10g %.10g  %.10g %.10g %.10g  %.10g %.10g %.10g  %d  "
+                  "%.10g %.10g %.10g",
                   d[0], d[1], d[2], v[0], v[1], v[2], f[0], f[1], f[2], total[0], total[1],
-                  total[2], body->atEndStop() ? 1 : 0);
+                  total[2], body->atEndStop() ? 1 : 0, applied[0], applied[1], applied[2]);
     writeRow(file, time, row);
   }
 }

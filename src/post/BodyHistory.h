@@ -13,7 +13,7 @@ class RigidBody;
 // body, postProcessing/<name>/<startTime>/<body>.dat, a row per sample:
 //
 //   time  displacement(x y z) m  velocity(x y z) m/s  fluidForce(x y z) N  force(x y z) N
-//   atEndStop (1 or 0)
+//   atEndStop (1 or 0)  appliedForce(x y z) N (the press's: appliedForce and appliedPressure)
 //
 // sphCastFoam adds one named dynamicBodies to every run with bodies, every step (castPostProcess's
 // bodyMotion reads it); `dynamicBodies { type bodyHistory; bodies (punch); }` in controlDict's

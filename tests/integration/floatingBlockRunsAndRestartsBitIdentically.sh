@@ -4,8 +4,9 @@
 # 0.02 s, sliding along z; it falls into the water and floats. Its state is in every time
 # folder's uniform/dynamicBodies, its history in postProcessing/dynamicBodies, and a run stopped
 # at 0.1 s and restarted writes the uninterrupted run's 0.15 and 0.2 byte for byte (block.vtp and
-# the body's state too). castPostProcess's bodyMotion reports it. Errors in constant/dynamicBodies
-# name the file, the line and the key.
+# the body's state too). castPostProcess's bodyMotion reports it. Pressed by a press's curve
+# (appliedPressure against time) it logs and reports the load and floats deeper. Errors in
+# constant/dynamicBodies name the file, the line and the key.
 . "$SPHCAST_TEST_TOOLS"
 coarseWaterTank "$scratch/whole"  # dx = 10 mm: 500 water particles, the water's surface at 0.05
 cat > constant/geometry/block.geo <<'GEO'
@@ -30,6 +31,7 @@ particleizeMold > log.particleizeMold 2>&1 || fail "particleizeMold: $(tail -5 l
 setCastFields > log.setCastFields 2>&1 || fail "setCastFields: $(tail -5 log.setCastFields)"
 cp -r "$scratch/whole" "$scratch/stopped"
 cp -r "$scratch/whole" "$scratch/bad"
+cp -r "$scratch/whole" "$scratch/pressed"
 
 sphCastFoam > log.sphCastFoam 2>&1 || fail "sphCastFoam: $(tail -5 log.sphCastFoam)"
 expectTimeStepping log.sphCastFoam
@@ -87,6 +89,25 @@ sphCastFoam > log.2 2>&1 || fail "restart: $(tail -5 log.2)"
 for t in 0.15 0.2; do
     sameTimeFolder "$scratch/whole/$t" "$t" || fail "time $t differs from the uninterrupted run"
 done
+
+# a press's curve on the block: 0 to 50 Pa on its 16 cm^2 top from 0.05 to 0.1 s, then held
+# (0.08 N, half its weight): logged with the run (the history's load the curve's within 1e-9 N,
+# its times printed to 10 digits), reported, and it floats deeper
+cd "$scratch/pressed"
+sed -i 's/^ *releaseTime *0.02;/&\n    appliedPressure ((0.05 0) (0.1 50));\n    pressedArea 0.0016;\n    pressDirection (0 0 -1);/' constant/dynamicBodies
+sphCastFoam > log.sphCastFoam 2>&1 || fail "pressed: $(tail -5 log.sphCastFoam)"
+grep -q "pressed at 50 Pa from t = 0.1 s (2 points) on 0.0016 m^2 along (0 0 -1): 0.08 N" log.sphCastFoam ||
+    fail "the log does not state the press's curve: $(grep -m1 '^Body' log.sphCastFoam)"
+awk '!/^#/ { load = -$17; exact = $1 <= 0.05 ? 0 : $1 >= 0.1 ? 0.08 : 0.08 * ($1 - 0.05) / 0.05
+             d = load - exact; if (d < 0) d = -d; if (d > 1e-9) bad = 1 } END { exit bad }' \
+    postProcessing/dynamicBodies/0/block.dat || fail "the history's applied load is not the curve's"
+cp ../whole/system/castPostProcessDict system/
+castPostProcess > log.castPostProcess 2>&1 || fail "pressed castPostProcess: $(tail -5 log.castPostProcess)"
+grep -q "the press's largest load 0.08 N at t = 0.1.* s, 0.08 N at the end" postProcessing/castReport.md ||
+    fail "no press's load in the report: $(grep -m1 Body postProcessing/castReport.md)"
+freeLast=$(awk '!/^#/ { z = $4 } END { print z }' ../whole/postProcessing/dynamicBodies/0/block.dat)
+awk -v free="$freeLast" '!/^#/ { z = $4 } END { printf "pressed block at %.4f m, free %.4f m\n", z, free; exit !(z < free - 0.002) }' \
+    postProcessing/dynamicBodies/0/block.dat || fail "the pressed block does not float deeper"
 
 cd "$scratch/bad"
 sed -i 's/^block$/blocks/' constant/dynamicBodies
