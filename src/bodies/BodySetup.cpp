@@ -19,6 +19,7 @@ const Dimensions inertiaUnit{{1, 2, 0, 0, 0, 0, 0}};
 const Dimensions time{{0, 0, 1, 0, 0, 0, 0}};
 const Dimensions forceUnit{{1, 1, -2, 0, 0, 0, 0}};
 const Dimensions areaUnit{{0, 2, 0, 0, 0, 0, 0}};
+const Dimensions pressureUnit{{1, -1, -2, 0, 0, 0, 0}};
 
 bool finite(const Vector& v) { return v.allFinite(); }
 
@@ -59,6 +60,27 @@ void checkTable(const std::vector<std::tuple<double, Value>>& table, const Sourc
                                     std::to_string(p - 1));
     }
   }
+}
+
+// A load: a constant (a table of one point) or a table against time, checked; an error at the
+// key saying `form` where it is neither.
+template <class Value>
+std::vector<std::tuple<double, Value>> readLoad(const Dictionary& body, const std::string& key,
+                                                const std::string& name, const Dimensions& unit,
+                                                const std::string& form) {
+  const SourceLocation at = body.location(key);
+  std::vector<std::tuple<double, Value>> table;
+  try {
+    table = {{0.0, body.get<Value>(key, unit)}};
+  } catch (const DictionaryError&) {
+    try {
+      table = body.get<std::vector<std::tuple<double, Value>>>(key);
+    } catch (const DictionaryError&) {
+      throw DictionaryError(at, "'" + key + "' of body '" + name + "' must be " + form);
+    }
+  }
+  checkTable(table, at, key, name);
+  return table;
 }
 
 RigidBodySettings readBody(const Dictionary& body, const std::string& name) {
@@ -153,40 +175,16 @@ RigidBodySettings readBody(const Dictionary& body, const std::string& name) {
     }
     settings.endStop = stop;
   }
-  if (body.found("appliedForce")) {  // (Fx Fy Fz), or a table ((t (Fx Fy Fz)) ...)
-    const SourceLocation at = body.location("appliedForce");
-    try {
-      settings.appliedForce = body.get<Vector>("appliedForce", forceUnit);
-    } catch (const DictionaryError&) {
-      try {
-        settings.appliedForceTable =
-            body.get<std::vector<std::tuple<double, Vector>>>("appliedForce");
-      } catch (const DictionaryError&) {
-        throw DictionaryError(at, "'appliedForce' of body '" + name +
-                                      "' must be a force (Fx Fy Fz) in N, or a table of them "
-                                      "against time ((t0 (Fx Fy Fz)) (t1 (Fx Fy Fz)) ...)");
-      }
-      checkTable(settings.appliedForceTable, at, "appliedForce", name);
-    }
-    if (!finite(settings.appliedForce)) {
-      throw DictionaryError(at, "'appliedForce' of body '" + name + "' is not finite");
-    }
+  if (body.found("appliedForce")) {
+    settings.appliedForce = readLoad<Vector>(
+        body, "appliedForce", name, forceUnit,
+        "a force (Fx Fy Fz) in N, or a table of them against time ((t0 (Fx Fy Fz)) ...)");
   }
-  if (body.found("appliedPressure")) {  // p, or a table ((t p) ...), on pressedArea
+  if (body.found("appliedPressure")) {
     const SourceLocation at = body.location("appliedPressure");
-    try {
-      settings.appliedPressure = {{0.0, body.get<double>("appliedPressure")}};
-    } catch (const DictionaryError&) {
-      try {
-        settings.appliedPressure =
-            body.get<std::vector<std::tuple<double, double>>>("appliedPressure");
-      } catch (const DictionaryError&) {
-        throw DictionaryError(at, "'appliedPressure' of body '" + name +
-                                      "' must be a pressure in Pa, or a table of them against "
-                                      "time ((t0 p0) (t1 p1) ...)");
-      }
-    }
-    checkTable(settings.appliedPressure, at, "appliedPressure", name);
+    settings.appliedPressure =
+        readLoad<double>(body, "appliedPressure", name, pressureUnit,
+                         "a pressure in Pa, or a table of them against time ((t0 p0) (t1 p1) ...)");
     if (!body.found("pressedArea") || !body.found("pressDirection")) {
       throw DictionaryError(at, "'appliedPressure' of body '" + name +
                                     "' acts on 'pressedArea' (m^2) along 'pressDirection' (the "

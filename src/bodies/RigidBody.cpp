@@ -155,8 +155,8 @@ Value tableAt(const std::vector<std::tuple<double, Value>>& table, double time) 
 }  // namespace
 
 Vector RigidBodySettings::appliedForceAt(double time) const {
-  Vector force = appliedForce;
-  if (!appliedForceTable.empty()) force += tableAt(appliedForceTable, time);
+  Vector force = Vector::Zero();
+  if (!appliedForce.empty()) force += tableAt(appliedForce, time);
   if (!appliedPressure.empty()) {
     force += static_cast<Real>(tableAt(appliedPressure, time) * pressedArea) * pressDirection;
   }

@@ -49,11 +49,10 @@ struct RigidBodySettings {
   // it leaves when they pull it back).
   std::optional<Vector> endStop;
 
-  // A press's load at the centre: a constant force, a force against time (N, linear between the
-  // table's points, held at its ends), and a pressure against time (Pa) on pressedArea along
-  // pressDirection (a press's curve), together.
-  Vector appliedForce = Vector::Zero();
-  std::vector<std::tuple<double, Vector>> appliedForceTable;
+  // A press's load at the centre: a force against time (N), and a pressure against time (Pa)
+  // on pressedArea along pressDirection (a press's curve), together; each table linear between
+  // its points and held at its ends (one point: a constant).
+  std::vector<std::tuple<double, Vector>> appliedForce;
   std::vector<std::tuple<double, double>> appliedPressure;
   double pressedArea = 0;                    // m^2
   Vector pressDirection = -Vector::UnitZ();  // unit

@@ -121,6 +121,33 @@ std::string formatNumber(double value, int digits) {
   return text;
 }
 
+bool CastAnalysis::readRange(double& low, double& high) const {
+  if (!dict_.found("range")) return false;
+  const auto range = dict_.get<std::vector<double>>("range");
+  if (range.size() != 2 || !(range[0] < range[1])) {
+    throw DictionaryError(dict_.location("range"),
+                          "'range' of " + dict_.name() + " must be (low high), low < high");
+  }
+  low = range[0];
+  high = range[1];
+  return true;
+}
+
+std::vector<std::size_t> CastAnalysis::shownPictures(const std::vector<double>& drawnTimes,
+                                                     const std::vector<double>& show) {
+  std::vector<std::size_t> shown;
+  for (const double wanted : show) {
+    std::size_t nearest = 0;
+    for (std::size_t k = 1; k < drawnTimes.size(); ++k) {
+      if (std::abs(drawnTimes[k] - wanted) < std::abs(drawnTimes[nearest] - wanted)) nearest = k;
+    }
+    if (std::find(shown.begin(), shown.end(), nearest) == shown.end()) shown.push_back(nearest);
+  }
+  std::erase(shown, drawnTimes.size() - 1);
+  shown.push_back(drawnTimes.size() - 1);
+  return shown;
+}
+
 std::string fieldUnit(const std::string& field) {
   if (field == field::T) return " (K)";
   if (field.ends_with("Time")) return " (s)";

@@ -89,6 +89,13 @@ class CastAnalysis {
   std::vector<std::string> cloudsAt(const WrittenTime& time) const;
   // The clouds of constant/particles (the molds particleizeMold wrote), sorted.
   std::vector<std::string> constantCloudNames() const;
+  // The entry's `range (low high)` of a picture's colours: false without one; an error at the
+  // key unless low < high.
+  bool readRange(double& low, double& high) const;
+  // The pictures a report shows of those drawn at `drawnTimes` (ascending, not empty): the one
+  // nearest each time of `show`, once each, then the last.
+  static std::vector<std::size_t> shownPictures(const std::vector<double>& drawnTimes,
+                                                const std::vector<double>& show);
 
   std::string name_;
   std::string type_;

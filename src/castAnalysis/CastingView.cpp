@@ -65,16 +65,7 @@ CastingView::CastingView(const std::string& name, const Dictionary& dict,
   }
   cloud_ = readCloud();
   field_ = dict.get<std::string>("field");
-  if (dict.found("range")) {
-    const auto range = dict.get<std::vector<double>>("range");
-    if (range.size() != 2 || !(range[0] < range[1])) {
-      throw DictionaryError(dict.location("range"),
-                            "'range' of " + dict.name() + " must be (low high), low < high");
-    }
-    fixedRange_ = true;
-    low_ = range[0];
-    high_ = range[1];
-  }
+  fixedRange_ = readRange(low_, high_);
   if (dict.found("clip")) {
     const auto clip = dict.get<std::vector<Vector>>("clip");
     if (clip.size() != 2 || !(clip[1].norm() > 0)) {
@@ -450,17 +441,9 @@ ReportSection CastingView::finish() {
     warning("view " + name_ + ": no X display, not drawn (run castPostProcess under xvfb-run -a)");
     return section;
   }
-  std::vector<std::size_t> shown;
-  for (const double wanted : show_) {
-    std::size_t nearest = 0;
-    for (std::size_t k = 1; k < frames_.size(); ++k) {
-      if (std::abs(frames_[k].time - wanted) < std::abs(frames_[nearest].time - wanted))
-        nearest = k;
-    }
-    if (std::find(shown.begin(), shown.end(), nearest) == shown.end()) shown.push_back(nearest);
-  }
-  std::erase(shown, frames_.size() - 1);
-  shown.push_back(frames_.size() - 1);
+  std::vector<double> times;
+  for (const Frame& frame : frames_) times.push_back(frame.time);
+  const std::vector<std::size_t> shown = shownPictures(times, show_);
   for (const std::size_t k : shown) section.images.push_back(drawn_[k]);
   if (allTimes_ && frames_.size() > 1) {
     section.markdown += "\nEvery written time: " + name_ + "/<time>/" + field_ + ".png; ";

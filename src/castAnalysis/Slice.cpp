@@ -89,16 +89,7 @@ Slice::Slice(const std::string& name, const Dictionary& dict, const AnalysisCont
                           "'thickness' must be positive in " + dict.name());
   }
   field_ = dict.get<std::string>("field");
-  if (dict.found("range")) {
-    const auto range = dict.get<std::vector<double>>("range");
-    if (range.size() != 2 || !(range[0] < range[1])) {
-      throw DictionaryError(dict.location("range"),
-                            "'range' of " + dict.name() + " must be (low high), low < high");
-    }
-    fixedRange_ = true;
-    low_ = range[0];
-    high_ = range[1];
-  }
+  fixedRange_ = readRange(low_, high_);
   clouds_ = dict.getOrDefault<std::vector<std::string>>("clouds", {});  // empty: every cloud
   allTimes_ = dict.getChoiceOrDefault("times", {"latest", "all"}, "latest") == "all";
   show_ = dict.getOrDefault<std::vector<double>>("show", {});
@@ -316,16 +307,7 @@ ReportSection Slice::finish() {
   if (drawn_.empty()) return section;
   // in the one-page report: the drawn times nearest those of `show`, then the latest; the others
   // are listed by folder
-  std::vector<std::size_t> shown;
-  for (const double wanted : show_) {
-    std::size_t nearest = 0;
-    for (std::size_t k = 1; k < drawnTimes_.size(); ++k) {
-      if (std::abs(drawnTimes_[k] - wanted) < std::abs(drawnTimes_[nearest] - wanted)) nearest = k;
-    }
-    if (std::find(shown.begin(), shown.end(), nearest) == shown.end()) shown.push_back(nearest);
-  }
-  std::erase(shown, drawn_.size() - 1);
-  shown.push_back(drawn_.size() - 1);
+  const std::vector<std::size_t> shown = shownPictures(drawnTimes_, show_);
   for (const std::size_t k : shown) {
     section.markdown += "- " + captions_[k] + "\n";
     section.images.push_back(drawn_[k]);

@@ -37,12 +37,12 @@ void logBody(const RigidBody& body, const RigidBodySettings& settings, const Par
     info() << ", end stop at a travel of (" << settings.endStop->transpose().format(plain)
            << ") (hard: no rebound)";
   }
-  if (!settings.appliedForce.isZero(0)) {
-    info() << ", applied force (" << settings.appliedForce.transpose().format(plain) << ") N";
-  }
-  if (!settings.appliedForceTable.empty()) {
-    const auto& [t1, last] = settings.appliedForceTable.back();
-    info() << ", applied force against time (" << settings.appliedForceTable.size() << " points, ("
+  if (settings.appliedForce.size() == 1) {
+    info() << ", applied force (" << std::get<1>(settings.appliedForce[0]).transpose().format(plain)
+           << ") N";
+  } else if (!settings.appliedForce.empty()) {
+    const auto& [t1, last] = settings.appliedForce.back();
+    info() << ", applied force against time (" << settings.appliedForce.size() << " points, ("
            << last.transpose().format(plain) << ") N from t = " << t1 << " s)";
   }
   if (!settings.appliedPressure.empty()) {

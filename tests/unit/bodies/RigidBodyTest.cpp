@@ -173,12 +173,12 @@ TEST(RigidBody, PrescribedDisplacementIsFollowedAndItsSlopeIsTheVelocity) {
 // of 0 to 100 Pa on 10 mm^2: the kick-drift-kick integrates a force linear in time exactly in
 // the velocity (v = -F1 (0.05 + (t - 0.1)) / m at t > 0.1 s, to round-off), and its travel to
 // second order in dt (within 1e-3 of the exact cubic-then-parabolic path at dt = 1 ms); the two
-// forms give the same motion, and a constant force adds to a table.
+// forms give the same motion, and a constant force adds to a pressure's.
 TEST(RigidBody, APressCurveMovesTheBodyByItsImpulse) {
   const double force = 1e-3, ramp = 0.1, dt = 1e-3;
   RigidBodySettings byForce = densityBody();
   byForce.translation = RigidBodySettings::Translation::axis;
-  byForce.appliedForceTable = {{0.0, Vector::Zero()}, {ramp, Vector(0, 0, -force)}};
+  byForce.appliedForce = {{0.0, Vector::Zero()}, {ramp, Vector(0, 0, -force)}};
   RigidBodySettings byPressure = densityBody();
   byPressure.translation = RigidBodySettings::Translation::axis;
   byPressure.appliedPressure = {{0.0, 0.0}, {ramp, 100.0}};
@@ -199,8 +199,8 @@ TEST(RigidBody, APressCurveMovesTheBodyByItsImpulse) {
   EXPECT_NEAR(pressed.displacement().z(), x, 1e-3 * std::abs(x));
   EXPECT_NEAR(pushed.velocity().z(), pressed.velocity().z(), 1e-12 * std::abs(v));
   EXPECT_NEAR(pushed.displacement().z(), pressed.displacement().z(), 1e-12 * std::abs(x));
-  RigidBodySettings both = byForce;
-  both.appliedForce = Vector(0, 0, -force);
+  RigidBodySettings both = byPressure;
+  both.appliedForce = {{0.0, Vector(0, 0, -force)}};  // one point: a constant
   EXPECT_LT((both.appliedForceAt(0.05) - Vector(0, 0, -1.5 * force)).norm(), 1e-15);
   EXPECT_LT((both.appliedForceAt(7) - Vector(0, 0, -2 * force)).norm(), 1e-15);
   EXPECT_LT((byPressure.appliedForceAt(-1)).norm(), 1e-15);  // held at the table's ends
@@ -226,7 +226,7 @@ TEST(RigidBody, LoadCurvesAreReadAndTheirMistakesNamed) {
       "appliedPressure ((0 0) (0.2 1e7));\npressedArea 0.0195;\npressDirection (0 0 -2);\n");
   ASSERT_EQ(setup.bodies.size(), 1u);
   const RigidBodySettings& punch = setup.bodies[0];
-  ASSERT_EQ(punch.appliedForceTable.size(), 2u);
+  ASSERT_EQ(punch.appliedForce.size(), 2u);
   ASSERT_EQ(punch.appliedPressure.size(), 2u);
   EXPECT_DOUBLE_EQ(punch.pressedArea, 0.0195);
   EXPECT_LT((punch.pressDirection - Vector(0, 0, -1)).norm(), 1e-15);

@@ -173,7 +173,7 @@ ClosingTimes closingTimes(Liquid liquid, double load, double refinement,
   settings.translation = RigidBodySettings::Translation::axis;
   settings.axis = Vector::UnitY();
   settings.rotationLocked = true;
-  settings.appliedForce = Vector(0, -static_cast<Real>(load), 0);
+  settings.appliedForce = {{0.0, Vector(0, -static_cast<Real>(load), 0)}};
   const auto start = std::chrono::steady_clock::now();
   SqueezeFilmCase squeeze(settings, refinement, liquid);
   const Material noTables;
