@@ -268,6 +268,9 @@ bool CastingView::render() {
   }
   if (!(low <= high)) low = high = 0;
   if (!(high > low)) high = low + 1;
+  if (!(bounds[0] <= bounds[1])) {  // no surface at any time: a unit box to look at
+    for (int a = 0; a < 3; ++a) bounds[2 * a] = 0, bounds[2 * a + 1] = 1;
+  }
   vtkNew<vtkLookupTable> colours;  // blue - cyan - green - yellow - red, as the slices
   colours->SetHueRange(0.667, 0.0);
   colours->SetNumberOfTableValues(256);
