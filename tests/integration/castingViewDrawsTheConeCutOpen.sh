@@ -45,7 +45,7 @@ volumes=$(grep -A2 "^## casting" $report | sed -n 's/.* it encloses \([0-9.e+-]*
 awk -v v="$volumes" 'BEGIN { split(v, a, " "); r = a[1] / a[2]; printf "surface %s cm^3, particles %s cm^3: %+.2f %%\n", a[1], a[2], 100 * (r - 1); exit !(r > 0.92 && r < 1.08) }' ||
     fail "the surface's volume is not the particles'"
 
-xvfb-run -a castPostProcess > log.castPostProcess 2>&1 || fail "castPostProcess under xvfb-run: $(tail -5 log.castPostProcess)"
+xvfb-run -a -n $((100 + RANDOM % 800)) castPostProcess > log.castPostProcess 2>&1 || fail "castPostProcess under xvfb-run: $(tail -5 log.castPostProcess)"
 last=$(ls -d [0-9]* | sort -g | tail -1)
 picture=postProcessing/casting/$last/solidusTime.png
 [ -f "$picture" ] || fail "no $picture: $(ls postProcessing/casting)"
@@ -118,7 +118,7 @@ writer = vtk.vtkXMLPolyDataWriter(); writer.SetInputData(cloud); writer.SetFileN
 print(taken * dx ** 3 * 1e6)
 PY
 )
-xvfb-run -a castPostProcess > log.castPostProcess 2>&1 || fail "castPostProcess on the block: $(tail -5 log.castPostProcess)"
+xvfb-run -a -n $((100 + RANDOM % 800)) castPostProcess > log.castPostProcess 2>&1 || fail "castPostProcess on the block: $(tail -5 log.castPostProcess)"
 line=$(grep -A2 "^## block" $report | grep "enclosed in the metal")
 echo "$line"
 echo "$line" | awk -v planted="$planted" '{
