@@ -74,7 +74,8 @@ SolidificationSetup readSolidificationSetup(const CaseDescription& description) 
   setup.endWhenSolid = dict.getOrDefault<bool>("endWhenSolid", false);
   if (dict.found("cooling")) {
     const Dictionary& cooling = dict.subDict("cooling");
-    cooling.checkKeys({"flowStepsPerHeatStep", "maxCo", "stillSpeed", "movingSpeed"});
+    cooling.checkKeys(
+        {"flowStepsPerHeatStep", "maxCo", "stillSpeed", "stillFraction", "movingSpeed"});
     CoolingAcceleration acceleration;
     acceleration.flowStepsPerHeatStep =
         cooling.getOrDefault<int>("flowStepsPerHeatStep", acceleration.flowStepsPerHeatStep);
@@ -94,6 +95,15 @@ SolidificationSetup readSolidificationSetup(const CaseDescription& description) 
       if (!(acceleration.stillSpeed > 0)) {
         throw DictionaryError(cooling.location("stillSpeed"),
                               "'stillSpeed' must be positive in " + cooling.name());
+      }
+    }
+    if (cooling.found("stillFraction")) {
+      acceleration.stillFraction = cooling.get<double>("stillFraction");
+      if (!(acceleration.stillFraction >= 0 && acceleration.stillFraction < 0.5)) {
+        throw DictionaryError(cooling.location("stillFraction"),
+                              "'stillFraction' must be in [0, 0.5) in " + cooling.name() +
+                                  " (the share of the melt's particles allowed above "
+                                  "stillSpeed; 0: every one below it)");
       }
     }
     if (cooling.found("movingSpeed")) {

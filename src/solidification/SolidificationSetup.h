@@ -28,6 +28,9 @@ namespace sphcast {
 //                                         // controlDict's maxCo by default
 //           stillSpeed           0.02;    // m/s: cooling starts once max|U| of the melt is
 //                                         // below this
+//           stillFraction        0;       // optional: ... or all but this share of the
+//                                         // melt's particles (0.01: its 99th percentile;
+//                                         // a pressed melt's acoustic jitter)
 //           movingSpeed          0.5;     // m/s: back to every acoustic step above this (a
 //       }                                 // collapse); the melt's flow steps, compressed in
 //                                         // time, feed the shrinkage faster than stillSpeed
@@ -53,6 +56,7 @@ struct CoolingAcceleration {
   int flowStepsPerHeatStep = 10;
   double maxCo = 0;          // 0: controlDict's maxCo
   double stillSpeed = 0.02;  // m/s
+  double stillFraction = 0;  // the melt's particles allowed above stillSpeed, as a share
   double movingSpeed = 0.5;  // m/s
 };
 

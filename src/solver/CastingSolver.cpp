@@ -273,13 +273,18 @@ void CastingSolver::updateCoolingMode() {
   if (!models_.solidification || !solidificationSetup_.cooling) return;
   const CoolingAcceleration& cooling = *solidificationSetup_.cooling;
   double fastest = 0;
+  std::int64_t moving = 0;  // the melt's particles at stillSpeed or faster
   const auto& velocity = models_.fluid->vectorField(field::U);
   for (std::size_t i = 0; i < models_.fluid->ownedSize(); ++i) {
-    fastest = std::max(fastest, static_cast<double>(velocity[i].norm()));
+    const double speed = static_cast<double>(velocity[i].norm());
+    fastest = std::max(fastest, speed);
+    if (speed >= cooling.stillSpeed) ++moving;
   }
   // metal still being poured, or none yet, is not a still melt (measured: crossDitchPress
   // entered the mode at t = 0 with its cloud empty, and its ladle fell 0.012 s behind)
-  bool pouring = comm_.sum(static_cast<std::int64_t>(models_.fluid->ownedSize())) == 0;
+  const std::int64_t melt = comm_.sum(static_cast<std::int64_t>(models_.fluid->ownedSize()));
+  moving = comm_.sum(moving);
+  bool pouring = melt == 0;
   pouring = pouring || models_.pouringInlets.pouring(time_.value());
   // The bodies: the mode's slowed flow time would slow a body's motion hundreds of times, so a
   // body driven by its table keeps the mode off, and one let go (it is held through the step in
@@ -290,18 +295,24 @@ void CastingSolver::updateCoolingMode() {
   const double settle = g > 0 ? 2 * cooling.stillSpeed / g : 0;
   const double window = std::max(settle, time_.state().deltaT * (1 + 1e-9));
   std::string bodyMoves;
+  double fastestBody = 0;
   for (const auto& body : models_.movingMolds.bodies()) {
     for (const Vector& v : body->cloud().vectorField(field::U)) {
-      fastest = std::max(fastest, static_cast<double>(v.norm()));
+      fastestBody = std::max(fastestBody, static_cast<double>(v.norm()));
     }
     if (body->driven(time_.value())) bodyMoves = "body " + body->settings().name + " is driven";
     if (body->letGoWithin(time_.value(), window)) {
       bodyMoves = "body " + body->settings().name + " was let go";
     }
   }
-  fastest = comm_.max(fastest);  // every rank's melt: all decide alike
+  fastest = comm_.max(std::max(fastest, fastestBody));  // every rank's: all decide alike
+  fastestBody = comm_.max(fastestBody);
+  // still: no more of the melt at stillSpeed than stillFraction allows (0: none, max|U| below
+  // it), and the bodies slower
+  const bool still = moving <= static_cast<std::int64_t>(cooling.stillFraction * double(melt)) &&
+                     fastestBody < cooling.stillSpeed;
   const bool wasCooling = cooling_;
-  if (!cooling_ && fastest < cooling.stillSpeed && !pouring && bodyMoves.empty()) cooling_ = true;
+  if (!cooling_ && still && !pouring && bodyMoves.empty()) cooling_ = true;
   if (cooling_ && (fastest > cooling.movingSpeed || !bodyMoves.empty())) cooling_ = false;
   if (cooling_ == wasCooling) return;
   models_.fluid->attributes()["coolingMode"] = cooling_ ? 1 : 0;
@@ -309,7 +320,8 @@ void CastingSolver::updateCoolingMode() {
   if (cooling_) {
     flushPendingHeat();
     info() << "Cooling from time " << time_.timeName() << ": the melt is still (max|U| " << fastest
-           << " m/s < " << cooling.stillSpeed << "): steps of the heat's length, each "
+           << " m/s, " << moving << " of " << melt << " particles at " << cooling.stillSpeed
+           << " m/s or faster): steps of the heat's length, each "
            << "followed by " << cooling.flowStepsPerHeatStep << " acoustic flow steps (maxCo "
            << coolingMaxCo() << ")\n\n";
   } else {

@@ -3,9 +3,10 @@
 # a mold held at 300 K (a thermal shock at first contact, and an impact), frozen as it solidifies,
 # cooled to the end in the cooling mode (heat steps with ten flow steps each) and stopped by
 # endWhenSolid (the log's ETA following the solid fraction). T stays within [300, 970] K, nothing passes the mold, frozen particles do not
-# move, a restart in the cooling mode reproduces the uninterrupted run bit for bit, and bad
-# solidification input (a frozen fraction, the cooling mode's maxCo, a material without a
-# freezing range) stops with file, line and key.
+# move, a restart in the cooling mode reproduces the uninterrupted run bit for bit, the mode
+# starts earlier with a stillFraction, and bad solidification input (a frozen fraction, the
+# cooling mode's maxCo and stillFraction, a material without a freezing range) stops with file,
+# line and key.
 . "$SPHCAST_TEST_TOOLS"
 
 makeCup() {  # DIR
@@ -22,9 +23,23 @@ makeCup() {  # DIR
 makeCup "$scratch/cup"
 cp -r "$scratch/cup" "$scratch/stopped"
 cp -r "$scratch/cup" "$scratch/bad"
+cp -r "$scratch/cup" "$scratch/fraction"
 cd "$scratch/cup" || exit 1
 sphCastFoam > log 2>&1 || { tail -20 log >&2; fail "the solidifying cup did not run"; }
 grep -q "^Cooling from time" log || fail "the cooling mode never started"
+# stillFraction 0.3: the mode starts once all but 30 % of the melt is below stillSpeed, earlier
+# than once every particle is (the default, 0)
+cd "$scratch/fraction" || exit 1
+sed -i 's/stillSpeed 0.02;/stillSpeed 0.02; stillFraction 0.3;/' constant/physicsModels
+setEntry system/controlDict endTime 1
+sphCastFoam > log 2>&1 || fail "stillFraction 0.3: $(tail -5 log)"
+every=$(sed -n 's/^Cooling from time \([0-9.e+-]*\):.*/\1/p' ../cup/log | head -1)
+most=$(sed -n 's/^Cooling from time \([0-9.e+-]*\):.*/\1/p' log | head -1)
+awk -v every="$every" -v most="$most" 'BEGIN { printf "the cooling mode from %s s (every particle still), %s s (70 %%)\n", every, most
+    exit !(most != "" && most + 0 < every + 0) }' || fail "stillFraction 0.3 did not start the cooling mode earlier"
+grep -q "^Cooling from time .*: the melt is still (max|U| .* m/s, [1-9][0-9]* of [0-9]* particles at 0.02 m/s or faster)" log ||
+    fail "the log does not count the particles still moving: $(grep -m1 '^Cooling from' log)"
+cd "$scratch/cup" || exit 1
 grep -q "cooling: heat steps of" log || fail "the log does not say how the cooling steps"
 grep -q "^Stopping: the casting is solid (endWhenSolid)" log || fail "the run did not end solid"
 # The ETA follows the solid fraction, not endTime (100 s, which gave an hour for a 30 s run):
@@ -92,6 +107,11 @@ if sphCastFoam > log.bad 2>&1; then fail "the cooling mode's maxCo 1.5 ran"; fi
 grep -q "physicsModels:[0-9]*:[0-9]*: 'maxCo' must be in (0, 1]" log.bad ||
     { cat log.bad >&2; fail "no clear error for the cooling mode's maxCo 1.5"; }
 sed -i 's/ maxCo 1.5;//' constant/physicsModels
+sed -i 's/stillSpeed 0.02;/stillSpeed 0.02; stillFraction 0.7;/' constant/physicsModels
+if sphCastFoam > log.bad 2>&1; then fail "the cooling mode's stillFraction 0.7 ran"; fi
+grep -q "physicsModels:[0-9]*:[0-9]*: 'stillFraction' must be in \[0, 0.5)" log.bad ||
+    { cat log.bad >&2; fail "no clear error for stillFraction 0.7"; }
+sed -i 's/ stillFraction 0.7;//' constant/physicsModels
 sed -i 's/^metal .*/metal { density 2400; viscosity 1e-3; conductivity 90; specificHeat 900; }/' \
     constant/physicalProperties
 if sphCastFoam > log.bad 2>&1; then fail "a material without a freezing range ran"; fi
