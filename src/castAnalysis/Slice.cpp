@@ -194,7 +194,8 @@ void Slice::draw(const WrittenTime& time) {
             " m of the plane at time " + time.folder.name);
     return;
   }
-  // the picture's extent: the sliced particles' discs, or, drawn as a field, their kernels' reach
+  // the picture's extent: the sliced particles' discs, or, drawn as a field, half a spacing beyond
+  // them, where the bodies' surfaces are
   const Real support = context_.supportRadius > 0 ? context_.supportRadius : 3 * finest;
   Real uMin = dots[0].u, uMax = uMin, vMin = dots[0].v, vMax = vMin;
   for (const Dot& dot : dots) {
