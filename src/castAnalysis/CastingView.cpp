@@ -26,7 +26,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <limits>
+#include <memory>
 
 #include "castAnalysis/GnuplotPlot.h"
 #include "castAnalysis/VoxelOccupancy.h"
@@ -42,14 +44,18 @@ namespace sphcast {
 
 namespace {
 
-// VTK's X render window aborts the process where no display opens: look first.
-bool displayOpens() {
+// The X display the views render on, opened here and handed to VTK's render window: VTK's
+// own connection aborts the process where it fails, and a display that answered a first look
+// can refuse the next connection (an X server resets when its last client leaves: measured
+// under the full test suite, "bad X server connection ... Aborting"). One connection, made and
+// kept, cannot. nullptr where none opens (DISPLAY unset or unreachable).
+struct DisplayCloser {
+  void operator()(Display* display) const { XCloseDisplay(display); }
+};
+std::unique_ptr<Display, DisplayCloser> openDisplay() {
   const char* name = std::getenv("DISPLAY");
-  if (name == nullptr || *name == '\0') return false;
-  Display* display = XOpenDisplay(nullptr);
-  if (display == nullptr) return false;
-  XCloseDisplay(display);
-  return true;
+  if (name == nullptr || *name == '\0') return nullptr;
+  return std::unique_ptr<Display, DisplayCloser>(XOpenDisplay(nullptr));
 }
 
 }  // namespace
@@ -246,7 +252,8 @@ void CastingView::splitCavities(vtkPolyData* contour, Frame& frame) {
 }
 
 bool CastingView::render() {
-  if (!displayOpens()) return false;
+  const auto display = openDisplay();  // outlives the render window below
+  if (!display) return false;
   double low = fixedRange_ ? low_ : std::numeric_limits<double>::max();
   double high = fixedRange_ ? high_ : -std::numeric_limits<double>::max();
   double bounds[6] = {1e300, -1e300, 1e300, -1e300, 1e300, -1e300};
@@ -322,6 +329,7 @@ bool CastingView::render() {
   renderer->AddViewProp(bar);
   renderer->AddViewProp(title);
   vtkNew<vtkRenderWindow> window;
+  window->SetDisplayId(display.get());
   window->SetOffScreenRendering(1);
   window->SetSize(size_[0], size_[1]);
   window->AddRenderer(renderer);
