@@ -133,6 +133,16 @@ bool CastAnalysis::readRange(double& low, double& high) const {
   return true;
 }
 
+bool CastAnalysis::readPictureTimes(std::vector<double>& show) const {
+  const bool all = dict_.getChoiceOrDefault("times", {"latest", "all"}, "latest") == "all";
+  show = dict_.getOrDefault<std::vector<double>>("show", {});
+  if (!show.empty() && !all) {
+    throw DictionaryError(dict_.location("show"),
+                          "'show' needs 'times all' (a picture of every time) in " + dict_.name());
+  }
+  return all;
+}
+
 std::vector<std::size_t> CastAnalysis::shownPictures(const std::vector<double>& drawnTimes,
                                                      const std::vector<double>& show) {
   std::vector<std::size_t> shown;

@@ -92,6 +92,9 @@ class CastAnalysis {
   // The entry's `range (low high)` of a picture's colours: false without one; an error at the
   // key unless low < high.
   bool readRange(double& low, double& high) const;
+  // The entry's `times latest|all` (true: all) and `show (t1 t2 ...)`, the times whose pictures
+  // the report shows, which needs `times all` (an error at the key otherwise).
+  bool readPictureTimes(std::vector<double>& show) const;
   // The pictures a report shows of those drawn at `drawnTimes` (ascending, not empty): the one
   // nearest each time of `show`, once each, then the last.
   static std::vector<std::size_t> shownPictures(const std::vector<double>& drawnTimes,

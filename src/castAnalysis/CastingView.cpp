@@ -44,18 +44,21 @@ namespace sphcast {
 
 namespace {
 
-// The X display the views render on, opened here and handed to VTK's render window: VTK's
-// own connection aborts the process where it fails, and a display that answered a first look
-// can refuse the next connection (an X server resets when its last client leaves: measured
-// under the full test suite, "bad X server connection ... Aborting"). One connection, made and
-// kept, cannot. nullptr where none opens (DISPLAY unset or unreachable).
-struct DisplayCloser {
-  void operator()(Display* display) const { XCloseDisplay(display); }
-};
-std::unique_ptr<Display, DisplayCloser> openDisplay() {
-  const char* name = std::getenv("DISPLAY");
-  if (name == nullptr || *name == '\0') return nullptr;
-  return std::unique_ptr<Display, DisplayCloser>(XOpenDisplay(nullptr));
+// The X display the views render on: one connection, opened at the first view and kept for the
+// process, handed to VTK's render windows. VTK's own connection aborts the process where it
+// fails, and an X server resets when its last client leaves, refusing connections meanwhile
+// (measured under the test suite: "bad X server connection ... Aborting" when a first look
+// closed its connection, and the second of two views not drawn when the first closed its own).
+// nullptr where none opens (DISPLAY unset or unreachable).
+Display* viewDisplay() {
+  struct Closer {
+    void operator()(Display* display) const { XCloseDisplay(display); }
+  };
+  static const std::unique_ptr<Display, Closer> display([]() -> Display* {
+    const char* name = std::getenv("DISPLAY");
+    return name == nullptr || *name == '\0' ? nullptr : XOpenDisplay(nullptr);
+  }());
+  return display.get();
 }
 
 }  // namespace
@@ -104,12 +107,7 @@ CastingView::CastingView(const std::string& name, const Dictionary& dict,
     }
     size_ = {int(size[0]), int(size[1])};
   }
-  allTimes_ = dict.getChoiceOrDefault("times", {"latest", "all"}, "latest") == "all";
-  show_ = dict.getOrDefault<std::vector<double>>("show", {});
-  if (!show_.empty() && !allTimes_) {
-    throw DictionaryError(dict.location("show"),
-                          "'show' needs 'times all' (a frame of every time) in " + dict.name());
-  }
+  allTimes_ = readPictureTimes(show_);
 }
 
 void CastingView::add(const WrittenTime& time) {
@@ -252,8 +250,8 @@ void CastingView::splitCavities(vtkPolyData* contour, Frame& frame) {
 }
 
 bool CastingView::render() {
-  const auto display = openDisplay();  // outlives the render window below
-  if (!display) return false;
+  Display* display = viewDisplay();
+  if (display == nullptr) return false;
   double low = fixedRange_ ? low_ : std::numeric_limits<double>::max();
   double high = fixedRange_ ? high_ : -std::numeric_limits<double>::max();
   double bounds[6] = {1e300, -1e300, 1e300, -1e300, 1e300, -1e300};
@@ -329,7 +327,7 @@ bool CastingView::render() {
   renderer->AddViewProp(bar);
   renderer->AddViewProp(title);
   vtkNew<vtkRenderWindow> window;
-  window->SetDisplayId(display.get());
+  window->SetDisplayId(display);
   window->SetOffScreenRendering(1);
   window->SetSize(size_[0], size_[1]);
   window->AddRenderer(renderer);

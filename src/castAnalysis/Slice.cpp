@@ -91,13 +91,7 @@ Slice::Slice(const std::string& name, const Dictionary& dict, const AnalysisCont
   field_ = dict.get<std::string>("field");
   fixedRange_ = readRange(low_, high_);
   clouds_ = dict.getOrDefault<std::vector<std::string>>("clouds", {});  // empty: every cloud
-  allTimes_ = dict.getChoiceOrDefault("times", {"latest", "all"}, "latest") == "all";
-  show_ = dict.getOrDefault<std::vector<double>>("show", {});
-  if (!show_.empty() && !allTimes_) {
-    throw DictionaryError(dict.location("show"),
-                          "'show' needs 'times all' (the pictures of every time) in " +
-                              dict.name());
-  }
+  allTimes_ = readPictureTimes(show_);
   pixel_ = dict.getOrDefault<Real>("pixel", 0);
   particles_ = dict.getChoiceOrDefault("style", {"field", "particles"}, "field") == "particles";
   // up: +z projected into the plane (+y when the plane is normal to z)
