@@ -19,9 +19,10 @@ namespace sphcast {
 
 // The flow's limits over every rank (each the smallest), so that all take the same step.
 FlowStepLimits CastingSolver::flowStepLimits(double maxCo) const {
-  // the cooling mode's flow steps are kick-drift-kick's (evolveCooling)
+  // the cooling mode's flow steps are kick-drift-kick's (evolveCooling); the incompressible
+  // flow's are always its own (stepLimits takes that)
   FlowStepLimits limits =
-      models_.flow->stepLimits(maxCo, flowSetup_.settings.dualCriteria && !cooling_);
+      models_.flow->stepLimits(maxCo, flowSetup_.settings.stepsBeforeSearch() && !cooling_);
   if (!parallel_) return limits;
   std::vector<double> each{limits.acoustic,     limits.viscous,     limits.bodyForce,
                            limits.acceleration, limits.densityRate, limits.forceModel,
@@ -83,8 +84,8 @@ void CastingSolver::evolve(double deltaT) {
         std::string limiter;
         return models_.energy->stableDeltaT(limiter);
       });
-  const bool dualCriteria = models_.flow && flowSetup_.settings.dualCriteria;
-  if (dualCriteria) {
+  const bool beforeSearch = models_.flow && flowSetup_.settings.stepsBeforeSearch();
+  if (beforeSearch) {
     flowAdvectionStep(deltaT);
   } else if (models_.flow) {
     flowFirstKickAndDrift(deltaT);
@@ -99,7 +100,7 @@ void CastingSolver::evolve(double deltaT) {
   if (heatThisStep && models_.flow && models_.exposedArea) {
     addWallTime(monitor_.times().heat, [&] { models_.exposedArea->compute(); });
   }
-  if (models_.flow && !dualCriteria) flowRatesAndSecondKick(deltaT);
+  if (models_.flow && !beforeSearch) flowRatesAndSecondKick(deltaT);
   if (heatThisStep) {
     addWallTime(monitor_.times().heat, [&] { finishHeatStep(); });
     heatSchedule_.countStep();
@@ -116,7 +117,8 @@ void CastingSolver::flowFirstKickAndDrift(double deltaT) {
 
 // dualCriteria's flow step: the rheology's viscosity, the advection step's acoustic sub-steps
 // with the bodies moved and kicked and the inlets' buffers held in each, then the metal the
-// inlets pour. The search follows.
+// inlets pour (the incompressible step likewise, with one solve of the pressure). The search
+// follows.
 void CastingSolver::flowAdvectionStep(double deltaT) {
   if (models_.rheology) models_.rheology->update(deltaT);
   // the time at a sub-step's end (the last one's is the step's, to the bit)
@@ -251,10 +253,15 @@ void CastingSolver::evolveCooling(double deltaT) {
       std::string without;
       monitor_.counts().flowStepsWithoutCooling += deltaT / limits.smallest(without);
     }
-    flowFirstKickAndDrift(flowDeltaT);
+    const bool beforeSearch = flowSetup_.settings.incompressible;  // its only step
+    if (beforeSearch) {
+      flowAdvectionStep(flowDeltaT);
+    } else {
+      flowFirstKickAndDrift(flowDeltaT);
+    }
     spillMetalOutside(true);  // the next heat step's first kick takes the rates with them
     searchAndKeepClear(flowDeltaT, k + 1 == solidificationSetup_.cooling->flowStepsPerHeatStep);
-    flowRatesAndSecondKick(flowDeltaT);
+    if (!beforeSearch) flowRatesAndSecondKick(flowDeltaT);
     ++monitor_.counts().flowSubSteps;
     monitor_.counts().lastFlowSubStep = flowDeltaT;
   }

@@ -226,14 +226,24 @@ void CastingSolver::setUpFlow() {
     return comm_.sum(static_cast<std::int64_t>(cloud.ownedSize()));
   };
   const FlowSettings& settings = flowSetup_.settings;
-  info() << "Flow: weakly compressible SPH (" << settings.dimension << "D), densityScheme "
-         << settings.densityScheme << ", kernelCorrection "
+  info() << "Flow: " << (settings.incompressible ? "incompressible" : "weakly compressible")
+         << " SPH (" << settings.dimension << "D), densityScheme " << settings.densityScheme
+         << ", kernelCorrection "
          << (settings.kernelCorrection ? "on" : "off") << ", viscousForm " << settings.viscousForm
          << ", " << settings.walls.all.describe() << ", viscositySolver "
          << describeViscositySolver(settings.viscositySolver, settings.implicitViscosity)
          << ", h = " << settings.supportRadius << " m, c = " << settings.soundSpeed << " m/s\n"
          << "    time stepping: ";
-  if (settings.dualCriteria) {
+  if (settings.incompressible) {
+    const IncompressibleSettings& solver = settings.pressureSolver;
+    info() << "incompressible: steps of at most advectionCo " << solver.advectionCo
+           << " dx / |U|max (and the viscous, body-force and force models' limits), each with "
+              "a search and the pressure solved for rho_s by relaxed Jacobi (Ihmsen et al. "
+              "2014; omega "
+           << solver.relaxation << ", " << solver.minIterations << " to "
+           << solver.maxIterations << " iterations, to a mean compression below "
+           << 100 * solver.densityTolerance << " %)\n";
+  } else if (settings.dualCriteria) {
     info() << "dualCriteria: steps of at most advectionCo " << settings.advectionCo
            << " dx / |U|max (and the viscous, body-force and force models' limits), each with "
               "a search and the viscous term, in acoustic sub-steps of acousticCo "

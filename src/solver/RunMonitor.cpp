@@ -157,6 +157,15 @@ void RunMonitor::logTimeSpent() {
            << work.acousticSubSteps << " acoustic sub-steps ("
            << double(work.acousticSubSteps) / double(work.advectionSteps) << " a step)\n";
   }
+  if (models_.flow && models_.flow->work().pressureSolves > 0) {
+    const FlowWork& work = models_.flow->work();
+    const IncompressibleReport& last = models_.flow->lastPressureSolve();
+    info() << "Pressure solves (incompressible): " << work.pressureSolves << ", "
+           << double(work.pressureIterations) / double(work.pressureSolves)
+           << " Jacobi iterations a solve; the last left a mean compression of "
+           << 100 * last.meanCompression << " % (largest " << 100 * last.largestCompression
+           << " %) in " << last.iterations << " iterations\n";
+  }
   info() << "Run health: " << warnings_.summary() << '\n';
   // the process's peak resident memory (Linux gives ru_maxrss in KiB): what a larger case needs
   rusage usage{};

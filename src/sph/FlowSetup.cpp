@@ -20,14 +20,65 @@ namespace {
 constexpr double lowestSupportRatio = 1.2;
 constexpr double highestSupportRatio = 6.0;
 
+// flow { model incompressible; }: the weakly compressible flow's own schemes refused, and
+// pressureSolverCoeffs read (IncompressiblePressure.h).
+void readPressureSolver(const Dictionary& schemes, FlowSettings& settings) {
+  for (const char* key : {"timeStepping", "densityReinitialisation"}) {
+    if (!schemes.found(key)) continue;
+    const std::string value = schemes.get<std::string>(key);
+    if (value == "kickDriftKick" || value == "none") continue;
+    throw DictionaryError(schemes.location(key),
+                          "'" + std::string(key) + " " + value +
+                              "' is the weakly compressible flow's; flow { model incompressible; "
+                              "} solves its pressure in steps of its own (remove it from " +
+                              schemes.name() + ")");
+  }
+  if (settings.densityScheme == "deltaSPH") {
+    throw DictionaryError(schemes.location("densityScheme"),
+                          "densityScheme deltaSPH is the weakly compressible flow's; with flow { "
+                          "model incompressible; } write riemann (the viscous and wall terms "
+                          "are the same) in " +
+                              schemes.name());
+  }
+  if (!schemes.found("pressureSolverCoeffs")) return;
+  const Dictionary& coeffs = schemes.subDict("pressureSolverCoeffs");
+  coeffs.checkKeys(
+      {"densityTolerance", "minIterations", "maxIterations", "relaxation", "advectionCo"});
+  IncompressibleSettings& solver = settings.pressureSolver;
+  solver.densityTolerance = coeffs.getOrDefault<Real>("densityTolerance", solver.densityTolerance);
+  solver.minIterations = coeffs.getOrDefault<int>("minIterations", solver.minIterations);
+  solver.maxIterations = coeffs.getOrDefault<int>("maxIterations", solver.maxIterations);
+  solver.relaxation = coeffs.getOrDefault<Real>("relaxation", solver.relaxation);
+  solver.advectionCo = coeffs.getOrDefault<Real>("advectionCo", solver.advectionCo);
+  auto refuse = [&](const char* key, const std::string& why) {
+    throw DictionaryError(coeffs.location(key),
+                          "'" + std::string(key) + "' " + why + " in " + coeffs.name());
+  };
+  if (!(solver.densityTolerance > 0 && solver.densityTolerance < Real(0.1))) {
+    refuse("densityTolerance", "(the mean compression left, a fraction of rho_s) must lie in (0, 0.1)");
+  }
+  if (solver.minIterations < 1) refuse("minIterations", "must be at least 1");
+  if (solver.maxIterations < solver.minIterations) {
+    refuse("maxIterations", "must be at least minIterations");
+  }
+  if (!(solver.relaxation > 0 && solver.relaxation <= 1)) {
+    refuse("relaxation", "(the Jacobi iteration's omega) must lie in (0, 1]");
+  }
+  if (!(solver.advectionCo > 0 && solver.advectionCo <= 1)) {
+    refuse("advectionCo", "(dt |U|max / dx) must lie in (0, 1]");
+  }
+}
+
 }  // namespace
 
 FlowSetup readFlowSetup(const CaseDescription& description) {
   FlowSetup setup;
   const Dictionary* flow = description.modelsEntry("flow");
   if (!flow) return setup;
-  if (flow->getChoice("model", {"none", "weaklyCompressible"}) == "none") return setup;
+  const std::string model = flow->getChoice("model", {"none", "weaklyCompressible", "incompressible"});
+  if (model == "none") return setup;
   setup.enabled = true;
+  setup.settings.incompressible = model == "incompressible";
   const Dictionary& models = description.physicsModels();
   if (!description.gravity()) {
     throw DictionaryError(models.location("flow"),
@@ -45,7 +96,8 @@ FlowSetup readFlowSetup(const CaseDescription& description) {
                      "wallDissipation", "supportRadius", "soundSpeed", "deltaSPHCoeffs",
                      "wallClearance", "neighbourListSkin", "viscositySolver",
                      "viscositySolverCoeffs", "densityReinitialisation",
-                     "densityReinitialisationCoeffs", "timeStepping", "dualCriteriaCoeffs"});
+                     "densityReinitialisationCoeffs", "timeStepping", "dualCriteriaCoeffs",
+                     "pressureSolverCoeffs"});
   FlowSettings& settings = setup.settings;
   settings.densityScheme = schemes.getChoice("densityScheme", {"riemann", "standard", "deltaSPH"});
   settings.kernelCorrection = schemes.getOrDefault<bool>("kernelCorrection", false);
@@ -90,6 +142,7 @@ FlowSetup readFlowSetup(const CaseDescription& description) {
                                 coeffs.name());
     }
   }
+  if (settings.incompressible) readPressureSolver(schemes, settings);
   settings.viscousForm = schemes.getChoice("viscousForm", {"Morris", "Cleary"});
   const std::string solver =
       schemes.getChoiceOrDefault("viscositySolver", {"auto", "explicit", "implicit"}, "auto");

@@ -88,6 +88,22 @@ void WeaklyCompressibleFlow::checkInput() {
   if (settings_.dualCriteria && !(settings_.advectionCo > 0 && settings_.acousticCo > 0)) {
     throw Error("flow: advectionCo and acousticCo must be positive");
   }
+  if (settings_.incompressible) {
+    const IncompressibleSettings& solver = settings_.pressureSolver;
+    if (settings_.dualCriteria || settings_.densityScheme == "deltaSPH" ||
+        settings_.reinitialiseDensity) {
+      throw Error(
+          "flow { model incompressible; } solves its pressure: timeStepping dualCriteria, "
+          "densityScheme deltaSPH and densityReinitialisation are the weakly compressible "
+          "flow's");
+    }
+    if (!(solver.densityTolerance > 0 && solver.relaxation > 0 && solver.relaxation <= 1 &&
+          solver.maxIterations >= solver.minIterations && solver.minIterations >= 1 &&
+          solver.advectionCo > 0)) {
+      throw Error("flow: pressureSolverCoeffs out of range");
+    }
+    incompressiblePressure_ = IncompressiblePressure(solver);
+  }
   if (settings_.viscousForm != "Morris" && settings_.viscousForm != "Cleary") {
     throw Error("unknown viscousForm '" + settings_.viscousForm +
                 "'; valid viscousForm are: (Morris Cleary)");
@@ -208,7 +224,8 @@ void WeaklyCompressibleFlow::sumClearanceImpulses() {
 }
 
 void WeaklyCompressibleFlow::start() {
-  if (restarted_) return;
+  // the incompressible step needs no rates from before: its pressure starts from p as it is
+  if (restarted_ || settings_.incompressible) return;
   updatePressure();
   computeRates();
   // dualCriteria's first sub-step takes the halo's density rate (its owners'; a search brings
@@ -304,7 +321,7 @@ void WeaklyCompressibleFlow::step(double deltaT) {
         "flow: step() is for a flow with its own neighbourhood; in a shared one the "
         "solver calls the phases");
   }
-  if (settings_.dualCriteria) {
+  if (settings_.stepsBeforeSearch()) {
     advectionStep(deltaT);
     addWallTime(timings_.neighbourSearch, [&] { neighbourhood_.update(); });
     keepClearOfWalls();
@@ -480,6 +497,7 @@ void WeaklyCompressibleFlow::solveViscosity(Real dt) {
 FlowStepLimits WeaklyCompressibleFlow::stepLimits(double maxCo, bool advectionStep) const {
   FlowStepLimits limits = allStepLimits(maxCo);
   const double infinite = std::numeric_limits<double>::max();
+  if (settings_.incompressible) advectionStep = true;  // no sound speed, no sub-steps
   if (advectionStep) {  // the sub-steps' (acousticSubStepLimit)
     limits.acoustic = limits.acceleration = limits.densityRate = infinite;
   } else {
@@ -494,7 +512,7 @@ FlowStepLimits WeaklyCompressibleFlow::stepLimits(double maxCo, bool advectionSt
                                     limits.densityRate, limits.forceModel, limits.advection});
     if (limits.viscous < others) limits.viscous = infinite;
   }
-  if (advectionStep) {
+  if (advectionStep && !settings_.incompressible) {
     // A whole number of acoustic sub-steps: a step of 1.1 sub-steps' length would take two
     // sub-steps of 0.55, a search and a viscous pass for 1.1 sub-steps of flow; one of 1.0
     // takes one (Koshizuka & Oka's dam break at a/dx = 40: 809 advection steps of 1,930
@@ -576,7 +594,10 @@ FlowStepLimits WeaklyCompressibleFlow::allStepLimits(double maxCo) const {
       largestRelativeDensityRate > 0 ? maxDensityChange / largestRelativeDensityRate : infinite,
       forceLimit, forceLimiter,
       // dualCriteria: no particle moves more than advectionCo dx between two searches
-      fastest > 0 ? settings_.advectionCo * dx / fastest : infinite};
+      fastest > 0 ? (settings_.incompressible ? settings_.pressureSolver.advectionCo
+                                              : settings_.advectionCo) *
+                        dx / fastest
+                  : infinite};
   return limits;
 }
 

@@ -13,6 +13,7 @@
 #include "sph/DensityReinitialisation.h"
 #include "sph/FluidForceModel.h"
 #include "sph/ImplicitViscosity.h"
+#include "sph/IncompressiblePressure.h"
 #include "sph/KernelCorrection.h"
 #include "sph/WallClearance.h"
 
@@ -66,6 +67,15 @@ struct FlowSettings {
   bool dualCriteria = false;
   Real advectionCo = Real(0.2);
   Real acousticCo = Real(1);
+  // flow { model incompressible; } of constant/physicsModels: the pressure solved implicitly
+  // for the rest density (IncompressiblePressure.h) instead of eq. (3)'s from the density, in
+  // steps set by the flow speed (pressureSolverCoeffs in system/sphSchemes).
+  bool incompressible = false;
+  IncompressibleSettings pressureSolver;
+  // Whether a flow step is one pass of its own over the lists of the last search
+  // (advectionStep: dualCriteria's acoustic sub-steps, or the incompressible step) rather than
+  // kick-drift-kick's two halves around the search.
+  bool stepsBeforeSearch() const { return dualCriteria || incompressible; }
 };
 
 // The work the rate passes did and left out since the start, in particle-steps (one particle's
@@ -78,6 +88,8 @@ struct FlowWork {
   std::uint64_t viscousIterations = 0;     // the conjugate gradient's iterations in them
   std::uint64_t advectionSteps = 0;        // dualCriteria: the steps of the pair lists
   std::uint64_t acousticSubSteps = 0;      // dualCriteria: the pressure passes within them
+  std::uint64_t pressureSolves = 0;        // incompressible: the steps' pressure solves
+  std::uint64_t pressureIterations = 0;    // and their Jacobi iterations
 };
 
 // Wall time spent in each part of the flow's steps, seconds since construction.
@@ -196,7 +208,18 @@ class WeaklyCompressibleFlow {
     std::function<void(double dt, double elapsed)> drift;
     std::function<void(double dt, double elapsed)> kick;
   };
+  // With flow { model incompressible; } the step is incompressibleStep's instead.
   void advectionStep(double deltaT, const SubStepHooks& hooks = {});
+  // The incompressible step (Ihmsen et al. 2014's symplectic Euler step), over the lists of the
+  // last search:
+  //   v* = v + dt (g + a_viscous + a_forces)   (a viscosity solved implicitly: v* from its solve)
+  //   p  = the pressure that brings the density to rho_s at the step's end (IncompressiblePressure)
+  //   v  = v* + dt a^p,   x += dt v.
+  // The hooks run the bodies: `kick` once the loads of the step are known (pressure, viscous,
+  // forces), `drift` after the fluid's drift, each given dt and deltaT (the bodies' own
+  // kick-drift-kick over one step of fixed loads is their symplectic Euler step).
+  void incompressibleStep(double deltaT, const SubStepHooks& hooks);
+  const IncompressibleReport& lastPressureSolve() const { return lastPressureSolve_; }
   // The acoustic sub-step's limits now: the smallest of the acoustic (of acousticCo),
   // acceleration and density rate limits over every rank.
   double acousticSubStepLimit(std::string& limiter) const;
@@ -316,6 +339,8 @@ class WeaklyCompressibleFlow {
   ImplicitViscosity implicitViscosity_;
   bool viscosityImplicit_ = false;  // in the rates of the step being taken
   ImplicitViscosityReport lastViscousSolve_;
+  IncompressiblePressure incompressiblePressure_;
+  IncompressibleReport lastPressureSolve_;
 };
 
 }  // namespace sphcast

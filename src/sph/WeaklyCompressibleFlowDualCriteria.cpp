@@ -32,6 +32,10 @@ void WeaklyCompressibleFlow::computePriorAcceleration() {
 }
 
 void WeaklyCompressibleFlow::advectionStep(double deltaT, const SubStepHooks& hooks) {
+  if (settings_.incompressible) {
+    incompressibleStep(deltaT, hooks);
+    return;
+  }
   if (!settings_.dualCriteria) {
     throw Error("flow: advectionStep() is timeStepping dualCriteria's");
   }

@@ -1,0 +1,273 @@
+// The pressure of implicit incompressible SPH (IncompressiblePressure.h gives the equations).
+#include "sph/IncompressiblePressure.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <Eigen/Geometry>
+
+#include "particles/FieldNames.h"
+#include "particles/WendlandKernel.h"
+
+namespace sphcast {
+
+template <int Dim>
+Real kernelSumOnLattice(Real supportRadius, Real spacing) {
+  const WendlandC2Kernel<Dim> kernel(supportRadius);
+  const int reach = static_cast<int>(std::ceil(supportRadius / spacing));
+  const int reachZ = Dim == 3 ? reach : 0;
+  Real sum = 0;
+  for (int a = -reach; a <= reach; ++a) {
+    for (int b = -reach; b <= reach; ++b) {
+      for (int c = -reachZ; c <= reachZ; ++c) {
+        sum += kernel.value(spacing * std::sqrt(Real(a * a + b * b + c * c)));
+      }
+    }
+  }
+  return sum * std::pow(spacing, Dim);
+}
+template Real kernelSumOnLattice<2>(Real, Real);
+template Real kernelSumOnLattice<3>(Real, Real);
+
+template <int Dim>
+IncompressibleReport IncompressiblePressure::solve(ParticleCloud& fluid,
+                                                   const Neighbourhood& neighbourhood,
+                                                   const std::vector<PressureWall>& walls,
+                                                   const std::vector<bool>& measured,
+                                                   const std::vector<Vector>& predicted,
+                                                   const Vector& gravity, Real supportRadius,
+                                                   Real spacing,
+                                                   const PeriodicBox& periodic, Real dt) {
+  const WendlandC2Kernel<Dim> kernel(supportRadius);
+  const auto& x = fluid.positions();
+  const auto& mass = fluid.scalarField(field::mass);
+  const auto& restDensity = fluid.scalarField(field::restDensity);
+  auto& rho = fluid.scalarField(field::rho);
+  auto& p = fluid.scalarField(field::p);
+  const Real* frozen =
+      fluid.hasScalarField(field::frozen) ? fluid.scalarField(field::frozen).data() : nullptr;
+  auto held = [frozen](std::size_t i) { return frozen && frozen[i] != 0; };
+  const NeighbourList& fluidPairs = neighbourhood.pairs(fluid, fluid);
+  const std::size_t n = x.size();
+  const std::size_t owned = fluid.ownedSize();
+  const Real dt2 = dt * dt;
+  const Real selfWeight = kernel.value(0);
+  // the kernel sum of a particle inside the lattice at dx: 1.0051 (2D) and 1.0031 (3D) at
+  // h = 3 dx, not 1; the summed density is read against it, so that the lattice particles are
+  // at rest start at rest (Wendland's sum over a finite lattice, exact to round-off)
+  const Real latticeSum = kernelSumOnLattice<Dim>(supportRadius, spacing);
+  const Real toDensity = 1 / latticeSum;
+  diagonal_.assign(n, 0);
+  source_.assign(n, 0);
+  pressureAcceleration_.assign(n, Vector::Zero());
+  compression_.assign(owned, 0);
+  wallForce_.resize(walls.size());
+  wallTorque_.resize(walls.size());
+  IncompressibleReport report;
+
+  withSeparation(periodic, [&](auto separation) {
+    // The summed density, then the advected density's source and the diagonal (they need the
+    // neighbours' densities: the halo's from their owners).
+#pragma omp parallel for schedule(static)
+    for (std::size_t i = 0; i < owned; ++i) {
+      Real sum = mass[i] * selfWeight;  // of the fluid and the walls: rho_i times latticeSum
+      for (const std::uint32_t j : fluidPairs.of(i)) {
+        sum += mass[j] * kernel.value(separation(x[i], x[j]).norm());
+      }
+      for (const PressureWall& wall : walls) {
+        const auto& wallX = *wall.position;
+        const auto& volume = *wall.volume;
+        for (const std::uint32_t b : wall.pairs->of(i)) {
+          sum += restDensity[i] * volume[b] * kernel.value(separation(x[i], wallX[b]).norm());
+        }
+      }
+      rho[i] = std::max(sum * toDensity, restDensity[i]);
+      if (!held(i)) p[i] *= Real(0.5);  // the warm start
+    }
+    neighbourhood.syncHalo(fluid, rho);
+#pragma omp parallel for schedule(static)
+    for (std::size_t i = 0; i < owned; ++i) {
+      if (held(i)) {
+        p[i] = 0;
+        continue;
+      }
+      const Real rho2 = rho[i] * rho[i];
+      Vector fluidGradient = Vector::Zero();  // sum m_j grad W_ij
+      Vector wallGradient = Vector::Zero();   // sum psi_b grad W_ib
+      Real divergence = 0;                    // of the predicted velocity, times -rho
+      Real crossTerms = 0;                    // sum over moving j of m_j |grad W_ij|^2
+      for (const std::uint32_t j : fluidPairs.of(i)) {
+        const Vector xij = separation(x[i], x[j]);
+        const Vector gradient = kernel.derivativeOverDistance(xij.norm()) * xij;
+        const Real mj = mass[j] * toDensity;
+        fluidGradient += mj * gradient;
+        divergence += mj * (predicted[i] - predicted[j]).dot(gradient);
+        if (!held(j)) crossTerms += mj * gradient.squaredNorm();
+      }
+      for (const PressureWall& wall : walls) {
+        const auto& wallX = *wall.position;
+        const auto& volume = *wall.volume;
+        for (const std::uint32_t b : wall.pairs->of(i)) {
+          const Vector xib = separation(x[i], wallX[b]);
+          const Vector gradient = kernel.derivativeOverDistance(xib.norm()) * xib;
+          const Real psi = restDensity[i] * volume[b] * toDensity;
+          wallGradient += psi * gradient;
+          const Vector relative =
+              wall.velocity ? Vector(predicted[i] - (*wall.velocity)[b]) : predicted[i];
+          divergence += psi * relative.dot(gradient);
+        }
+      }
+      source_[i] = restDensity[i] - (rho[i] + dt * divergence);
+      diagonal_[i] =
+          -dt2 / rho2 *
+          ((fluidGradient + wallGradient).squaredNorm() +
+           mass[i] * toDensity * crossTerms);
+    }
+    neighbourhood.syncHalo(fluid, p);
+
+    // p_b of the present p: the fluid's within h of each wall particle, weighted by W, with
+    // the hydrostatic term of g - a_wall (a halo wall particle's from its owner)
+    wallPressure_.resize(walls.size());
+    auto extrapolateWallPressure = [&]() {
+      for (std::size_t w = 0; w < walls.size(); ++w) {
+        const auto& wallX = *walls[w].position;
+        const NeighbourList& around = *walls[w].around;
+        const Vector* wallAcceleration =
+            walls[w].acceleration ? walls[w].acceleration->data() : nullptr;
+        wallPressure_[w].resize(wallX.size());
+        Real* wallPressure = wallPressure_[w].data();
+#pragma omp parallel for schedule(static)
+        for (std::size_t b = 0; b < wallX.size(); ++b) {
+          Real weight = 0, pressure = 0;
+          Vector densityMoment = Vector::Zero();
+          for (const std::uint32_t f : around.of(b)) {
+            const Vector xbf = separation(wallX[b], x[f]);
+            const Real wbf = kernel.value(xbf.norm());
+            weight += wbf;
+            pressure += p[f] * wbf;
+            densityMoment += (rho[f] * wbf) * xbf;
+          }
+          const Vector felt = wallAcceleration ? Vector(gravity - wallAcceleration[b]) : gravity;
+          wallPressure[b] =
+              weight > 0 ? std::max((pressure + felt.dot(densityMoment)) / weight, Real(0))
+                         : Real(0);
+        }
+        neighbourhood.syncHalo(*walls[w].cloud, wallPressure_[w]);
+      }
+    };
+
+    // a^p of the present p (the owned; the halo's from their owners)
+    auto pressureAccelerations = [&](bool withLoads) {
+      extrapolateWallPressure();
+#pragma omp parallel for schedule(static)
+      for (std::size_t i = 0; i < owned; ++i) {
+        if (held(i)) {
+          pressureAcceleration_[i].setZero();
+          continue;
+        }
+        const Real pi = p[i] / (rho[i] * rho[i]);
+        Vector a = Vector::Zero();
+        for (const std::uint32_t j : fluidPairs.of(i)) {
+          const Vector xij = separation(x[i], x[j]);
+          a -= (mass[j] * toDensity * (pi + p[j] / (rho[j] * rho[j])) *
+                kernel.derivativeOverDistance(xij.norm())) *
+               xij;
+        }
+        for (std::size_t w = 0; w < walls.size(); ++w) {
+          const auto& wallX = *walls[w].position;
+          const auto& volume = *walls[w].volume;
+          const Real* wallPressure = wallPressure_[w].data();
+          const bool load = withLoads && measured[w];
+          Vector force = Vector::Zero(), torque = Vector::Zero();
+          for (const std::uint32_t b : walls[w].pairs->of(i)) {
+            const Vector xib = separation(x[i], wallX[b]);
+            const Real pb = wallPressure[b] / (rho[i] * rho[i]);  // the mirror's density rho_i
+            const Vector term = (restDensity[i] * volume[b] * toDensity * (pi + pb) *
+                                 kernel.derivativeOverDistance(xib.norm())) *
+                                xib;
+            a -= term;
+            if (load) {  // what the fluid particle puts on the wall particle
+                force += mass[i] * term;
+              torque += wallX[b].cross(Vector(mass[i] * term));
+            }
+          }
+          if (load) {
+            wallForce_[w][i] = force;
+            wallTorque_[w][i] = torque;
+          }
+        }
+        pressureAcceleration_[i] = a;
+      }
+      neighbourhood.syncHalo(fluid, pressureAcceleration_);
+    };
+
+    const Real omega = settings_.relaxation;
+    const double tolerance = settings_.densityTolerance;
+    std::vector<double> sums(2);
+    for (report.iterations = 0; report.iterations < settings_.maxIterations;) {
+      pressureAccelerations(false);
+#pragma omp parallel for schedule(static)
+      for (std::size_t i = 0; i < owned; ++i) {
+        if (held(i)) continue;
+        Real product = 0;  // (A p)_i
+        for (const std::uint32_t j : fluidPairs.of(i)) {
+          const Vector xij = separation(x[i], x[j]);
+          product += mass[j] * toDensity * (pressureAcceleration_[i] - pressureAcceleration_[j])
+                                   .dot(kernel.derivativeOverDistance(xij.norm()) * xij);
+        }
+        for (const PressureWall& wall : walls) {
+          const auto& wallX = *wall.position;
+          const auto& volume = *wall.volume;
+          for (const std::uint32_t b : wall.pairs->of(i)) {
+            const Vector xib = separation(x[i], wallX[b]);
+            product += restDensity[i] * volume[b] * toDensity *
+                       pressureAcceleration_[i].dot(kernel.derivativeOverDistance(xib.norm()) * xib);
+          }
+        }
+        product *= dt2;
+        // the density the present p leaves, against the rest density (compression only: a
+        // free surface's particles short of neighbours are at p = 0)
+        compression_[i] = std::max<double>(product - source_[i], 0) / restDensity[i];
+        const Real updated =
+            diagonal_[i] < 0 ? p[i] + omega * (source_[i] - product) / diagonal_[i] : Real(0);
+        p[i] = std::max(updated, Real(0));
+      }
+      neighbourhood.syncHalo(fluid, p);
+      ++report.iterations;
+      double total = 0, largest = 0, moving = 0;  // in particle order: the same on any threads
+      for (std::size_t i = 0; i < owned; ++i) {
+        if (held(i)) continue;
+        total += compression_[i];
+        largest = std::max(largest, compression_[i]);
+        moving += 1;
+      }
+      sums[0] = total;
+      sums[1] = moving;
+      neighbourhood.sumOverRanks(sums);
+      report.meanCompression = sums[1] > 0 ? sums[0] / sums[1] : 0;
+      report.largestCompression = neighbourhood.maxOverRanks(largest);
+      if (report.iterations >= settings_.minIterations && report.meanCompression <= tolerance) {
+        break;
+      }
+    }
+    report.converged = report.meanCompression <= tolerance;
+    for (std::size_t w = 0; w < walls.size(); ++w) {
+      if (!measured[w]) continue;
+      wallForce_[w].assign(n, Vector::Zero());
+      wallTorque_[w].assign(n, Vector::Zero());
+    }
+    pressureAccelerations(true);  // of the p the step takes, with the walls' loads
+  });
+  return report;
+}
+
+template IncompressibleReport IncompressiblePressure::solve<2>(
+    ParticleCloud&, const Neighbourhood&, const std::vector<PressureWall>&,
+    const std::vector<bool>&, const std::vector<Vector>&, const Vector&, Real, Real,
+    const PeriodicBox&, Real);
+template IncompressibleReport IncompressiblePressure::solve<3>(
+    ParticleCloud&, const Neighbourhood&, const std::vector<PressureWall>&,
+    const std::vector<bool>&, const std::vector<Vector>&, const Vector&, Real, Real,
+    const PeriodicBox&, Real);
+
+}  // namespace sphcast
