@@ -254,6 +254,34 @@ void RigidBody::kickAndDrift(double deltaT, double timeAfter) {
   updateParticleVelocities(false);
 }
 
+void RigidBody::predictParticleVelocities(const Vector& fluidForce, const Vector& fluidTorque,
+                                          double deltaT, double timeAfter,
+                                          std::vector<Vector>& u) const {
+  const auto& x = cloud_.positions();
+  u.resize(x.size());
+  Vector velocity = Vector::Zero();
+  Vector omega = Vector::Zero();
+  if (settings_.prescribed()) {
+    velocity = (prescribedDisplacement(timeAfter) - prescribedDisplacement(timeAfter - deltaT)) /
+               static_cast<Real>(deltaT);
+  } else if (!held(timeAfter - deltaT)) {
+    const Vector force =
+        fluidForce + static_cast<Real>(mass_) * gravity_ + settings_.appliedForceAt(timeAfter);
+    Vector acceleration = constrained(force / static_cast<Real>(mass_));
+    if (atStop_) {  // the stop holds what pushes into it
+      const Vector direction = stopDirection();
+      acceleration -= std::max(acceleration.dot(direction), Real(0)) * direction;
+    }
+    velocity = velocity_ + static_cast<Real>(deltaT) * acceleration;
+    if (!settings_.rotationLocked) {
+      omega = inverseInertiaTimes(angularMomentum_ + static_cast<Real>(deltaT) *
+                                                         (fluidTorque - centre_.cross(fluidForce)));
+    }
+  }
+#pragma omp parallel for schedule(static)
+  for (std::size_t k = 0; k < x.size(); ++k) u[k] = velocity + omega.cross(Vector(x[k] - centre_));
+}
+
 void RigidBody::takeImpulse(const Vector& impulse, const Vector& angularImpulse, double deltaT,
                             double time) {
   if (settings_.prescribed() || held(time - deltaT)) return;  // the machine, or the holder

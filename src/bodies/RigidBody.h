@@ -122,6 +122,14 @@ class RigidBody {
   // removed; the particles placed again.
   void pushBack(const Vector& displacement, const Vector& normal);
 
+  // The velocity each of the body's particles would have after a step of deltaT ending at
+  // timeAfter under the fluid's load (force; torque about the origin), with gravity, the
+  // applied load and the constraints as setLoadsAndKick and kickAndDrift take them, the body
+  // left as it is: the incompressible step's strong coupling (IncompressiblePressure.h) asks it
+  // at every iteration. A driven body's is its table's over the step, a held one's zero.
+  void predictParticleVelocities(const Vector& fluidForce, const Vector& fluidTorque,
+                                 double deltaT, double timeAfter, std::vector<Vector>& u) const;
+
   // The largest step the body allows: 0.25 sqrt(dx / |a|) (the particles' acceleration limit).
   double stableDeltaT(double spacing) const;
 

@@ -134,6 +134,12 @@ void CastingSolver::flowAdvectionStep(double deltaT) {
     models_.movingMolds.kick(dt, at(elapsed));
     models_.pouringInlets.holdBuffers();
   };
+  if (!models_.movingMolds.empty()) {  // the incompressible step's coupling
+    hooks.predict = [&](const ParticleCloud& wall, const Vector& force, const Vector& torque,
+                        double dt, std::vector<Vector>& velocity) {
+      return models_.movingMolds.predictVelocities(wall, force, torque, dt, end, velocity);
+    };
+  }
   models_.flow->advectionStep(deltaT, hooks);
   models_.pouringInlets.pour(time_.value(), models_.decomposition.get());
 }

@@ -285,7 +285,9 @@ void CastingSolver::setUpFlow() {
          << "    wall clearance " << settings.wallClearance
          << " dx: fluid particles closer to a wall surface are moved back to it\n";
   const SoundSpeedCheck soundSpeed = checkSoundSpeed(settings, fluid, walls, comm_);
-  if (soundSpeed.tooLow) {
+  if (settings.incompressible) {
+    info() << "    no sound speed: the pressure is solved (soundSpeed sets nothing)\n";
+  } else if (soundSpeed.tooLow) {
     if (comm_.master()) warning(soundSpeed.message);
   } else {
     info() << "    " << soundSpeed.message << '\n';

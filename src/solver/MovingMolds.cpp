@@ -149,6 +149,17 @@ void MovingMolds::kick(double deltaT, double time) {
   }
 }
 
+bool MovingMolds::predictVelocities(const ParticleCloud& wall, const Vector& force,
+                                    const Vector& torque, double deltaT, double timeAfter,
+                                    std::vector<Vector>& velocity) const {
+  for (const auto& body : bodies_) {
+    if (&body->cloud() != &wall) continue;
+    body->predictParticleVelocities(force, torque, deltaT, timeAfter, velocity);
+    return true;
+  }
+  return false;
+}
+
 double MovingMolds::limitStep(double stable, double spacing, std::string& limiter) const {
   for (const auto& body : bodies_) {
     const double limit = body->stableDeltaT(spacing);

@@ -47,6 +47,11 @@ class MovingMolds {
   void keepOutOfMolds(Real spacing);
   void pushByClearance(double deltaT, double time);
   void kick(double deltaT, double time);
+  // The incompressible step's coupling (WeaklyCompressibleFlow::SubStepHooks::predict): the
+  // velocities of the particles of the body on `wall` after a step of deltaT ending at
+  // timeAfter under the fluid's load (summed over the ranks); false when no body moves it.
+  bool predictVelocities(const ParticleCloud& wall, const Vector& force, const Vector& torque,
+                         double deltaT, double timeAfter, std::vector<Vector>& velocity) const;
 
   // The shortest of their acceleration limits, below `stable`, naming the body in `limiter`.
   double limitStep(double stable, double spacing, std::string& limiter) const;

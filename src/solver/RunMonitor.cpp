@@ -34,14 +34,19 @@ void RunMonitor::logStep(bool printBlock, bool cooling) {
     const FluidSummary summary = summarizeFluid(*models_.fluid, comm_);
     const FlowSettings& settings = flow_.settings;
     const double spacing = models_.fluid->attributes().at("spacing");
-    const double courant = (static_cast<double>(settings.soundSpeed) + summary.largestSpeed) *
-                           time_.deltaT() / spacing;
+    // the incompressible flow's Courant number is the flow speed's; it has no Mach number
+    const double signalSpeed =
+        (settings.incompressible ? 0 : static_cast<double>(settings.soundSpeed)) +
+        summary.largestSpeed;
+    const double courant = signalSpeed * time_.deltaT() / spacing;
     std::ostringstream line;
     line.precision(6);
     line << "Step " << time_.timeIndex() << "  Courant " << courant << "  max|U| "
-         << summary.largestSpeed << " m/s  Mach "
-         << summary.largestSpeed / static_cast<double>(settings.soundSpeed) << '\n'
-         << "Density range " << summary.lowestDensity << " .. " << summary.highestDensity
+         << summary.largestSpeed << " m/s";
+    if (!settings.incompressible) {
+      line << "  Mach " << summary.largestSpeed / static_cast<double>(settings.soundSpeed);
+    }
+    line << '\n' << "Density range " << summary.lowestDensity << " .. " << summary.highestDensity
          << " kg/m^3 (" << 100 * summary.lowestDeviation << " .. " << 100 * summary.highestDeviation
          << " % of rho_s)  p " << summary.lowestPressure << " .. " << summary.highestPressure
          << " Pa\n"
@@ -50,6 +55,12 @@ void RunMonitor::logStep(bool printBlock, bool cooling) {
          << comm_.sum(static_cast<std::int64_t>(models_.flow->lastWallClearance().corrected))
          << '\n';
     const FlowWork& work = models_.flow->work();
+    if (work.pressureSolves > 0) {
+      const IncompressibleReport& last = models_.flow->lastPressureSolve();
+      line << "Pressure solved in " << last.iterations << " iterations: mean compression "
+           << 100 * last.meanCompression << " %, largest " << 100 * last.largestCompression
+           << " %\n";
+    }
     if (work.implicitViscousSteps > 0) {  // (every rank takes the same steps alike)
       const ImplicitViscosityReport& last = models_.flow->lastViscousSolve();
       line << "Viscosity solved implicitly in " << work.implicitViscousSteps << " of "

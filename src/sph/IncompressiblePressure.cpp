@@ -112,6 +112,7 @@ IncompressibleReport IncompressiblePressure::solve(ParticleCloud& fluid,
           const Vector gradient = kernel.derivativeOverDistance(xib.norm()) * xib;
           const Real psi = restDensity[i] * volume[b] * toDensity;
           wallGradient += psi * gradient;
+          if (wall.respond) continue;  // its velocity is the iteration's (coupledDivergence)
           const Vector relative =
               wall.velocity ? Vector(predicted[i] - (*wall.velocity)[b]) : predicted[i];
           divergence += psi * relative.dot(gradient);
@@ -157,11 +158,17 @@ IncompressibleReport IncompressiblePressure::solve(ParticleCloud& fluid,
     };
 
     // a^p of the present p (the owned; the halo's from their owners)
+    // the per-particle loads of the walls measured (every pass for a responding wall's)
+    for (std::size_t w = 0; w < walls.size(); ++w) {
+      if (!measured[w]) continue;
+      wallForce_[w].assign(n, Vector::Zero());
+      wallTorque_[w].assign(n, Vector::Zero());
+    }
     auto pressureAccelerations = [&](bool withLoads) {
       extrapolateWallPressure();
 #pragma omp parallel for schedule(static)
       for (std::size_t i = 0; i < owned; ++i) {
-        if (held(i)) {
+        if (held(i)) {  // no pressure force, none on the walls
           pressureAcceleration_[i].setZero();
           continue;
         }
@@ -177,7 +184,7 @@ IncompressibleReport IncompressiblePressure::solve(ParticleCloud& fluid,
           const auto& wallX = *walls[w].position;
           const auto& volume = *walls[w].volume;
           const Real* wallPressure = wallPressure_[w].data();
-          const bool load = withLoads && measured[w];
+          const bool load = measured[w] && (withLoads || walls[w].respond);
           Vector force = Vector::Zero(), torque = Vector::Zero();
           for (const std::uint32_t b : walls[w].pairs->of(i)) {
             const Vector xib = separation(x[i], wallX[b]);
@@ -187,7 +194,7 @@ IncompressibleReport IncompressiblePressure::solve(ParticleCloud& fluid,
                                 xib;
             a -= term;
             if (load) {  // what the fluid particle puts on the wall particle
-                force += mass[i] * term;
+              force += mass[i] * term;
               torque += wallX[b].cross(Vector(mass[i] * term));
             }
           }
@@ -201,11 +208,51 @@ IncompressibleReport IncompressiblePressure::solve(ParticleCloud& fluid,
       neighbourhood.syncHalo(fluid, pressureAcceleration_);
     };
 
+    // The responding walls' velocities at the step's end under the present p's loads (each
+    // body's summed in particle order, then over the ranks: every rank predicts alike).
+    wallVelocity_.resize(walls.size());
+    std::vector<double> bodyLoads;
+    auto respond = [&]() {
+      for (std::size_t w = 0; w < walls.size(); ++w) {
+        if (!walls[w].respond) continue;
+        Vector force = Vector::Zero(), torque = Vector::Zero();
+        for (std::size_t i = 0; i < owned; ++i) {
+          force += wallForce_[w][i];
+          torque += wallTorque_[w][i];
+        }
+        bodyLoads.assign({force[0], force[1], force[2], torque[0], torque[1], torque[2]});
+        neighbourhood.sumOverRanks(bodyLoads);
+        walls[w].respond(Vector(Real(bodyLoads[0]), Real(bodyLoads[1]), Real(bodyLoads[2])),
+                         Vector(Real(bodyLoads[3]), Real(bodyLoads[4]), Real(bodyLoads[5])),
+                         wallVelocity_[w]);
+      }
+    };
+    // -dt sum_b psi_b (v*_i - u_b) . grad W_ib over the responding walls: the part of rho0 -
+    // rho*_i that the iteration's wall velocities make
+    auto coupledSource = [&](std::size_t i) {
+      Real divergence = 0;
+      for (std::size_t w = 0; w < walls.size(); ++w) {
+        if (!walls[w].respond) continue;
+        const auto& wallX = *walls[w].position;
+        const auto& volume = *walls[w].volume;
+        const Vector* u = wallVelocity_[w].data();
+        for (const std::uint32_t b : walls[w].pairs->of(i)) {
+          const Vector xib = separation(x[i], wallX[b]);
+          divergence += restDensity[i] * volume[b] * toDensity *
+                        (predicted[i] - u[b]).dot(kernel.derivativeOverDistance(xib.norm()) * xib);
+        }
+      }
+      return -dt * divergence;
+    };
+    const bool coupled = std::any_of(walls.begin(), walls.end(),
+                                     [](const PressureWall& wall) { return bool(wall.respond); });
+
     const Real omega = settings_.relaxation;
     const double tolerance = settings_.densityTolerance;
     std::vector<double> sums(2);
     for (report.iterations = 0; report.iterations < settings_.maxIterations;) {
       pressureAccelerations(false);
+      if (coupled) respond();
 #pragma omp parallel for schedule(static)
       for (std::size_t i = 0; i < owned; ++i) {
         if (held(i)) continue;
@@ -225,11 +272,12 @@ IncompressibleReport IncompressiblePressure::solve(ParticleCloud& fluid,
           }
         }
         product *= dt2;
+        const Real source = coupled ? source_[i] + coupledSource(i) : source_[i];
         // the density the present p leaves, against the rest density (compression only: a
         // free surface's particles short of neighbours are at p = 0)
-        compression_[i] = std::max<double>(product - source_[i], 0) / restDensity[i];
+        compression_[i] = std::max<double>(product - source, 0) / restDensity[i];
         const Real updated =
-            diagonal_[i] < 0 ? p[i] + omega * (source_[i] - product) / diagonal_[i] : Real(0);
+            diagonal_[i] < 0 ? p[i] + omega * (source - product) / diagonal_[i] : Real(0);
         p[i] = std::max(updated, Real(0));
       }
       neighbourhood.syncHalo(fluid, p);
@@ -251,11 +299,6 @@ IncompressibleReport IncompressiblePressure::solve(ParticleCloud& fluid,
       }
     }
     report.converged = report.meanCompression <= tolerance;
-    for (std::size_t w = 0; w < walls.size(); ++w) {
-      if (!measured[w]) continue;
-      wallForce_[w].assign(n, Vector::Zero());
-      wallTorque_[w].assign(n, Vector::Zero());
-    }
     pressureAccelerations(true);  // of the p the step takes, with the walls' loads
   });
   return report;

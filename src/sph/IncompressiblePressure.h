@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -50,6 +51,12 @@ struct PressureWall {
   const std::vector<Vector>* acceleration;  // null: at rest
   const NeighbourList* pairs;               // fluid particle -> wall particles within h
   const NeighbourList* around;              // wall particle -> fluid particles within h
+  // A body that answers the pressure within the solve (strong coupling): given the pressure's
+  // load on it (force, torque about the origin) it writes its particles' velocities at the
+  // step's end, which the iteration's density source takes. Null: the wall keeps `velocity`.
+  // Needs the wall measured.
+  std::function<void(const Vector& force, const Vector& torque, std::vector<Vector>& velocity)>
+      respond;
 };
 
 // Implicit incompressible SPH (Ihmsen, Cornelis, Solenthaler, Horvath & Teschner 2014, IEEE
@@ -112,6 +119,7 @@ class IncompressiblePressure {
   std::vector<double> compression_;  // per particle, for sums in particle order
   std::vector<std::vector<Vector>> wallForce_, wallTorque_;
   std::vector<std::vector<Real>> wallPressure_;  // p_b, per wall
+  std::vector<std::vector<Vector>> wallVelocity_;  // a responding wall's, per wall
 };
 
 }  // namespace sphcast

@@ -207,6 +207,13 @@ class WeaklyCompressibleFlow {
   struct SubStepHooks {
     std::function<void(double dt, double elapsed)> drift;
     std::function<void(double dt, double elapsed)> kick;
+    // The incompressible step's strong coupling (IncompressiblePressure.h): for a measured wall
+    // that is a body, the velocities its particles would have at the step's end under the
+    // fluid's whole load (force, torque about the origin; every rank's summed); false for a
+    // wall that is no body (it keeps its U).
+    std::function<bool(const ParticleCloud& wall, const Vector& force, const Vector& torque,
+                       double dt, std::vector<Vector>& velocity)>
+        predict;
   };
   // With flow { model incompressible; } the step is incompressibleStep's instead.
   void advectionStep(double deltaT, const SubStepHooks& hooks = {});

@@ -36,6 +36,14 @@ void WeaklyCompressibleFlow::incompressibleStep(double deltaT, const SubStepHook
     neighbourhood_.syncHalo(fluid_, {field::U});
   });
   if (viscosityImplicit_) solveViscosity(dt);  // v* from the implicit viscous solve
+  // the loads of the step's other passes on the measured walls, every rank's: a body's
+  // prediction adds the pressure's to them
+  std::vector<double> otherLoads;
+  for (std::size_t w = 0; w < walls_.size(); ++w) {
+    for (int a = 0; a < 3; ++a) otherLoads.push_back(wallLoads_[w].force[a]);
+    for (int a = 0; a < 3; ++a) otherLoads.push_back(wallLoads_[w].torque[a]);
+  }
+  if (hooks.predict) neighbourhood_.sumOverRanks(otherLoads);
   std::vector<PressureWall> walls;
   for (std::size_t w = 0; w < walls_.size(); ++w) {
     const ParticleCloud& wall = *walls_[w];
@@ -44,7 +52,22 @@ void WeaklyCompressibleFlow::incompressibleStep(double deltaT, const SubStepHook
          wall.hasVectorField(field::U) ? &wall.vectorField(field::U) : nullptr,
          wall.hasVectorField(field::acceleration) ? &wall.vectorField(field::acceleration)
                                                   : nullptr,
-         &wallPairs(w), &fluidAroundWall(w)});
+         &wallPairs(w), &fluidAroundWall(w), nullptr});
+    if (!hooks.predict || !loadMeasured_[w]) continue;
+    const Vector otherForce(Real(otherLoads[6 * w]), Real(otherLoads[6 * w + 1]),
+                            Real(otherLoads[6 * w + 2]));
+    const Vector otherTorque(Real(otherLoads[6 * w + 3]), Real(otherLoads[6 * w + 4]),
+                             Real(otherLoads[6 * w + 5]));
+    walls.back().respond = [&, w, otherForce, otherTorque](const Vector& force,
+                                                           const Vector& torque,
+                                                           std::vector<Vector>& velocity) {
+      if (hooks.predict(*walls_[w], force + otherForce, torque + otherTorque, deltaT, velocity)) {
+        return;
+      }
+      const ParticleCloud& mold = *walls_[w];  // no body: as it moves
+      velocity = mold.hasVectorField(field::U) ? mold.vectorField(field::U)
+                                               : std::vector<Vector>(mold.size(), Vector::Zero());
+    };
   }
   const Real spacing = static_cast<Real>(fluid_.attributes().at("spacing"));
   addWallTime(timings_.rates, [&] {

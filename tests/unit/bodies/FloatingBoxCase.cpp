@@ -73,7 +73,7 @@ ParticleCloud tankWalls3D(int columns, int height, Real dx) {
 }  // namespace
 
 Floating floatBox(int dimension, double densityRatio, double seconds, int coarsening,
-                  int offsetColumns) {
+                  int offsetColumns, bool incompressible) {
   const Real dx = Real(0.002) * coarsening;
   const int columns = 60 / coarsening, rows = 24 / coarsening;
   const int boxColumns = 16 / coarsening, boxRows = 8 / coarsening;
@@ -106,6 +106,7 @@ Floating floatBox(int dimension, double densityRatio, double seconds, int coarse
   settings.supportRadius = 3 * dx;
   settings.soundSpeed = c;
   settings.gravity = -g * Vector::Unit(up);
+  settings.incompressible = incompressible;
   Neighbourhood neighbourhood(settings.supportRadius, settings.periodic);
   RigidBodySettings bodySettings;
   bodySettings.name = bodySettings.cloud = "box";
@@ -125,14 +126,32 @@ Floating floatBox(int dimension, double densityRatio, double seconds, int coarse
   while (time < seconds) {
     const double dt = std::min(flow.stepLimits(0.25).smallest(limiter), body.stableDeltaT(dx));
     time += dt;
-    flow.kickAndDrift(dt);
-    body.kickAndDrift(dt, time);
-    neighbourhood.update();
-    flow.keepClearOfWalls();
     const WallLoad& load = flow.wallLoad(box);
-    body.takeImpulse(load.clearanceImpulse, load.clearanceAngularImpulse, dt, time);
-    flow.computeRatesAndKick(dt);
-    body.setLoadsAndKick(load.force, load.torque, dt, time);
+    if (incompressible) {  // the step, then the search
+      WeaklyCompressibleFlow::SubStepHooks hooks;
+      hooks.kick = [&](double step, double) {
+        body.setLoadsAndKick(load.force, load.torque, step, time);
+      };
+      hooks.drift = [&](double step, double) { body.kickAndDrift(step, time); };
+      hooks.predict = [&](const ParticleCloud& wall, const Vector& force, const Vector& torque,
+                          double step, std::vector<Vector>& velocity) {
+        if (&wall != &box) return false;
+        body.predictParticleVelocities(force, torque, step, time, velocity);
+        return true;
+      };
+      flow.advectionStep(dt, hooks);
+      neighbourhood.update();
+      flow.keepClearOfWalls();
+      body.takeImpulse(load.clearanceImpulse, load.clearanceAngularImpulse, dt, time);
+    } else {
+      flow.kickAndDrift(dt);
+      body.kickAndDrift(dt, time);
+      neighbourhood.update();
+      flow.keepClearOfWalls();
+      body.takeImpulse(load.clearanceImpulse, load.clearanceAngularImpulse, dt, time);
+      flow.computeRatesAndKick(dt);
+      body.setLoadsAndKick(load.force, load.torque, dt, time);
+    }
     Vector sideways = body.centre() - start;
     sideways[up] = 0;
     result.drift = std::max(result.drift, double(sideways.norm()) / dx);

@@ -17,8 +17,9 @@ struct Floating {
 
 // The tank 120 mm wide (and deep, in 3D) with 48 mm of liquid, the box 32 mm wide (and deep) and
 // 16 mm high, at spacing 0.002 x coarsening, its centre offsetColumns spacings off the tank's
-// in x, afloat for `seconds`. Up is y in 2D, z in 3D.
+// in x, afloat for `seconds`. Up is y in 2D, z in 3D. incompressible: flow { model
+// incompressible; } (the bodies kicked and drifted by the step's hooks).
 Floating floatBox(int dimension, double densityRatio, double seconds, int coarsening,
-                  int offsetColumns = 0);
+                  int offsetColumns = 0, bool incompressible = false);
 
 }  // namespace sphcast::testing
