@@ -60,7 +60,6 @@ IncompressibleReport IncompressiblePressure::solve(ParticleCloud& fluid,
   diagonal_.assign(n, 0);
   source_.assign(n, 0);
   pressureAcceleration_.assign(n, Vector::Zero());
-  compression_.assign(owned, 0);
   wallForce_.resize(walls.size());
   wallTorque_.resize(walls.size());
   IncompressibleReport report;
@@ -126,10 +125,11 @@ IncompressibleReport IncompressiblePressure::solve(ParticleCloud& fluid,
     }
     neighbourhood.syncHalo(fluid, p);
 
-    // p_b of the present p: the fluid's within h of each wall particle, weighted by W, with
-    // the hydrostatic term of g - a_wall (a halo wall particle's from its owner)
+    // p_b of a pressure q: the fluid's within h of each wall particle, weighted by W, with the
+    // hydrostatic term of g - a_wall, at least 0 (a halo wall particle's from its owner).
+    // (Unclipped, the squeeze film's Jacobi iteration diverged.)
     wallPressure_.resize(walls.size());
-    auto extrapolateWallPressure = [&]() {
+    auto extrapolateWallPressure = [&](const std::vector<Real>& q) {
       for (std::size_t w = 0; w < walls.size(); ++w) {
         const auto& wallX = *walls[w].position;
         const NeighbourList& around = *walls[w].around;
@@ -145,7 +145,7 @@ IncompressibleReport IncompressiblePressure::solve(ParticleCloud& fluid,
             const Vector xbf = separation(wallX[b], x[f]);
             const Real wbf = kernel.value(xbf.norm());
             weight += wbf;
-            pressure += p[f] * wbf;
+            pressure += q[f] * wbf;
             densityMoment += (rho[f] * wbf) * xbf;
           }
           const Vector felt = wallAcceleration ? Vector(gravity - wallAcceleration[b]) : gravity;
@@ -157,26 +157,26 @@ IncompressibleReport IncompressiblePressure::solve(ParticleCloud& fluid,
       }
     };
 
-    // a^p of the present p (the owned; the halo's from their owners)
     // the per-particle loads of the walls measured (every pass for a responding wall's)
     for (std::size_t w = 0; w < walls.size(); ++w) {
       if (!measured[w]) continue;
       wallForce_[w].assign(n, Vector::Zero());
       wallTorque_[w].assign(n, Vector::Zero());
     }
-    auto pressureAccelerations = [&](bool withLoads) {
-      extrapolateWallPressure();
+    // a^p of a pressure q (the owned; the halo's from their owners)
+    auto pressureAccelerations = [&](const std::vector<Real>& q, bool withLoads) {
+      extrapolateWallPressure(q);
 #pragma omp parallel for schedule(static)
       for (std::size_t i = 0; i < owned; ++i) {
         if (held(i)) {  // no pressure force, none on the walls
           pressureAcceleration_[i].setZero();
           continue;
         }
-        const Real pi = p[i] / (rho[i] * rho[i]);
+        const Real pi = q[i] / (rho[i] * rho[i]);
         Vector a = Vector::Zero();
         for (const std::uint32_t j : fluidPairs.of(i)) {
           const Vector xij = separation(x[i], x[j]);
-          a -= (mass[j] * toDensity * (pi + p[j] / (rho[j] * rho[j])) *
+          a -= (mass[j] * toDensity * (pi + q[j] / (rho[j] * rho[j])) *
                 kernel.derivativeOverDistance(xij.norm())) *
                xij;
         }
@@ -208,7 +208,7 @@ IncompressibleReport IncompressiblePressure::solve(ParticleCloud& fluid,
       neighbourhood.syncHalo(fluid, pressureAcceleration_);
     };
 
-    // The responding walls' velocities at the step's end under the present p's loads (each
+    // The responding walls' velocities at the step's end under the last pass's loads (each
     // body's summed in particle order, then over the ranks: every rank predicts alike).
     wallVelocity_.resize(walls.size());
     std::vector<double> bodyLoads;
@@ -228,7 +228,7 @@ IncompressibleReport IncompressiblePressure::solve(ParticleCloud& fluid,
       }
     };
     // -dt sum_b psi_b (v*_i - u_b) . grad W_ib over the responding walls: the part of rho0 -
-    // rho*_i that the iteration's wall velocities make
+    // rho*_i that the walls' predicted velocities make
     auto coupledSource = [&](std::size_t i) {
       Real divergence = 0;
       for (std::size_t w = 0; w < walls.size(); ++w) {
@@ -247,16 +247,20 @@ IncompressibleReport IncompressiblePressure::solve(ParticleCloud& fluid,
     const bool coupled = std::any_of(walls.begin(), walls.end(),
                                      [](const PressureWall& wall) { return bool(wall.respond); });
 
-    const Real omega = settings_.relaxation;
-    const double tolerance = settings_.densityTolerance;
-    std::vector<double> sums(2);
-    for (report.iterations = 0; report.iterations < settings_.maxIterations;) {
-      pressureAccelerations(false);
+    // The residual of eq. (1) at a pressure q, r_i = rho0_i - rho*_i - (A q)_i = rho0_i minus
+    // the density q leaves (with the walls' p_b of q and the bodies' answer to q's loads), on
+    // the rows `solved` marks (0 elsewhere).
+    auto residualOf = [&](const std::vector<Real>& q, const std::vector<std::uint8_t>& solved,
+                          std::vector<Real>& r) {
+      pressureAccelerations(q, false);
       if (coupled) respond();
 #pragma omp parallel for schedule(static)
       for (std::size_t i = 0; i < owned; ++i) {
-        if (held(i)) continue;
-        Real product = 0;  // (A p)_i
+        if (!solved[i]) {
+          r[i] = 0;
+          continue;
+        }
+        Real product = 0;  // (A q)_i
         for (const std::uint32_t j : fluidPairs.of(i)) {
           const Vector xij = separation(x[i], x[j]);
           product += mass[j] * toDensity * (pressureAcceleration_[i] - pressureAcceleration_[j])
@@ -271,22 +275,19 @@ IncompressibleReport IncompressiblePressure::solve(ParticleCloud& fluid,
                        pressureAcceleration_[i].dot(kernel.derivativeOverDistance(xib.norm()) * xib);
           }
         }
-        product *= dt2;
-        const Real source = coupled ? source_[i] + coupledSource(i) : source_[i];
-        // the density the present p leaves, against the rest density (compression only: a
-        // free surface's particles short of neighbours are at p = 0)
-        compression_[i] = std::max<double>(product - source, 0) / restDensity[i];
-        const Real updated =
-            diagonal_[i] < 0 ? p[i] + omega * (source - product) / diagonal_[i] : Real(0);
-        p[i] = std::max(updated, Real(0));
+        r[i] = (coupled ? source_[i] + coupledSource(i) : source_[i]) - dt2 * product;
       }
-      neighbourhood.syncHalo(fluid, p);
-      ++report.iterations;
-      double total = 0, largest = 0, moving = 0;  // in particle order: the same on any threads
+    };
+    // The stopping measure of a residual: the mean and largest compression it leaves over the
+    // moving particles, max(-r_i, 0) / rho0_i (summed in particle order, then over the ranks).
+    std::vector<double> sums(2);
+    auto measure = [&](const std::vector<Real>& r) {
+      double total = 0, largest = 0, moving = 0;
       for (std::size_t i = 0; i < owned; ++i) {
         if (held(i)) continue;
-        total += compression_[i];
-        largest = std::max(largest, compression_[i]);
+        const double compression = std::max<double>(-r[i], 0) / restDensity[i];
+        total += compression;
+        largest = std::max(largest, compression);
         moving += 1;
       }
       sums[0] = total;
@@ -294,12 +295,28 @@ IncompressibleReport IncompressiblePressure::solve(ParticleCloud& fluid,
       neighbourhood.sumOverRanks(sums);
       report.meanCompression = sums[1] > 0 ? sums[0] / sums[1] : 0;
       report.largestCompression = neighbourhood.maxOverRanks(largest);
-      if (report.iterations >= settings_.minIterations && report.meanCompression <= tolerance) {
-        break;
+      return report.meanCompression <= settings_.densityTolerance;
+    };
+
+    std::vector<std::uint8_t> solved(n, 0);
+    for (std::size_t i = 0; i < owned; ++i) solved[i] = !held(i);
+    std::vector<Real> r(n, 0);
+    // Ihmsen et al.'s relaxed Jacobi, p >= 0 at every iteration
+    const Real omega = settings_.relaxation;
+    for (report.iterations = 0; report.iterations < settings_.maxIterations;) {
+      residualOf(p, solved, r);
+#pragma omp parallel for schedule(static)
+      for (std::size_t i = 0; i < owned; ++i) {
+        if (!solved[i]) continue;
+        p[i] = diagonal_[i] < 0 ? std::max(p[i] + omega * r[i] / diagonal_[i], Real(0)) : 0;
       }
+      neighbourhood.syncHalo(fluid, p);
+      ++report.iterations;
+      // (the measure is of the pressure before this iteration's update)
+      if (measure(r) && report.iterations >= settings_.minIterations) break;
     }
-    report.converged = report.meanCompression <= tolerance;
-    pressureAccelerations(true);  // of the p the step takes, with the walls' loads
+    report.converged = report.meanCompression <= settings_.densityTolerance;
+    pressureAccelerations(p, true);  // of the p the step takes, with the walls' loads
   });
   return report;
 }

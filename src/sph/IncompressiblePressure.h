@@ -116,7 +116,6 @@ class IncompressiblePressure {
   std::vector<Real> diagonal_;  // a_ii
   std::vector<Real> source_;    // rho0_i - rho*_i
   std::vector<Vector> pressureAcceleration_;
-  std::vector<double> compression_;  // per particle, for sums in particle order
   std::vector<std::vector<Vector>> wallForce_, wallTorque_;
   std::vector<std::vector<Real>> wallPressure_;  // p_b, per wall
   std::vector<std::vector<Vector>> wallVelocity_;  // a responding wall's, per wall

@@ -507,10 +507,15 @@ FlowStepLimits WeaklyCompressibleFlow::stepLimits(double maxCo, bool advectionSt
   // is below every other (auto: solvesViscosityImplicitly then takes the step's length for it).
   if (settings_.viscositySolver == ViscositySolver::implicitForm) {
     limits.viscous = infinite;
-  } else if (settings_.viscositySolver == ViscositySolver::automatic) {
+  } else if (settings_.viscositySolver == ViscositySolver::automatic && !settings_.incompressible) {
+    // (the incompressible step keeps the explicit limit under auto: its viscous solve comes
+    // before the pressure's, and over steps many diffusion times long that splitting let a
+    // squeezed film out twice as fast as Reynolds' (doc/physics.md §9.2))
     const double others = std::min({limits.acoustic, limits.bodyForce, limits.acceleration,
                                     limits.densityRate, limits.forceModel, limits.advection});
-    if (limits.viscous < others) limits.viscous = infinite;
+    // (an incompressible flow at rest without gravity has no other limit: its first step is
+    // the viscous one, and the flow speed sets the next)
+    if (limits.viscous < others && others < infinite) limits.viscous = infinite;
   }
   if (advectionStep && !settings_.incompressible) {
     // A whole number of acoustic sub-steps: a step of 1.1 sub-steps' length would take two

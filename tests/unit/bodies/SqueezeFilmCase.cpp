@@ -69,7 +69,7 @@ HerschelBulkleySettings halfPowerLaw(double consistency) {
 }
 
 SqueezeFilmCase::SqueezeFilmCase(const RigidBodySettings& bodySettings, double refinementLevel,
-                                 Liquid liquidKind)
+                                 Liquid liquidKind, bool incompressible)
     : liquid(liquidKind),
       plateColumns(plateColumnsOf(liquidKind)),
       refinement(refinementLevel),
@@ -111,6 +111,7 @@ SqueezeFilmCase::SqueezeFilmCase(const RigidBodySettings& bodySettings, double r
   // of the first version, 13.5 %: the liquid compressed in the gap instead of flowing out, and
   // the force read 21 % short at 4 dx)
   flowSettings.soundSpeed = 20;
+  flowSettings.incompressible = incompressible;
   neighbourhood.emplace(flowSettings.supportRadius, flowSettings.periodic);
   body.emplace(bodySettings, plate, Vector::Zero());
   flow.emplace(flowSettings, fluid, std::vector<const ParticleCloud*>{&tank, &plate},
@@ -129,12 +130,34 @@ int SqueezeFilmCase::first() const { return (spacings(columns) - spacings(plateC
 
 double SqueezeFilmCase::step(double time) {
   std::string limiter;
-  const double dt = flow->stepLimits(0.25).smallest(limiter);
+  double dt = std::min(flow->stepLimits(0.25).smallest(limiter), body->stableDeltaT(dx));
+  if (lastDeltaT > 0) dt = std::min(dt, 1.2 * lastDeltaT);  // as the solver's time control
+  lastDeltaT = dt;
+  const WallLoad& load = flow->wallLoad(plate);
+  if (flowSettings.incompressible) {  // the step with the plate in its solve, then the search
+    if (rheology) rheology->update(dt);
+    WeaklyCompressibleFlow::SubStepHooks hooks;
+    hooks.kick = [&](double step, double) {
+      body->setLoadsAndKick(load.force, load.torque, step, time + dt);
+    };
+    hooks.drift = [&](double step, double) { body->kickAndDrift(step, time + dt); };
+    hooks.predict = [&](const ParticleCloud& wall, const Vector& force, const Vector& torque,
+                        double step, std::vector<Vector>& velocity) {
+      if (&wall != &plate) return false;
+      body->predictParticleVelocities(force, torque, step, time + dt, velocity);
+      return true;
+    };
+    flow->advectionStep(dt, hooks);
+    neighbourhood->update();
+    flow->keepClearOfWalls();
+    body->takeImpulse(load.clearanceImpulse, load.clearanceAngularImpulse, dt, time + dt);
+    clearanceForce = load.clearanceImpulse.y() / dt;
+    return dt;
+  }
   flow->kickAndDrift(dt);
   body->kickAndDrift(dt, time + dt);
   neighbourhood->update();
   flow->keepClearOfWalls();
-  const WallLoad& load = flow->wallLoad(plate);
   body->takeImpulse(load.clearanceImpulse, load.clearanceAngularImpulse, dt, time + dt);
   clearanceForce = load.clearanceImpulse.y() / dt;
   if (rheology) rheology->update(dt);
@@ -168,14 +191,14 @@ double lubricationTime(double load, double consistency, double n,
 }  // namespace
 
 ClosingTimes closingTimes(Liquid liquid, double load, double refinement,
-                          const std::optional<HerschelBulkleySettings>& law) {
+                          const std::optional<HerschelBulkleySettings>& law, bool incompressible) {
   RigidBodySettings settings = plateSettings();
   settings.translation = RigidBodySettings::Translation::axis;
   settings.axis = Vector::UnitY();
   settings.rotationLocked = true;
   settings.appliedForce = {{0.0, Vector(0, -static_cast<Real>(load), 0)}};
   const auto start = std::chrono::steady_clock::now();
-  SqueezeFilmCase squeeze(settings, refinement, liquid);
+  SqueezeFilmCase squeeze(settings, refinement, liquid, incompressible);
   const Material noTables;
   if (law) {
     squeeze.rheology = std::make_unique<HerschelBulkley>(

@@ -40,7 +40,9 @@ const char* nameOf(Liquid liquid);
 struct SqueezeFilmCase {
   // the plate's motion (a prescribed displacement or a dynamic body on the y axis), settings
   // still to add to plateSettings()
-  SqueezeFilmCase(const RigidBodySettings& bodySettings, double refinement, Liquid liquid);
+  // (incompressible: flow { model incompressible; }, the plate coupled within its solve)
+  SqueezeFilmCase(const RigidBodySettings& bodySettings, double refinement, Liquid liquid,
+                  bool incompressible = false);
 
   // One step of the flow's stable length, as the solver takes it with a body; returns its length.
   double step(double time);
@@ -59,6 +61,7 @@ struct SqueezeFilmCase {
   std::optional<WeaklyCompressibleFlow> flow;
   std::unique_ptr<RheologyModel> rheology;  // when set, the liquid's viscosity law
   double clearanceForce = 0;  // the wall clearance's impulse on the plate over the last step
+  double lastDeltaT = 0;      // the step grows by 1.2 at most, as the solver's
 
  private:
   int spacings(int millimetres) const;  // a length given in mm, in spacings, rounded
@@ -81,6 +84,7 @@ struct ClosingTimes {
   double seconds;         // the whole run's, wall-clock
 };
 ClosingTimes closingTimes(Liquid liquid, double load, double refinement,
-                          const std::optional<HerschelBulkleySettings>& law = std::nullopt);
+                          const std::optional<HerschelBulkleySettings>& law = std::nullopt,
+                          bool incompressible = false);
 
 }  // namespace sphcast::testing
