@@ -59,7 +59,12 @@ void RunMonitor::logStep(bool printBlock, bool cooling) {
       const IncompressibleReport& last = models_.flow->lastPressureSolve();
       line << "Pressure solved in " << last.iterations << " iterations: mean compression "
            << 100 * last.meanCompression << " %, largest " << 100 * last.largestCompression
-           << " %\n";
+           << " %";
+      if (work.unconvergedPressureSolves > 0) {
+        line << " (" << work.unconvergedPressureSolves << " of " << work.pressureSolves
+             << " solves stopped at maxIterations above densityTolerance)";
+      }
+      line << '\n';
     }
     if (work.implicitViscousSteps > 0) {  // (every rank takes the same steps alike)
       const ImplicitViscosityReport& last = models_.flow->lastViscousSolve();
@@ -175,7 +180,8 @@ void RunMonitor::logTimeSpent() {
            << double(work.pressureIterations) / double(work.pressureSolves)
            << " Jacobi iterations a solve; the last left a mean compression of "
            << 100 * last.meanCompression << " % (largest " << 100 * last.largestCompression
-           << " %) in " << last.iterations << " iterations\n";
+           << " %) in " << last.iterations << " iterations; " << work.unconvergedPressureSolves
+           << " solves stopped at maxIterations above densityTolerance\n";
   }
   info() << "Run health: " << warnings_.summary() << '\n';
   // the process's peak resident memory (Linux gives ru_maxrss in KiB): what a larger case needs

@@ -17,7 +17,10 @@ namespace sphcast {
 // (the roles, the dimension, h and the periodic axes are the case's: case/CaseDescription.h):
 //
 //   constant/physicsModels:  flow { model weaklyCompressible; fluid metal; walls (mold); }
-//                            (model none, or no flow entry: clouds move ballistically)
+//                            (model none, or no flow entry: clouds move ballistically;
+//                            model incompressible: the pressure solved for rho_s,
+//                            IncompressiblePressure.h, with pressureSolverCoeffs in
+//                            system/sphSchemes)
 //   system/sphSchemes:       densityScheme riemann;      // riemann | standard | deltaSPH
 //                            kernelCorrection on;        // optional, off by default
 //                            deltaSPHCoeffs { delta 0.1; alpha 0.02; }  // optional (deltaSPH)

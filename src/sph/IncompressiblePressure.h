@@ -26,7 +26,7 @@ struct IncompressibleSettings {
   // eta: 0.1 % by default), after at least minIterations.
   Real densityTolerance = Real(1e-3);
   int minIterations = 2;
-  int maxIterations = 200;
+  int maxIterations = 200;  // a solve left above the tolerance goes on (the log counts it)
   Real relaxation = Real(0.5);  // omega of the relaxed Jacobi iteration (Ihmsen et al.: 0.5)
   // The step's Courant number on the flow speed: dt <= advectionCo dx / |v|max (no sound
   // speed); the body-force, viscous and force-model limits still apply.
@@ -85,6 +85,10 @@ struct PressureWall {
 // is held: its a^p is zero, it has no row, and it enters its neighbours' rows as a wall at rest
 // of its own mass. Each particle's sums run in its pairs' order and the stopping measure is
 // summed in particle order, so the result is the same bits on any number of threads.
+//
+// A body (PressureWall::respond) answers within the iteration: each iterate's load on it gives
+// its particles' velocities at the step's end, which the density source takes (a body lighter
+// than the liquid it moves, taken with the loads after the solve, swings without settling).
 //
 // Decomposed: each rank solves its owned particles' rows, the halo's a^p and p refreshed from
 // their owners after each pass, the stopping measure summed over the ranks.

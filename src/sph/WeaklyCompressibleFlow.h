@@ -90,6 +90,7 @@ struct FlowWork {
   std::uint64_t acousticSubSteps = 0;      // dualCriteria: the pressure passes within them
   std::uint64_t pressureSolves = 0;        // incompressible: the steps' pressure solves
   std::uint64_t pressureIterations = 0;    // and their Jacobi iterations
+  std::uint64_t unconvergedPressureSolves = 0;  // left above densityTolerance at maxIterations
 };
 
 // Wall time spent in each part of the flow's steps, seconds since construction.

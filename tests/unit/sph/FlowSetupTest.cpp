@@ -22,10 +22,10 @@ const char* header = "FoamFile { version 2.0; format ascii; class dictionary; }\
 
 struct FlowCase : testing::TemporaryCase {
   FlowCase(const std::string& models, const std::string& schemes,
-           const std::string& density = "1000", const std::string& walls = "(tank);") {
-    write(
-        "constant/physicsModels",
-        header + models + "flow { model weaklyCompressible; fluid water; walls " + walls + " }\n");
+           const std::string& density = "1000", const std::string& walls = "(tank);",
+           const std::string& model = "weaklyCompressible") {
+    write("constant/physicsModels", header + models + "flow { model " + model +
+                                        "; fluid water; walls " + walls + " }\n");
     write("system/sphSchemes",
           header + schemes + "viscousForm Morris;\nsupportRadius 0.03;\nsoundSpeed 10;\n");
     write("constant/physicalProperties",
@@ -203,6 +203,44 @@ TEST(FlowSetup, DensityReinitialisationIsOffByDefaultAndTakesItsRelaxation) {
                               .read();
   EXPECT_TRUE(setup.settings.reinitialiseDensity);
   EXPECT_DOUBLE_EQ(setup.settings.densityRelaxation, 0.2);
+}
+
+// flow { model incompressible; } with pressureSolverCoeffs, and the weakly compressible flow's
+// own schemes refused at their line.
+TEST(FlowSetup, IncompressibleFlowReadsItsSolverAndRefusesTheAcousticSchemes) {
+  auto incompressible = [](const std::string& schemes) {
+    return FlowCase("", schemes, "1000", "(tank);", "incompressible");
+  };
+  const FlowSetup plain = incompressible("densityScheme riemann;\n").read();
+  EXPECT_TRUE(plain.settings.incompressible);
+  EXPECT_DOUBLE_EQ(plain.settings.pressureSolver.densityTolerance, 1e-3);
+  EXPECT_FALSE(FlowCase("", "densityScheme riemann;\n").read().settings.incompressible);
+  const FlowSetup tuned =
+      incompressible(
+          "densityScheme riemann;\npressureSolverCoeffs { densityTolerance 5e-4; maxIterations "
+          "400; relaxation 0.4; advectionCo 0.3; }\n")
+          .read();
+  EXPECT_DOUBLE_EQ(tuned.settings.pressureSolver.densityTolerance, 5e-4);
+  EXPECT_EQ(tuned.settings.pressureSolver.maxIterations, 400);
+  EXPECT_DOUBLE_EQ(tuned.settings.pressureSolver.relaxation, 0.4);
+  EXPECT_DOUBLE_EQ(tuned.settings.pressureSolver.advectionCo, 0.3);
+  const std::string dual = errorOf(
+      incompressible("densityScheme riemann;\ntimeStepping dualCriteria;\n"));
+  EXPECT_NE(dual.find("sphSchemes:3:"), std::string::npos) << dual;
+  EXPECT_NE(dual.find("weakly compressible"), std::string::npos) << dual;
+  const std::string delta = errorOf(incompressible("densityScheme deltaSPH;\n"));
+  EXPECT_NE(delta.find("sphSchemes:2:"), std::string::npos) << delta;
+  const std::string relaxation = errorOf(
+      incompressible("densityScheme riemann;\npressureSolverCoeffs { relaxation 1.5; }\n"));
+  EXPECT_NE(relaxation.find("'relaxation'"), std::string::npos) << relaxation;
+  EXPECT_NE(relaxation.find("sphSchemes:3:"), std::string::npos) << relaxation;
+  const std::string unknown = errorOf(
+      incompressible("densityScheme riemann;\npressureSolverCoeffs { tolerance 1e-3; }\n"));
+  EXPECT_NE(unknown.find("tolerance"), std::string::npos) << unknown;
+  EXPECT_NE(unknown.find("densityTolerance"), std::string::npos) << unknown;
+  const std::string model = errorOf(FlowCase("", "densityScheme riemann;\n", "1000", "(tank);",
+                                             "incompressibel"));
+  EXPECT_NE(model.find("incompressible"), std::string::npos) << model;
 }
 
 // c is the case's (case/CaseDescription.h), read and checked in one place for the flow and the

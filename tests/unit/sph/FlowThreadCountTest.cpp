@@ -22,6 +22,7 @@ struct Scheme {
   std::string densityScheme;
   bool kernelCorrection;
   bool dualCriteria = false;  // advection steps of acoustic sub-steps (kickDriftKick: maxCo 0.25)
+  bool incompressible = false;  // flow { model incompressible; }
 };
 
 // A 2D dam break (a = 15 dx) run for `steps` steps on `threads` threads; the column is released
@@ -41,6 +42,7 @@ ParticleCloud runDamBreak(int threads, const Scheme& scheme, int steps, std::siz
   settings.densityScheme = scheme.densityScheme;
   settings.kernelCorrection = scheme.kernelCorrection;
   settings.dualCriteria = scheme.dualCriteria;
+  settings.incompressible = scheme.incompressible;
   WeaklyCompressibleFlow flow(settings, fluid, {&wall});
   std::string limiter;
   corrected = 0;
@@ -49,9 +51,10 @@ ParticleCloud runDamBreak(int threads, const Scheme& scheme, int steps, std::siz
     corrected += flow.lastWallClearance().corrected;
   }
   omp_set_num_threads(previous);
-  std::printf("    %s%s%s, %d thread(s): %zu particle corrections by the wall clearance\n",
+  std::printf("    %s%s%s%s, %d thread(s): %zu particle corrections by the wall clearance\n",
               scheme.densityScheme.c_str(), scheme.kernelCorrection ? " + correction" : "",
-              scheme.dualCriteria ? ", dualCriteria" : "", threads, corrected);
+              scheme.dualCriteria ? ", dualCriteria" : "",
+              scheme.incompressible ? ", incompressible" : "", threads, corrected);
   return fluid;
 }
 
@@ -75,7 +78,8 @@ void expectSameBits(const ParticleCloud& one, const ParticleCloud& two) {
 TEST(FlowThreadCount, OneAndTwoThreadsGiveTheSameBitsForEveryScheme) {
   for (const Scheme& scheme :
        {Scheme{"riemann", false}, Scheme{"riemann", true}, Scheme{"standard", false},
-        Scheme{"deltaSPH", false}, Scheme{"riemann", false, true}, Scheme{"riemann", true, true}}) {
+        Scheme{"deltaSPH", false}, Scheme{"riemann", false, true}, Scheme{"riemann", true, true},
+        Scheme{"riemann", false, false, true}}) {
     SCOPED_TRACE(scheme.densityScheme);
     std::size_t correctedOne = 0, correctedTwo = 0;
     expectSameBits(runDamBreak(1, scheme, 200, correctedOne),
