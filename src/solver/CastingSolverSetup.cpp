@@ -240,9 +240,9 @@ void CastingSolver::setUpFlow() {
            << " dx / |U|max (and the viscous, body-force and force models' limits), each with "
               "a search and the pressure solved for rho_s by relaxed Jacobi (Ihmsen et al. "
               "2014; omega "
-           << solver.relaxation << ", " << solver.minIterations << " to "
-           << solver.maxIterations << " iterations, to a mean compression below "
-           << 100 * solver.densityTolerance << " %)\n";
+           << solver.relaxation << ", " << solver.minIterations << " to " << solver.maxIterations
+           << " iterations, to a mean compression below " << 100 * solver.densityTolerance
+           << " % and none above " << 100 * solver.largestCompression << " %)\n";
   } else if (settings.dualCriteria) {
     info() << "dualCriteria: steps of at most advectionCo " << settings.advectionCo
            << " dx / |U|max (and the viscous, body-force and force models' limits), each with "

@@ -42,10 +42,12 @@ void readPressureSolver(const Dictionary& schemes, FlowSettings& settings) {
   }
   if (!schemes.found("pressureSolverCoeffs")) return;
   const Dictionary& coeffs = schemes.subDict("pressureSolverCoeffs");
-  coeffs.checkKeys(
-      {"densityTolerance", "minIterations", "maxIterations", "relaxation", "advectionCo"});
+  coeffs.checkKeys({"densityTolerance", "largestCompression", "minIterations", "maxIterations",
+                    "relaxation", "advectionCo"});
   IncompressibleSettings& solver = settings.pressureSolver;
   solver.densityTolerance = coeffs.getOrDefault<Real>("densityTolerance", solver.densityTolerance);
+  solver.largestCompression =
+      coeffs.getOrDefault<Real>("largestCompression", solver.largestCompression);
   solver.minIterations = coeffs.getOrDefault<int>("minIterations", solver.minIterations);
   solver.maxIterations = coeffs.getOrDefault<int>("maxIterations", solver.maxIterations);
   solver.relaxation = coeffs.getOrDefault<Real>("relaxation", solver.relaxation);
@@ -56,6 +58,10 @@ void readPressureSolver(const Dictionary& schemes, FlowSettings& settings) {
   };
   if (!(solver.densityTolerance > 0 && solver.densityTolerance < Real(0.1))) {
     refuse("densityTolerance", "(the mean compression left, a fraction of rho_s) must lie in (0, 0.1)");
+  }
+  if (!(solver.largestCompression >= solver.densityTolerance && solver.largestCompression < 1)) {
+    refuse("largestCompression",
+           "(the largest compression of one particle left) must lie in [densityTolerance, 1)");
   }
   if (solver.minIterations < 1) refuse("minIterations", "must be at least 1");
   if (solver.maxIterations < solver.minIterations) {

@@ -295,7 +295,8 @@ IncompressibleReport IncompressiblePressure::solve(ParticleCloud& fluid,
       neighbourhood.sumOverRanks(sums);
       report.meanCompression = sums[1] > 0 ? sums[0] / sums[1] : 0;
       report.largestCompression = neighbourhood.maxOverRanks(largest);
-      return report.meanCompression <= settings_.densityTolerance;
+      return report.meanCompression <= settings_.densityTolerance &&
+             report.largestCompression <= settings_.largestCompression;
     };
 
     std::vector<std::uint8_t> solved(n, 0);
@@ -315,7 +316,8 @@ IncompressibleReport IncompressiblePressure::solve(ParticleCloud& fluid,
       // (the measure is of the pressure before this iteration's update)
       if (measure(r) && report.iterations >= settings_.minIterations) break;
     }
-    report.converged = report.meanCompression <= settings_.densityTolerance;
+    report.converged = report.meanCompression <= settings_.densityTolerance &&
+                       report.largestCompression <= settings_.largestCompression;
     pressureAccelerations(p, true);  // of the p the step takes, with the walls' loads
   });
   return report;

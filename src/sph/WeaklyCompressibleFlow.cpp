@@ -97,7 +97,8 @@ void WeaklyCompressibleFlow::checkInput() {
           "densityScheme deltaSPH and densityReinitialisation are the weakly compressible "
           "flow's");
     }
-    if (!(solver.densityTolerance > 0 && solver.relaxation > 0 && solver.relaxation <= 1 &&
+    if (!(solver.densityTolerance > 0 && solver.largestCompression >= solver.densityTolerance &&
+          solver.relaxation > 0 && solver.relaxation <= 1 &&
           solver.maxIterations >= solver.minIterations && solver.minIterations >= 1 &&
           solver.advectionCo > 0)) {
       throw Error("flow: pressureSolverCoeffs out of range");

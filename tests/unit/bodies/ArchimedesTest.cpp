@@ -30,8 +30,8 @@ TEST(Archimedes, BoxesFloatAtTheirDraft) {
 
 // flow { model incompressible; }: the box coupled to the pressure solve (its velocity at the
 // step's end predicted from the pressure's load at every iteration). Measured: the draft
-// 0.04 dx (0.5) and 0.21 dx (0.7) off over the last 0.2 s, no drift (2 s on one thread); over 3 s within
-// 0.27 and 0.46 dx. Kicked by the solve's loads only after it (explicit coupling), the light box
+// 0.28 dx (0.5) and 0.22 dx (0.7) off over the last 0.2 s, no drift (2 s on one thread). Kicked
+// by the solve's loads only after it (explicit coupling), the light box
 // never settled: its load swung between 0 and 2.8 times its weight, the draft 0.81 dx off at 3 s
 // (the liquid it moves weighs more than it: the added-mass instability).
 TEST(Archimedes, BoxesFloatAtTheirDraftOnAnIncompressibleLiquid) {

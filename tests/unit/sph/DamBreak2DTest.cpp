@@ -292,8 +292,8 @@ TEST(DamBreak2D, DualCriteriaStepsConvergeTheFrontInFewerPasses) {
 
 // flow { model incompressible; }: steps of 0.4 dx / |v|max, each with one search and the
 // pressure solved for rho_s (IncompressiblePressure.h), against the converged inviscid front.
-// Measured at a/dx = 10 / 20 / 40: RMS 3.74 / 1.63 / 0.63 %, largest 6.33 / 2.88 / 1.12 %, in
-// 97 / 186 / 370 steps (0.04 / 0.31 / 2.6 s on one thread; the weakly compressible
+// Measured at a/dx = 10 / 20 / 40: RMS 3.74 / 1.63 / 0.60 %, largest 6.33 / 2.88 / 1.15 %, in
+// 97 / 186 / 413 steps (0.04 / 0.31 / 2.8 s on one thread; the weakly compressible
 // kickDriftKick at 20: 0.62 % in 2,980 steps, 1.55 s). Halving or quartering the step leaves it
 // (2.10 and 2.19 % at 20), a tolerance of 0.01 % too (1.89 %): the error is the resolution's, a
 // free surface of summed densities. So the weakly compressible bounds are asked at 40, and the

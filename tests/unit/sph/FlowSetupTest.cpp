@@ -218,8 +218,9 @@ TEST(FlowSetup, IncompressibleFlowReadsItsSolverAndRefusesTheAcousticSchemes) {
   const FlowSetup tuned =
       incompressible(
           "densityScheme riemann;\npressureSolverCoeffs { densityTolerance 5e-4; maxIterations "
-          "400; relaxation 0.4; advectionCo 0.3; }\n")
+          "400; relaxation 0.4; advectionCo 0.3; largestCompression 0.02; }\n")
           .read();
+  EXPECT_DOUBLE_EQ(tuned.settings.pressureSolver.largestCompression, 0.02);
   EXPECT_DOUBLE_EQ(tuned.settings.pressureSolver.densityTolerance, 5e-4);
   EXPECT_EQ(tuned.settings.pressureSolver.maxIterations, 400);
   EXPECT_DOUBLE_EQ(tuned.settings.pressureSolver.relaxation, 0.4);
