@@ -248,15 +248,14 @@ IncompressibleReport IncompressiblePressure::solve(ParticleCloud& fluid,
                                      [](const PressureWall& wall) { return bool(wall.respond); });
 
     // The residual of eq. (1) at a pressure q, r_i = rho0_i - rho*_i - (A q)_i = rho0_i minus
-    // the density q leaves (with the walls' p_b of q and the bodies' answer to q's loads), on
-    // the rows `solved` marks (0 elsewhere).
-    auto residualOf = [&](const std::vector<Real>& q, const std::vector<std::uint8_t>& solved,
-                          std::vector<Real>& r) {
+    // the density q leaves (with the walls' p_b of q and the bodies' answer to q's loads); 0 for
+    // a held particle.
+    auto residualOf = [&](const std::vector<Real>& q, std::vector<Real>& r) {
       pressureAccelerations(q, false);
       if (coupled) respond();
 #pragma omp parallel for schedule(static)
       for (std::size_t i = 0; i < owned; ++i) {
-        if (!solved[i]) {
+        if (held(i)) {
           r[i] = 0;
           continue;
         }
@@ -299,16 +298,14 @@ IncompressibleReport IncompressiblePressure::solve(ParticleCloud& fluid,
              report.largestCompression <= settings_.largestCompression;
     };
 
-    std::vector<std::uint8_t> solved(n, 0);
-    for (std::size_t i = 0; i < owned; ++i) solved[i] = !held(i);
     std::vector<Real> r(n, 0);
     // Ihmsen et al.'s relaxed Jacobi, p >= 0 at every iteration
     const Real omega = settings_.relaxation;
     for (report.iterations = 0; report.iterations < settings_.maxIterations;) {
-      residualOf(p, solved, r);
+      residualOf(p, r);
 #pragma omp parallel for schedule(static)
       for (std::size_t i = 0; i < owned; ++i) {
-        if (!solved[i]) continue;
+        if (held(i)) continue;
         p[i] = diagonal_[i] < 0 ? std::max(p[i] + omega * r[i] / diagonal_[i], Real(0)) : 0;
       }
       neighbourhood.syncHalo(fluid, p);
