@@ -30,14 +30,11 @@ template Real kernelSumOnLattice<2>(Real, Real);
 template Real kernelSumOnLattice<3>(Real, Real);
 
 template <int Dim>
-IncompressibleReport IncompressiblePressure::solve(ParticleCloud& fluid,
-                                                   const Neighbourhood& neighbourhood,
-                                                   const std::vector<PressureWall>& walls,
-                                                   const std::vector<bool>& measured,
-                                                   const std::vector<Vector>& predicted,
-                                                   const Vector& gravity, Real supportRadius,
-                                                   Real spacing,
-                                                   const PeriodicBox& periodic, Real dt) {
+IncompressibleReport IncompressiblePressure::solve(
+    ParticleCloud& fluid, const Neighbourhood& neighbourhood,
+    const std::vector<PressureWall>& walls, const std::vector<bool>& measured,
+    const std::vector<Vector>& predicted, const Vector& gravity, Real supportRadius, Real spacing,
+    const PeriodicBox& periodic, Real dt) {
   const WendlandC2Kernel<Dim> kernel(supportRadius);
   const auto& x = fluid.positions();
   const auto& mass = fluid.scalarField(field::mass);
@@ -65,8 +62,8 @@ IncompressibleReport IncompressiblePressure::solve(ParticleCloud& fluid,
   IncompressibleReport report;
 
   withSeparation(periodic, [&](auto separation) {
-    // The summed density, then the advected density's source and the diagonal (they need the
-    // neighbours' densities: the halo's from their owners).
+  // The summed density, then the advected density's source and the diagonal (they need the
+  // neighbours' densities: the halo's from their owners).
 #pragma omp parallel for schedule(static)
     for (std::size_t i = 0; i < owned; ++i) {
       Real sum = mass[i] * selfWeight;  // of the fluid and the walls: rho_i times latticeSum
@@ -120,8 +117,7 @@ IncompressibleReport IncompressiblePressure::solve(ParticleCloud& fluid,
       source_[i] = restDensity[i] - (rho[i] + dt * divergence);
       diagonal_[i] =
           -dt2 / rho2 *
-          ((fluidGradient + wallGradient).squaredNorm() +
-           mass[i] * toDensity * crossTerms);
+          ((fluidGradient + wallGradient).squaredNorm() + mass[i] * toDensity * crossTerms);
     }
     neighbourhood.syncHalo(fluid, p);
 
@@ -149,9 +145,9 @@ IncompressibleReport IncompressiblePressure::solve(ParticleCloud& fluid,
             densityMoment += (rho[f] * wbf) * xbf;
           }
           const Vector felt = wallAcceleration ? Vector(gravity - wallAcceleration[b]) : gravity;
-          wallPressure[b] =
-              weight > 0 ? std::max((pressure + felt.dot(densityMoment)) / weight, Real(0))
-                         : Real(0);
+          wallPressure[b] = weight > 0
+                                ? std::max((pressure + felt.dot(densityMoment)) / weight, Real(0))
+                                : Real(0);
         }
         neighbourhood.syncHalo(*walls[w].cloud, wallPressure_[w]);
       }
@@ -262,16 +258,18 @@ IncompressibleReport IncompressiblePressure::solve(ParticleCloud& fluid,
         Real product = 0;  // (A q)_i
         for (const std::uint32_t j : fluidPairs.of(i)) {
           const Vector xij = separation(x[i], x[j]);
-          product += mass[j] * toDensity * (pressureAcceleration_[i] - pressureAcceleration_[j])
-                                   .dot(kernel.derivativeOverDistance(xij.norm()) * xij);
+          product += mass[j] * toDensity *
+                     (pressureAcceleration_[i] - pressureAcceleration_[j])
+                         .dot(kernel.derivativeOverDistance(xij.norm()) * xij);
         }
         for (const PressureWall& wall : walls) {
           const auto& wallX = *wall.position;
           const auto& volume = *wall.volume;
           for (const std::uint32_t b : wall.pairs->of(i)) {
             const Vector xib = separation(x[i], wallX[b]);
-            product += restDensity[i] * volume[b] * toDensity *
-                       pressureAcceleration_[i].dot(kernel.derivativeOverDistance(xib.norm()) * xib);
+            product +=
+                restDensity[i] * volume[b] * toDensity *
+                pressureAcceleration_[i].dot(kernel.derivativeOverDistance(xib.norm()) * xib);
           }
         }
         r[i] = (coupled ? source_[i] + coupledSource(i) : source_[i]) - dt2 * product;
@@ -320,13 +318,17 @@ IncompressibleReport IncompressiblePressure::solve(ParticleCloud& fluid,
   return report;
 }
 
-template IncompressibleReport IncompressiblePressure::solve<2>(
-    ParticleCloud&, const Neighbourhood&, const std::vector<PressureWall>&,
-    const std::vector<bool>&, const std::vector<Vector>&, const Vector&, Real, Real,
-    const PeriodicBox&, Real);
-template IncompressibleReport IncompressiblePressure::solve<3>(
-    ParticleCloud&, const Neighbourhood&, const std::vector<PressureWall>&,
-    const std::vector<bool>&, const std::vector<Vector>&, const Vector&, Real, Real,
-    const PeriodicBox&, Real);
+template IncompressibleReport IncompressiblePressure::solve<2>(ParticleCloud&, const Neighbourhood&,
+                                                               const std::vector<PressureWall>&,
+                                                               const std::vector<bool>&,
+                                                               const std::vector<Vector>&,
+                                                               const Vector&, Real, Real,
+                                                               const PeriodicBox&, Real);
+template IncompressibleReport IncompressiblePressure::solve<3>(ParticleCloud&, const Neighbourhood&,
+                                                               const std::vector<PressureWall>&,
+                                                               const std::vector<bool>&,
+                                                               const std::vector<Vector>&,
+                                                               const Vector&, Real, Real,
+                                                               const PeriodicBox&, Real);
 
 }  // namespace sphcast

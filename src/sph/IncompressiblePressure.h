@@ -29,7 +29,7 @@ struct IncompressibleSettings {
   // mean hides an impact (crossDitchPress: one particle 59 % compressed at a mean of 0.06 %)
   Real largestCompression = Real(1e-2);
   int minIterations = 2;
-  int maxIterations = 200;  // a solve left above the tolerance goes on (the log counts it)
+  int maxIterations = 200;      // a solve left above the tolerance goes on (the log counts it)
   Real relaxation = Real(0.5);  // omega of the relaxed Jacobi iteration (Ihmsen et al.: 0.5)
   // The step's Courant number on the flow speed: dt <= advectionCo dx / |v|max (no sound
   // speed); the body-force, viscous and force-model limits still apply.
@@ -67,7 +67,8 @@ struct PressureWall {
 // density,
 //   dt^2 sum_j m_j (a^p_i - a^p_j) . grad W_ij + dt^2 sum_b psi_b a^p_i . grad W_ib
 //                                                     = rho0_i - rho*_i,                  (1)
-//   rho*_i = rho_i + dt sum_j m_j (v*_i - v*_j) . grad W_ij + dt sum_b psi_b (v*_i - v_b) . grad W_ib,
+//   rho*_i = rho_i + dt sum_j m_j (v*_i - v*_j) . grad W_ij
+//                  + dt sum_b psi_b (v*_i - v_b) . grad W_ib,
 //   a^p_i  = -sum_j m_j (p_i / rho_i^2 + p_j / rho_j^2) grad W_ij
 //            -sum_b psi_b (p_i + p_b) / rho_i^2 grad W_ib,
 // with rho_i = max(sum_j m_j W_ij + sum_b psi_b W_ib, rho0_i) the density summed over the
@@ -107,9 +108,10 @@ class IncompressiblePressure {
   template <int Dim>
   IncompressibleReport solve(ParticleCloud& fluid, const Neighbourhood& neighbourhood,
                              const std::vector<PressureWall>& walls,
-                             const std::vector<bool>& measured, const std::vector<Vector>& predicted,
-                             const Vector& gravity, Real supportRadius, Real spacing,
-                             const PeriodicBox& periodic, Real dt);
+                             const std::vector<bool>& measured,
+                             const std::vector<Vector>& predicted, const Vector& gravity,
+                             Real supportRadius, Real spacing, const PeriodicBox& periodic,
+                             Real dt);
 
   const std::vector<Vector>& pressureAcceleration() const { return pressureAcceleration_; }
   // The pressure force fluid particle i put on wall w's particles, and its torque about the
@@ -124,7 +126,7 @@ class IncompressiblePressure {
   std::vector<Real> source_;    // rho0_i - rho*_i
   std::vector<Vector> pressureAcceleration_;
   std::vector<std::vector<Vector>> wallForce_, wallTorque_;
-  std::vector<std::vector<Real>> wallPressure_;  // p_b, per wall
+  std::vector<std::vector<Real>> wallPressure_;    // p_b, per wall
   std::vector<std::vector<Vector>> wallVelocity_;  // a responding wall's, per wall
 };
 

@@ -46,12 +46,12 @@ void WeaklyCompressibleFlow::incompressibleStep(double deltaT, const SubStepHook
   std::vector<PressureWall> walls;
   for (std::size_t w = 0; w < walls_.size(); ++w) {
     const ParticleCloud& wall = *walls_[w];
-    walls.push_back(
-        {&wall, &wall.positions(), &wall.scalarField(field::volume),
-         wall.hasVectorField(field::U) ? &wall.vectorField(field::U) : nullptr,
-         wall.hasVectorField(field::acceleration) ? &wall.vectorField(field::acceleration)
-                                                  : nullptr,
-         &wallPairs(w), &fluidAroundWall(w), nullptr});
+    walls.push_back({&wall, &wall.positions(), &wall.scalarField(field::volume),
+                     wall.hasVectorField(field::U) ? &wall.vectorField(field::U) : nullptr,
+                     wall.hasVectorField(field::acceleration)
+                         ? &wall.vectorField(field::acceleration)
+                         : nullptr,
+                     &wallPairs(w), &fluidAroundWall(w), nullptr});
     if (!hooks.predict || !loadMeasured_[w]) continue;
     const Vector otherForce(Real(otherLoads[6 * w]), Real(otherLoads[6 * w + 1]),
                             Real(otherLoads[6 * w + 2]));
@@ -73,9 +73,11 @@ void WeaklyCompressibleFlow::incompressibleStep(double deltaT, const SubStepHook
     lastPressureSolve_ =
         settings_.dimension == 2
             ? incompressiblePressure_.solve<2>(fluid_, neighbourhood_, walls, loadMeasured_, v,
-                                               settings_.gravity, settings_.supportRadius, spacing, settings_.periodic, dt)
+                                               settings_.gravity, settings_.supportRadius, spacing,
+                                               settings_.periodic, dt)
             : incompressiblePressure_.solve<3>(fluid_, neighbourhood_, walls, loadMeasured_, v,
-                                               settings_.gravity, settings_.supportRadius, spacing, settings_.periodic, dt);
+                                               settings_.gravity, settings_.supportRadius, spacing,
+                                               settings_.periodic, dt);
   });
   ++work_.pressureSolves;
   work_.pressureIterations += static_cast<std::uint64_t>(lastPressureSolve_.iterations);
