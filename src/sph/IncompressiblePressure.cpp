@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include <Eigen/Geometry>
 
@@ -297,8 +298,13 @@ IncompressibleReport IncompressiblePressure::solve(
     };
 
     std::vector<Real> r(n, 0);
-    // Ihmsen et al.'s relaxed Jacobi, p >= 0 at every iteration
-    const Real omega = settings_.relaxation;
+    // Ihmsen et al.'s relaxed Jacobi, p >= 0 at every iteration. Where neighbours are compressed
+    // together (a stream landing) the simultaneous updates overshoot, and the clip at 0 turns
+    // that into a cycle of period two that never converges (crossDitchPress's pour: a particle's
+    // p 0, 1336, 0, 1336, ... at a mean compression fixed at 0.157 %): a mean compression that
+    // has not fallen by 1 % in 10 iterations halves omega for the rest of the solve.
+    Real omega = settings_.relaxation;
+    double checkpoint = std::numeric_limits<double>::infinity();
     for (report.iterations = 0; report.iterations < settings_.maxIterations;) {
       residualOf(p, r);
 #pragma omp parallel for schedule(static)
@@ -310,6 +316,13 @@ IncompressibleReport IncompressiblePressure::solve(
       ++report.iterations;
       // (the measure is of the pressure before this iteration's update)
       if (measure(r) && report.iterations >= settings_.minIterations) break;
+      if (report.iterations % 10 == 0) {
+        if (report.meanCompression > 0.99 * checkpoint && omega > settings_.relaxation / 16) {
+          omega *= Real(0.5);
+          ++report.relaxationHalvings;
+        }
+        checkpoint = report.meanCompression;
+      }
     }
     report.converged = report.meanCompression <= settings_.densityTolerance &&
                        report.largestCompression <= settings_.largestCompression;

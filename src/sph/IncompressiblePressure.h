@@ -41,6 +41,7 @@ struct IncompressibleReport {
   int iterations = 0;
   double meanCompression = 0;     // the stopping measure above, at the end
   double largestCompression = 0;  // the largest max(rho* - rho0, 0) / rho0 at the end
+  int relaxationHalvings = 0;     // omega halved where the iteration stalled
   bool converged = true;
 };
 
