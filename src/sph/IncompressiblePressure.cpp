@@ -12,23 +12,6 @@
 
 namespace sphcast {
 
-template <int Dim>
-Real kernelSumOnLattice(Real supportRadius, Real spacing) {
-  const WendlandC2Kernel<Dim> kernel(supportRadius);
-  const int reach = static_cast<int>(std::ceil(supportRadius / spacing));
-  const int reachZ = Dim == 3 ? reach : 0;
-  Real sum = 0;
-  for (int a = -reach; a <= reach; ++a) {
-    for (int b = -reach; b <= reach; ++b) {
-      for (int c = -reachZ; c <= reachZ; ++c) {
-        sum += kernel.value(spacing * std::sqrt(Real(a * a + b * b + c * c)));
-      }
-    }
-  }
-  return sum * std::pow(spacing, Dim);
-}
-template Real kernelSumOnLattice<2>(Real, Real);
-template Real kernelSumOnLattice<3>(Real, Real);
 
 template <int Dim>
 IncompressibleReport IncompressiblePressure::solve(
@@ -53,7 +36,7 @@ IncompressibleReport IncompressiblePressure::solve(
   // the kernel sum of a particle inside the lattice at dx: 1.0051 (2D) and 1.0031 (3D) at
   // h = 3 dx, not 1; the summed density is read against it, so that the lattice particles are
   // at rest start at rest (Wendland's sum over a finite lattice, exact to round-off)
-  const Real latticeSum = kernelSumOnLattice<Dim>(supportRadius, spacing);
+  const Real latticeSum = latticeKernelSum<Dim>(supportRadius, spacing);
   const Real toDensity = 1 / latticeSum;
   diagonal_.assign(n, 0);
   source_.assign(n, 0);
@@ -319,7 +302,6 @@ IncompressibleReport IncompressiblePressure::solve(
       if (report.iterations % 10 == 0) {
         if (report.meanCompression > 0.99 * checkpoint && omega > settings_.relaxation / 16) {
           omega *= Real(0.5);
-          ++report.relaxationHalvings;
         }
         checkpoint = report.meanCompression;
       }

@@ -13,12 +13,6 @@
 
 namespace sphcast {
 
-// The kernel's sum over a square (cubic) lattice of spacing dx around one of its particles,
-// times dx^Dim: what the summed density of particles at rest on the lattice reads against
-// m / dx^Dim (1.0051 in 2D and 1.0031 in 3D at h = 3 dx).
-template <int Dim>
-Real kernelSumOnLattice(Real supportRadius, Real spacing);
-
 // pressureSolverCoeffs in system/sphSchemes (flow { model incompressible; }).
 struct IncompressibleSettings {
   // The solve stops once the mean compression the pressure leaves, sum max(rho* - rho0, 0) /
@@ -41,7 +35,6 @@ struct IncompressibleReport {
   int iterations = 0;
   double meanCompression = 0;     // the stopping measure above, at the end
   double largestCompression = 0;  // the largest max(rho* - rho0, 0) / rho0 at the end
-  int relaxationHalvings = 0;     // omega halved where the iteration stalled
   bool converged = true;
 };
 
@@ -82,7 +75,8 @@ struct PressureWall {
 // carries twice the hydrostatic pressure to hold itself off it (measured: the tank's wall column
 // at 2.0 to 2.4 times rho g (H - y)); with p_b = p_i in a_ii too (mirroring) the tank at rest
 // went unstable. Every m_j and psi_b is divided by the kernel's sum on the lattice
-// (kernelSumOnLattice), so that particles at rest on the lattice read rho0, not 0.5 % more.
+// (latticeKernelSum, particles/WendlandKernel.h), so that particles at rest on the lattice read
+// rho0, not 0.5 % more.
 // Solved by the relaxed Jacobi iteration of the paper,
 //   p_i <- max(0, p_i + omega (rho0_i - rho*_i - (A p)_i) / a_ii),
 // each iteration two passes over the pairs (a^p, then A p), matrix-free; a_ii is eq. (1)'s
