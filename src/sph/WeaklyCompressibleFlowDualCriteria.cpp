@@ -3,7 +3,7 @@
 // viscous term and the force models once at its start, then acoustic sub-steps, each a Verlet
 // step of the pressure and the density,
 //   rho += dt/2 Drho;  x += dt/2 v;  v += dt (a_p + g + a_prior);  x += dt/2 v;  rho += dt/2 Drho.
-// The step's limits are in WeaklyCompressibleFlow.cpp, the pair passes in
+// The step's limits are in WeaklyCompressibleFlowStepLimits.cpp, the pair passes in
 // WeaklyCompressibleFlowRates.cpp.
 #include <algorithm>
 #include <cmath>

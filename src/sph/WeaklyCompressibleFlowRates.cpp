@@ -15,7 +15,8 @@
 
 // The flow's pair loops: the walls' pressure, the kernel correction, the rates (density rate and
 // acceleration, with the force models after them) and the frozen metal they skip. The step, its
-// integration, limits and the walls' loads and clearance are in WeaklyCompressibleFlow.cpp.
+// integration and the walls' loads and clearance are in WeaklyCompressibleFlow.cpp, its limits
+// in WeaklyCompressibleFlowStepLimits.cpp.
 
 namespace sphcast {
 
